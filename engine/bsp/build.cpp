@@ -1,0 +1,440 @@
+// BSP construction by auto-partition with exact arithmetic.
+//
+// A fragment is a parameter range [t0, t1] of its source wall. Each end is an
+// original wall end or the crossing of the wall with an earlier splitter line
+// (its "cut"), so the side of every end relative to any splitter is decided
+// exactly by geom::side_of / side_of_crossing: no epsilon, no lost or doubled
+// pieces, and collinear fragments always land on the node of their line.
+//
+// Index: Builder::run (the pipeline), choose_splitter (strategies),
+// partition (classify + split), make_leaf / leaf_sector (sector of a cell).
+#include "engine/bsp/build.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/geom/polygon.h"
+#include "engine/util/rng.h"
+
+namespace p3d::bsp {
+
+using geom::IPoint;
+using geom::Line;
+using geom::Vec2;
+
+std::optional<Strategy> parse_strategy(const std::string& name) {
+  if (name == "first") return Strategy::kFirst;
+  if (name == "random") return Strategy::kRandom;
+  if (name == "freesplit") return Strategy::kFreeSplit;
+  if (name == "greedy") return Strategy::kGreedy;
+  return std::nullopt;
+}
+
+const char* strategy_name(Strategy s) {
+  switch (s) {
+    case Strategy::kFirst: return "first";
+    case Strategy::kRandom: return "random";
+    case Strategy::kFreeSplit: return "freesplit";
+    case Strategy::kGreedy: return "greedy";
+  }
+  return "?";
+}
+
+double Stats::random_bound() const { return walls + 2.0 * walls * std::log(std::max<double>(walls, 1)); }
+
+namespace {
+
+struct Frag {
+  uint32_t wall;
+  int32_t cut[2];
+  double t[2];
+  bool on_boundary[2];  // this end lies on an ancestor's splitter line (free-split bookkeeping)
+};
+
+// A convex cell vertex; the edge from it to the next vertex lies on node `node`'s
+// line (kNone: the outer box), with the cell on that node's front side or not.
+struct CellVertex {
+  Vec2 p;
+  int32_t node;
+  bool front;
+};
+using Cell = std::vector<CellVertex>;
+
+struct Task {
+  std::vector<uint32_t> frags;
+  Cell cell;
+  int32_t parent;  // node index, or kNone for the root
+  int slot;        // 0 front, 1 back
+  int depth;
+};
+
+enum class Place { kFront, kBack, kOn, kSplit };
+
+class Builder {
+ public:
+  Builder(const map::Source& src, const Options& opt) : src_(src), opt_(opt), rng_(opt.seed) {
+    for (const map::Wall& w : src.walls) lines_.push_back(Line::through(src.point(w.v1), src.point(w.v2)));
+  }
+
+  level::Level run(Stats* stats) {
+    copy_source();
+    std::vector<uint32_t> all(src_.walls.size());
+    for (uint32_t i = 0; i < all.size(); ++i) {
+      all[i] = i;
+      pool_.push_back({i, {level::kNone, level::kNone}, {0.0, 1.0}, {false, false}});
+    }
+    if (opt_.strategy != Strategy::kFirst) rng_.shuffle(all);
+    pending_ = all.size();
+    build_tree(std::move(all));
+    level::finalize(out_);
+    compute_bounding_boxes();
+    resolve_leaves_by_ray_cast();
+    check_player_start();
+    if (stats) fill_stats(*stats);
+    return std::move(out_);
+  }
+
+ private:
+  // ---- source -> level records -------------------------------------------
+  void copy_source() {
+    out_.title = src_.title;
+    for (const map::Texture& t : src_.textures)
+      out_.textures.push_back(level::make_texture(t.name, t.image.width, t.image.height, t.image.pixels.data()));
+    for (const map::Sector& s : src_.sectors)
+      out_.sectors.push_back({s.name, s.floor, s.ceiling, s.light, s.floor_texture,
+                              s.ceiling_texture == map::kSkyTexture ? level::kSky : s.ceiling_texture});
+    for (const map::Wall& w : src_.walls) {
+      level::Wall lw;
+      lw.p1 = src_.point(w.v1);
+      lw.p2 = src_.point(w.v2);
+      lw.flags = (w.segment ? uint32_t{level::kSegment} : 0u) |
+                 (w.flags & map::kUnpegUpper ? uint32_t{level::kUnpegUpper} : 0u) |
+                 (w.flags & map::kUnpegLower ? uint32_t{level::kUnpegLower} : 0u);
+      lw.sides[0] = side(w.front);
+      lw.sides[1] = side(w.back);
+      out_.walls.push_back(lw);
+    }
+    for (const map::Thing& t : src_.things) out_.things.push_back({t.type, t.pos, t.angle});
+    out_.player_start = src_.player.pos;
+    out_.player_angle = src_.player.angle;
+    out_.default_sector = src_.default_sector;
+    out_.sky_texture = src_.sky_texture;
+  }
+
+  static level::Side side(const map::Side& s) {
+    return {s.sector, s.upper, s.middle, s.lower, s.x_offset, s.y_offset};
+  }
+
+  // ---- the tree ------------------------------------------------------------
+  void build_tree(std::vector<uint32_t> all) {
+    geom::BBox box;
+    for (const map::Vertex& v : src_.vertices) box.add(geom::to_world(v.pos));
+    const double margin = 64 + 0.01 * std::max(box.max.x - box.min.x, box.max.y - box.min.y);
+    box.min -= Vec2(margin);
+    box.max += Vec2(margin);
+    Cell root;
+    for (Vec2 p : geom::box_polygon(box)) root.push_back({p, level::kNone, false});
+
+    std::vector<Task> stack;
+    stack.push_back({std::move(all), std::move(root), level::kNone, 0, 0});
+    while (!stack.empty()) {
+      Task task = std::move(stack.back());
+      stack.pop_back();
+      max_depth_ = std::max<size_t>(max_depth_, task.depth);
+      if (task.frags.empty()) {
+        make_leaf(task);
+        continue;
+      }
+      const uint32_t splitter = choose_splitter(task.frags);
+      const int32_t node = static_cast<int32_t>(out_.nodes.size());
+      link(task, node);
+      out_.nodes.push_back({});
+      out_.nodes[node].splitter = pool_[splitter].wall;
+
+      const int32_t splitter_wall = static_cast<int32_t>(pool_[splitter].wall);
+      if (spans_cell(pool_[splitter])) ++free_splits_;  // it cannot cut anything: free
+      std::vector<uint32_t> front, back, on;
+      partition(task.frags, splitter_wall, front, back, on);
+      place_on_node(node, on);
+
+      const Line& l = lines_[splitter_wall];
+      stack.push_back({std::move(back), clip(task.cell, l, node, false), node, 1, task.depth + 1});
+      stack.push_back({std::move(front), clip(task.cell, l, node, true), node, 0, task.depth + 1});
+    }
+  }
+
+  void link(const Task& task, int32_t child) {
+    if (task.parent != level::kNone) out_.nodes[task.parent].child[task.slot] = child;
+  }
+
+  void place_on_node(int32_t node, const std::vector<uint32_t>& on) {
+    level::Node& n = out_.nodes[node];
+    n.first_fragment = static_cast<uint32_t>(out_.fragments.size());
+    n.fragment_count = static_cast<uint32_t>(on.size());
+    for (uint32_t i : on) {
+      const Frag& f = pool_[i];
+      out_.fragments.push_back({f.wall, {f.cut[0], f.cut[1]}, f.t[0], f.t[1]});
+      shortest_ = std::min(shortest_, (f.t[1] - f.t[0]) * wall_length(f.wall));
+    }
+    placed_ += on.size();
+    pending_ -= on.size();
+    if (opt_.progress && placed_ >= next_progress_) {
+      next_progress_ = placed_ + 65536;
+      opt_.progress(double(placed_) / double(placed_ + pending_));
+    }
+  }
+
+  // ---- splitter choice -----------------------------------------------------
+  uint32_t choose_splitter(const std::vector<uint32_t>& frags) {
+    switch (opt_.strategy) {
+      case Strategy::kFirst:
+      case Strategy::kRandom:
+        return frags.front();
+      case Strategy::kFreeSplit:
+        for (uint32_t f : frags)
+          if (spans_cell(pool_[f])) return f;
+        return frags.front();
+      case Strategy::kGreedy:
+        return choose_greedy(frags);
+    }
+    return frags.front();
+  }
+
+  bool spans_cell(const Frag& f) const { return f.on_boundary[0] && f.on_boundary[1]; }
+
+  uint32_t choose_greedy(const std::vector<uint32_t>& frags) {
+    const size_t m = frags.size();
+    if (m == 1) return frags.front();
+    const size_t k = std::min<size_t>(m, std::max(1, opt_.greedy_candidates));
+    const size_t samples = std::min<size_t>(m, std::max(1, opt_.greedy_sample));
+    std::vector<uint32_t> sample(samples);
+    for (size_t i = 0; i < samples; ++i) sample[i] = samples == m ? frags[i] : frags[rng_.below(m)];
+
+    uint32_t best = frags.front();
+    double best_cost = INFINITY;
+    for (size_t c = 0; c < k; ++c) {
+      const uint32_t candidate = k == m ? frags[c] : frags[rng_.below(m)];
+      const Line& l = lines_[pool_[candidate].wall];
+      double front = 0, back = 0, splits = 0, slivers = 0;
+      for (uint32_t f : sample) {
+        const int s0 = end_side(pool_[f], 0, l), s1 = end_side(pool_[f], 1, l);
+        if (s0 == 0 && s1 == 0) continue;
+        if (s0 <= 0 && s1 <= 0) {
+          ++front;
+        } else if (s0 >= 0 && s1 >= 0) {
+          ++back;
+        } else {
+          ++splits;
+          if (makes_sliver(pool_[f], l)) ++slivers;
+        }
+      }
+      const double cost = opt_.split_weight * splits + opt_.balance_weight * std::fabs(front - back) +
+                          opt_.sliver_weight * slivers;
+      if (cost < best_cost) best_cost = cost, best = candidate;
+    }
+    return best;
+  }
+
+  bool makes_sliver(const Frag& f, const Line& l) const {
+    const double t = geom::crossing_param(lines_[f.wall], l);
+    return std::min(t - f.t[0], f.t[1] - t) * wall_length(f.wall) < kSliverLength;
+  }
+
+  // ---- exact classification ------------------------------------------------
+  int end_side(const Frag& f, int k, const Line& l) const {
+    if (f.cut[k] == level::kNone) {
+      const map::Wall& w = src_.walls[f.wall];
+      return geom::side_of(l, src_.point(f.t[k] == 0 ? w.v1 : w.v2));
+    }
+    return geom::side_of_crossing(l, lines_[f.wall], lines_[f.cut[k]]);
+  }
+
+  // Front = right of the splitter (side < 0), back = left (side > 0).
+  void partition(const std::vector<uint32_t>& frags, int32_t splitter_wall, std::vector<uint32_t>& front,
+                 std::vector<uint32_t>& back, std::vector<uint32_t>& on) {
+    const Line& l = lines_[splitter_wall];
+    for (uint32_t i : frags) {
+      Frag& f = pool_[i];
+      const int s0 = end_side(f, 0, l), s1 = end_side(f, 1, l);
+      if (s0 == 0 && s1 == 0) {
+        on.push_back(i);
+        continue;
+      }
+      if (s0 == 0) f.on_boundary[0] = true;
+      if (s1 == 0) f.on_boundary[1] = true;
+      if (s0 <= 0 && s1 <= 0) {
+        front.push_back(i);
+      } else if (s0 >= 0 && s1 >= 0) {
+        back.push_back(i);
+      } else {
+        const uint32_t j = split(i, splitter_wall);
+        (s0 < 0 ? front : back).push_back(i);
+        (s1 < 0 ? front : back).push_back(j);
+      }
+    }
+  }
+
+  // Cuts fragment i where `cutter`'s line crosses it: i keeps [t0, t], a new fragment gets [t, t1].
+  uint32_t split(uint32_t i, int32_t cutter) {
+    Frag f = pool_[i];
+    double t = geom::crossing_param(lines_[f.wall], lines_[cutter]);
+    // The exact crossing is strictly inside; keep the rounded one strictly inside too.
+    t = std::clamp(t, std::nextafter(f.t[0], 2.0), std::nextafter(f.t[1], -1.0));
+    Frag tail = f;
+    pool_[i].t[1] = t;
+    pool_[i].cut[1] = cutter;
+    pool_[i].on_boundary[1] = true;
+    tail.t[0] = t;
+    tail.cut[0] = cutter;
+    tail.on_boundary[0] = true;
+    pool_.push_back(tail);
+    ++pending_;
+    return static_cast<uint32_t>(pool_.size() - 1);
+  }
+
+  double wall_length(uint32_t wall) const {
+    const IPoint d = lines_[wall].d;
+    return std::hypot(double(d.x), double(d.y)) / geom::kFixedOne;
+  }
+
+  // ---- cells and leaves ----------------------------------------------------
+  // Sutherland-Hodgman on a tagged convex cell: a vertex's tag describes the edge leaving it.
+  static Cell clip(const Cell& cell, const Line& l, int32_t node, bool keep_front) {
+    const Vec2 origin = geom::to_world(l.a);
+    const Vec2 dir = Vec2(double(l.d.x), double(l.d.y));
+    const double keep = keep_front ? -1 : 1;
+    Cell out;
+    for (size_t i = 0; i < cell.size(); ++i) {
+      const CellVertex& p = cell[i];
+      const CellVertex& q = cell[(i + 1) % cell.size()];
+      const double sp = geom::cross(dir, p.p - origin) * keep, sq = geom::cross(dir, q.p - origin) * keep;
+      auto crossing = [&] { return p.p + (q.p - p.p) * (sp / (sp - sq)); };
+      if (sp >= 0) {
+        out.push_back(p);
+        if (sq < 0) {  // leaving the kept side: the next edge runs along the splitter
+          if (sp > 0) out.push_back({crossing(), node, keep_front});
+          else out.back().node = node, out.back().front = keep_front;
+        }
+      } else if (sq > 0) {  // entering: the edge from x continues p's edge
+        out.push_back({crossing(), p.node, p.front});
+      }
+    }
+    return out.size() >= 3 ? out : Cell{};
+  }
+
+  void make_leaf(const Task& task) {
+    const int32_t leaf = static_cast<int32_t>(out_.leaves.size());
+    link(task, level::leaf_child(leaf));
+    out_.leaves.push_back({level::kNone});
+    leaf_depth_sum_ += task.depth;
+    if (!leaf_sector(task.cell, out_.leaves.back().sector)) {
+      geom::Polygon poly;
+      for (const CellVertex& v : task.cell) poly.push_back(v.p);
+      unresolved_.push_back({leaf, poly.empty() ? Vec2(0) : geom::polygon_centroid(poly)});
+    }
+  }
+
+  // A convex leaf holds no wall, so a wall along one of its edges faces it directly.
+  bool leaf_sector(const Cell& cell, int32_t& sector) const {
+    for (size_t i = 0; i < cell.size(); ++i) {
+      if (cell[i].node == level::kNone) continue;
+      const Vec2 mid = (cell[i].p + cell[(i + 1) % cell.size()].p) * 0.5;
+      const level::Node& node = out_.nodes[cell[i].node];
+      for (uint32_t k = node.first_fragment; k < node.first_fragment + node.fragment_count; ++k) {
+        const level::Fragment& f = out_.fragments[k];
+        const map::Wall& w = src_.walls[f.wall];
+        if (w.segment) continue;
+        const Vec2 a = geom::to_world(src_.point(w.v1)), e = geom::to_world(src_.point(w.v2)) - a;
+        const double t = glm::dot(mid - a, e) / glm::dot(e, e);
+        const double eps = 1e-9 + 1e-7 / std::sqrt(glm::dot(e, e));
+        if (t <= f.t0 + eps || t >= f.t1 - eps) continue;
+        const Line& splitter = lines_[node.splitter];
+        const bool same_direction = double(splitter.d.x) * e.x + double(splitter.d.y) * e.y > 0;
+        const bool on_right_of_wall = cell[i].front == same_direction;
+        sector = on_right_of_wall ? w.front.sector : w.back.sector;
+        if (sector == level::kNone) sector = src_.default_sector;
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // Leaves bounded by no wall: the first wall a ray from inside meets tells the sector.
+  void resolve_leaves_by_ray_cast() {
+    for (const auto& [leaf, inside] : unresolved_) out_.leaves[leaf].sector = ray_cast_sector(inside);
+  }
+
+  int32_t ray_cast_sector(Vec2 origin) const {
+    for (int attempt = 0; attempt < 16; ++attempt) {
+      const double angle = 0.3 + attempt * 2.39996;  // golden-angle steps avoid repeating a bad direction
+      const Vec2 dir{std::cos(angle), std::sin(angle)};
+      int32_t sector = level::kNone;
+      bool ambiguous = false, found = false;
+      level::ray_cast(out_, origin, dir, [&](uint32_t wall, double, double t) {
+        const level::Wall& w = out_.walls[wall];
+        if (t < 1e-9 || t > 1 - 1e-9) {  // through a vertex: the side is unclear, try another ray
+          ambiguous = true;
+          return false;
+        }
+        if (w.segment()) return true;
+        const bool right = geom::cross(w.b - w.a, origin - w.a) < 0;
+        sector = w.sides[right ? 0 : 1].sector;
+        found = true;
+        return false;
+      });
+      if (ambiguous) continue;
+      return found && sector != level::kNone ? sector : out_.default_sector;
+    }
+    return out_.default_sector;
+  }
+
+  void compute_bounding_boxes() {
+    for (size_t i = out_.nodes.size(); i-- > 0;) {
+      level::Node& n = out_.nodes[i];
+      n.bbox = geom::BBox{};
+      for (uint32_t k = n.first_fragment; k < n.first_fragment + n.fragment_count; ++k) {
+        n.bbox.add(out_.fragments[k].p0);
+        n.bbox.add(out_.fragments[k].p1);
+      }
+      for (int32_t c : n.child)
+        if (!level::is_leaf(c)) n.bbox.add(out_.nodes[c].bbox);
+    }
+  }
+
+  void check_player_start() const {
+    if (out_.sectors.empty() || out_.sector_at(out_.player_start) != level::kNone) return;
+    throw Error(src_.player.loc, "player start is outside every sector");
+  }
+
+  void fill_stats(Stats& s) const {
+    s.walls = src_.walls.size();
+    s.fragments = out_.fragments.size();
+    s.splits = s.fragments - s.walls;
+    s.nodes = out_.nodes.size();
+    s.leaves = out_.leaves.size();
+    s.free_splits = free_splits_;
+    s.max_depth = max_depth_;
+    s.mean_depth = s.leaves ? double(leaf_depth_sum_) / s.leaves : 0;
+    s.shortest_fragment = shortest_;
+    s.ray_cast_leaves = unresolved_.size();
+  }
+
+  const map::Source& src_;
+  const Options& opt_;
+  Rng rng_;
+  std::vector<Line> lines_;  // one per wall
+  std::vector<Frag> pool_;
+  level::Level out_;
+  std::vector<std::pair<int32_t, Vec2>> unresolved_;
+  size_t placed_ = 0, pending_ = 0, next_progress_ = 65536;
+  size_t free_splits_ = 0, max_depth_ = 0, leaf_depth_sum_ = 0;
+  double shortest_ = INFINITY;
+};
+
+}  // namespace
+
+level::Level build(const map::Source& source, const Options& options, Stats* stats) {
+  return Builder(source, options).run(stats);
+}
+
+}  // namespace p3d::bsp

@@ -1,0 +1,53 @@
+// The map compiler's core: source walls -> BSP auto-partition -> level::Level.
+// Splitters are always lines of input walls (auto-partitions, de Berg ch. 12).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "engine/level/level.h"
+#include "engine/map/source.h"
+
+namespace p3d::bsp {
+
+enum class Strategy {
+  kFirst,      // 2DBSP: the first fragment of each cell, in input order
+  kRandom,     // 2DRANDOMBSP: the first fragment after a random permutation
+  kFreeSplit,  // random, but take a free split (a fragment spanning its cell) whenever one exists
+  kGreedy,     // score k sampled candidates by splits, balance and slivers; take the best
+};
+
+std::optional<Strategy> parse_strategy(const std::string& name);
+const char* strategy_name(Strategy s);
+
+struct Options {
+  Strategy strategy = Strategy::kGreedy;
+  uint64_t seed = 1;
+  int greedy_candidates = 8;     // k: candidate splitters sampled per cell
+  int greedy_sample = 128;       // fragments scored per candidate (all of them in smaller cells)
+  double split_weight = 4;       // cost of one split
+  double balance_weight = 1;     // cost of one fragment of imbalance between the sides
+  double sliver_weight = 64;     // cost of a split leaving a piece shorter than kSliverLength
+  std::function<void(double fraction_done)> progress;  // called now and then during the build
+};
+
+constexpr double kSliverLength = 1.0 / 16;  // map units
+
+struct Stats {
+  size_t walls = 0, fragments = 0, splits = 0, nodes = 0, leaves = 0;
+  size_t free_splits = 0;        // nodes whose splitter cut nothing and spanned its cell
+  size_t max_depth = 0;
+  double mean_depth = 0;         // over leaves
+  double shortest_fragment = 0;  // map units
+  size_t ray_cast_leaves = 0;    // leaves whose sector needed a ray cast rather than a bounding wall
+
+  // de Berg's bound on the expected size of 2DRANDOMBSP: n + 2 n ln n.
+  double random_bound() const;
+};
+
+// Throws Error (located at the player statement) if the player starts outside every sector.
+level::Level build(const map::Source& source, const Options& options, Stats* stats = nullptr);
+
+}  // namespace p3d::bsp

@@ -1,0 +1,54 @@
+// RGBA8 images (row-major, one uint32 per pixel laid out R,G,B,A in memory),
+// PNG encoding/decoding through stb, and image comparison.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace p3d::image {
+
+// Packs a colour so that its bytes in memory are R, G, B, A (little-endian host).
+constexpr uint32_t rgba(uint32_t r, uint32_t g, uint32_t b, uint32_t a = 255) {
+  return r | (g << 8) | (b << 16) | (a << 24);
+}
+constexpr uint32_t red(uint32_t c) { return c & 0xFF; }
+constexpr uint32_t green(uint32_t c) { return (c >> 8) & 0xFF; }
+constexpr uint32_t blue(uint32_t c) { return (c >> 16) & 0xFF; }
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<uint32_t> pixels;
+
+  Image() = default;
+  Image(int w, int h, uint32_t fill = rgba(0, 0, 0)) : width(w), height(h), pixels(size_t(w) * h, fill) {}
+  uint32_t& at(int x, int y) { return pixels[size_t(y) * width + x]; }
+  uint32_t at(int x, int y) const { return pixels[size_t(y) * width + x]; }
+};
+
+// Decodes a PNG (any channel count) to RGBA8; throws Error("<what>: ...") on bad data.
+Image decode_png(std::span<const uint8_t> bytes, const std::string& what);
+Image load_png(const std::filesystem::path& path);
+std::vector<uint8_t> encode_png(const Image& image);
+void save_png(const Image& image, const std::filesystem::path& path);  // atomic
+
+struct Difference {
+  size_t differing_pixels = 0;  // pixels where some channel differs by more than the tolerance
+  int max_channel_delta = 0;
+  double fraction(const Image& a) const { return a.pixels.empty() ? 0 : double(differing_pixels) / a.pixels.size(); }
+};
+// Images must have the same size.
+Difference compare(const Image& a, const Image& b, int channel_tolerance = 0);
+
+// Per-pixel |a - b| as a heat map: black where equal, then blue -> red -> yellow.
+Image difference_heat_map(const Image& a, const Image& b);
+
+// A heat map of per-pixel counts (0 = black, 1 = dark blue, ..., max_count and above = white).
+Image count_heat_map(int width, int height, std::span<const uint16_t> counts, int max_count);
+
+// Copies src into dst at (x, y), clipped to dst.
+void blit(Image& dst, const Image& src, int x, int y);
+
+}  // namespace p3d::image

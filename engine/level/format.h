@@ -1,0 +1,41 @@
+// The compiled level file (.bsp): the one description of the disk format.
+//
+//   header   magic "P3DBSP\r\n" (8 bytes), u32 version, u32 reserved (0),
+//            u64 payload size, u64 FNV-1a 64 checksum of the payload
+//   payload  sections in this order, each opening with its u32 tag:
+//     META     str title, f64 player x, y, angle, i32 default sector, i32 sky texture
+//     TEXTURES u32 n; n x { str name, u32 width, u32 height, width*height RGBA8 rows }
+//     SECTORS  u32 n; n x { str name, f64 floor, f64 ceiling, i32 light, i32 floor tex, i32 ceiling tex }
+//     WALLS    u32 n; n x { i64 x1, y1, x2, y2 (1/256 unit), u32 flags, 2 x side }
+//              side = { i32 sector, i32 upper, i32 middle, i32 lower, f64 x offset, f64 y offset }
+//     FRAGS    u32 n; n x { u32 wall, i32 cut0, i32 cut1, f64 t0, f64 t1 }
+//     NODES    u32 n; n x { u32 splitter wall, i32 front, i32 back, u32 first frag, u32 frag count,
+//                           f64 bbox min x, min y, max x, max y }
+//     LEAVES   u32 n; n x { i32 sector }
+//     THINGS   u32 n; n x { i32 type, f64 x, y, angle }
+// All integers and IEEE doubles little-endian; str = u32 length + bytes.
+#pragma once
+
+#include <cstdint>
+
+namespace p3d::level::format {
+
+constexpr char kMagic[8] = {'P', '3', 'D', 'B', 'S', 'P', '\r', '\n'};
+constexpr uint32_t kVersion = 1;
+constexpr size_t kHeaderSize = 8 + 4 + 4 + 8 + 8;
+
+constexpr uint32_t tag(const char (&s)[5]) {
+  return uint32_t(uint8_t(s[0])) | uint32_t(uint8_t(s[1])) << 8 | uint32_t(uint8_t(s[2])) << 16 |
+         uint32_t(uint8_t(s[3])) << 24;
+}
+constexpr uint32_t kMeta = tag("META"), kTextures = tag("TEXS"), kSectors = tag("SECS"), kWalls = tag("WALL"),
+                   kFragments = tag("FRAG"), kNodes = tag("NODE"), kLeaves = tag("LEAF"), kThings = tag("THNG");
+
+constexpr size_t kWallRecord = 4 * 8 + 4 + 2 * (4 * 4 + 2 * 8);
+constexpr size_t kFragmentRecord = 4 * 3 + 8 * 2;
+constexpr size_t kNodeRecord = 4 * 5 + 8 * 4;
+constexpr size_t kSectorRecord = 4 + 8 * 2 + 4 * 3;
+constexpr size_t kMaxNameLength = 256;
+constexpr int kMaxTextureSize = 1024;
+
+}  // namespace p3d::level::format

@@ -1,0 +1,136 @@
+// Level queries: derived fields, point location, BSP ray casting, brute-force
+// sector lookup (the oracle) and leaf cells.
+#include "engine/level/level.h"
+
+#include <bit>
+#include <cmath>
+#include <limits>
+
+#include "engine/geom/polygon.h"
+
+namespace p3d::level {
+
+Texture make_texture(const std::string& name, int width, int height, const uint32_t* rgba_rows) {
+  Texture t;
+  t.name = name;
+  t.width = width;
+  t.height = height;
+  t.width_mask = width - 1;
+  t.height_mask = height - 1;
+  t.height_shift = std::countr_zero(static_cast<unsigned>(height));
+  t.texels.resize(size_t(width) * height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) t.texels[size_t(x) * height + y] = rgba_rows[size_t(y) * width + x];
+  return t;
+}
+
+void finalize(Level& level) {
+  level.bounds = BBox{};
+  for (Wall& w : level.walls) {
+    w.a = geom::to_world(w.p1);
+    w.b = geom::to_world(w.p2);
+    w.length = glm::length(w.b - w.a);
+    w.contrast = w.p1.y == w.p2.y ? -1 : w.p1.x == w.p2.x ? 1 : 0;
+    level.bounds.add(w.a);
+    level.bounds.add(w.b);
+  }
+  for (Fragment& f : level.fragments) {
+    const Wall& w = level.walls[f.wall];
+    f.p0 = f.t0 == 0 ? w.a : w.at(f.t0);
+    f.p1 = f.t1 == 1 ? w.b : w.at(f.t1);
+  }
+  for (Node& n : level.nodes) {
+    const Wall& s = level.walls[n.splitter];
+    n.origin = s.a;
+    n.direction = s.b - s.a;
+    for (uint32_t i = n.first_fragment; i < n.first_fragment + n.fragment_count; ++i) {
+      const Wall& w = level.walls[level.fragments[i].wall];
+      level.fragments[i].same_direction = glm::dot(w.b - w.a, n.direction) > 0;
+    }
+  }
+}
+
+int Level::leaf_at(Vec2 p) const {
+  int32_t c = 0;
+  while (!is_leaf(c)) {
+    const Node& n = nodes[c];
+    c = n.child[splitter_side(n, p) > 0 ? 1 : 0];
+  }
+  return leaf_index(c);
+}
+
+void ray_cast(const Level& level, Vec2 origin, Vec2 dir,
+              const std::function<bool(uint32_t wall, double s, double t)>& visit) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  struct Item {
+    int32_t child;
+    double lo, hi;
+    bool fragments;  // visit this node's fragments rather than its subtree
+  };
+  std::vector<Item> stack{{0, 0.0, kInf, false}};
+  while (!stack.empty()) {
+    const Item item = stack.back();
+    stack.pop_back();
+    if (is_leaf(item.child)) continue;
+    const Node& n = level.nodes[item.child];
+    if (item.fragments) {
+      for (uint32_t i = n.first_fragment; i < n.first_fragment + n.fragment_count; ++i) {
+        const Fragment& f = level.fragments[i];
+        const Wall& w = level.walls[f.wall];
+        const Vec2 e = w.b - w.a;
+        const double den = geom::cross(dir, e);
+        if (den == 0) continue;
+        const double s = geom::cross(w.a - origin, e) / den;
+        const double t = geom::cross(w.a - origin, dir) / den;
+        if (s > 0 && t >= f.t0 && t <= f.t1 && !visit(f.wall, s, t)) return;
+      }
+      continue;
+    }
+    const double side = splitter_side(n, origin);
+    const double rate = geom::cross(n.direction, dir);
+    const int near = side > 0 || (side == 0 && rate > 0) ? 1 : 0;
+    const double s_cross = rate != 0 ? -side / rate : kInf;
+    if (!(s_cross > item.lo) || s_cross >= item.hi) {  // no crossing inside this cell's stretch
+      const bool beyond = s_cross > 0 && s_cross <= item.lo;
+      stack.push_back({n.child[beyond ? 1 - near : near], item.lo, item.hi, false});
+      continue;
+    }
+    stack.push_back({n.child[1 - near], s_cross, item.hi, false});
+    stack.push_back({item.child, s_cross, s_cross, true});
+    stack.push_back({n.child[near], item.lo, s_cross, false});
+  }
+}
+
+int sector_at_brute_force(const Level& level, Vec2 p) {
+  std::vector<uint8_t> parity(level.sectors.size(), 0);
+  for (const Wall& w : level.walls) {
+    if (w.segment() || w.sides[0].sector == w.sides[1].sector) continue;
+    if ((w.a.y > p.y) == (w.b.y > p.y)) continue;
+    const double x = w.a.x + (p.y - w.a.y) * (w.b.x - w.a.x) / (w.b.y - w.a.y);
+    if (p.x >= x) continue;
+    for (const Side& s : w.sides)
+      if (s.sector >= 0) parity[s.sector] ^= 1;
+  }
+  for (size_t s = 0; s < parity.size(); ++s)
+    if (parity[s]) return static_cast<int>(s);
+  return level.default_sector;
+}
+
+std::vector<std::vector<Vec2>> leaf_cells(const Level& level, const BBox& bounds) {
+  std::vector<std::vector<Vec2>> cells(level.leaves.size());
+  std::vector<std::pair<int32_t, geom::Polygon>> stack{{0, geom::box_polygon(bounds)}};
+  while (!stack.empty()) {
+    auto [child, poly] = std::move(stack.back());
+    stack.pop_back();
+    if (is_leaf(child)) {
+      cells[leaf_index(child)] = std::move(poly);
+      continue;
+    }
+    const Node& n = level.nodes[child];
+    stack.push_back({n.child[1], geom::clip_polygon(poly, n.origin, n.direction, +1)});
+    stack.push_back({n.child[0], geom::clip_polygon(poly, n.origin, n.direction, -1)});
+  }
+  return cells;
+}
+
+}  // namespace p3d::level

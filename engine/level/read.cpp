@@ -1,0 +1,265 @@
+// Bytes -> Level. Validates everything once so that the renderers can trust
+// every index: header, checksum, counts, ranges, tree structure, and that each
+// fragment lies exactly on its node's splitter line.
+#include <bit>
+#include <cmath>
+#include <cstring>
+
+#include "engine/level/format.h"
+#include "engine/level/io.h"
+#include "engine/util/bytes.h"
+#include "engine/util/file.h"
+
+namespace p3d::level {
+
+namespace {
+
+class Reader {
+ public:
+  Reader(std::span<const uint8_t> payload, const std::string& what) : in_(payload, what) {}
+
+  Level run() {
+    section(format::kMeta, "META");
+    level_.title = in_.str(format::kMaxNameLength * 4);
+    level_.player_start = {finite("player x"), finite("player y")};
+    level_.player_angle = finite("player angle");
+    level_.default_sector = in_.i32();
+    level_.sky_texture = in_.i32();
+
+    read_textures();
+    read_sectors();
+    read_walls();
+    read_fragments();
+    read_nodes();
+    read_leaves();
+    read_things();
+    if (in_.remaining() != 0) in_.fail(std::to_string(in_.remaining()) + " unexpected bytes after the last section");
+
+    check_references();
+    check_tree();
+    finalize(level_);
+    return std::move(level_);
+  }
+
+ private:
+  void section(uint32_t tag, const char* name) {
+    if (in_.u32() != tag) in_.fail(std::string("expected section ") + name + " at byte " + std::to_string(in_.position() - 4));
+  }
+  double finite(const char* what) {
+    const double v = in_.f64();
+    if (!std::isfinite(v)) in_.fail(std::string(what) + " is not finite");
+    return v;
+  }
+  void index(int32_t v, int32_t lo, size_t count, const std::string& what) const {
+    if (v < lo || v >= static_cast<int64_t>(count)) in_.fail(what + " index " + std::to_string(v) + " is out of range");
+  }
+
+  void read_textures() {
+    section(format::kTextures, "TEXS");
+    const uint32_t n = in_.count(12, "textures");
+    level_.textures.reserve(n);
+    for (uint32_t i = 0; i < n; ++i) {
+      const std::string name = in_.str(format::kMaxNameLength);
+      const uint32_t w = in_.u32(), h = in_.u32();
+      auto pow2 = [](uint32_t v) { return v > 0 && v <= uint32_t(format::kMaxTextureSize) && std::has_single_bit(v); };
+      if (!pow2(w) || !pow2(h))
+        in_.fail("texture '" + name + "' has a bad size " + std::to_string(w) + "x" + std::to_string(h));
+      const auto bytes = in_.raw(size_t(w) * h * 4);
+      std::vector<uint32_t> rows(size_t(w) * h);
+      for (size_t p = 0; p < rows.size(); ++p)
+        rows[p] = uint32_t(bytes[4 * p]) | uint32_t(bytes[4 * p + 1]) << 8 | uint32_t(bytes[4 * p + 2]) << 16 |
+                  uint32_t(bytes[4 * p + 3]) << 24;
+      level_.textures.push_back(make_texture(name, int(w), int(h), rows.data()));
+    }
+  }
+
+  void read_sectors() {
+    section(format::kSectors, "SECS");
+    const uint32_t n = in_.count(format::kSectorRecord, "sectors");
+    level_.sectors.resize(n);
+    for (Sector& s : level_.sectors) {
+      s.name = in_.str(format::kMaxNameLength);
+      s.floor = finite("sector floor");
+      s.ceiling = finite("sector ceiling");
+      if (s.ceiling < s.floor) in_.fail("sector '" + s.name + "' has its ceiling below its floor");
+      s.light = in_.i32();
+      if (s.light < 0 || s.light > 255) in_.fail("sector '" + s.name + "' has light out of range");
+      s.floor_texture = in_.i32();
+      s.ceiling_texture = in_.i32();
+    }
+  }
+
+  Side read_side() {
+    Side s;
+    s.sector = in_.i32();
+    s.upper = in_.i32();
+    s.middle = in_.i32();
+    s.lower = in_.i32();
+    s.x_offset = finite("side x offset");
+    s.y_offset = finite("side y offset");
+    return s;
+  }
+
+  void read_walls() {
+    section(format::kWalls, "WALL");
+    const uint32_t n = in_.count(format::kWallRecord, "walls");
+    level_.walls.resize(n);
+    for (Wall& w : level_.walls) {
+      w.p1 = {in_.i64(), in_.i64()};
+      w.p2 = {in_.i64(), in_.i64()};
+      for (int64_t c : {w.p1.x, w.p1.y, w.p2.x, w.p2.y})
+        if (c < -geom::kMaxFixed || c > geom::kMaxFixed) in_.fail("wall coordinate out of range");
+      if (w.p1 == w.p2) in_.fail("zero-length wall");
+      w.flags = in_.u32();
+      if (w.flags & ~uint32_t(kSegment | kUnpegUpper | kUnpegLower)) in_.fail("unknown wall flags");
+      w.sides[0] = read_side();
+      w.sides[1] = read_side();
+    }
+  }
+
+  void read_fragments() {
+    section(format::kFragments, "FRAG");
+    const uint32_t n = in_.count(format::kFragmentRecord, "fragments");
+    level_.fragments.resize(n);
+    for (Fragment& f : level_.fragments) {
+      f.wall = in_.u32();
+      f.cut[0] = in_.i32();
+      f.cut[1] = in_.i32();
+      f.t0 = finite("fragment t0");
+      f.t1 = finite("fragment t1");
+    }
+  }
+
+  void read_nodes() {
+    section(format::kNodes, "NODE");
+    const uint32_t n = in_.count(format::kNodeRecord, "nodes");
+    level_.nodes.resize(n);
+    for (Node& node : level_.nodes) {
+      node.splitter = in_.u32();
+      node.child[0] = in_.i32();
+      node.child[1] = in_.i32();
+      node.first_fragment = in_.u32();
+      node.fragment_count = in_.u32();
+      node.bbox.min = {finite("node bbox"), finite("node bbox")};
+      node.bbox.max = {finite("node bbox"), finite("node bbox")};
+    }
+  }
+
+  void read_leaves() {
+    section(format::kLeaves, "LEAF");
+    const uint32_t n = in_.count(4, "leaves");
+    level_.leaves.resize(n);
+    for (Leaf& l : level_.leaves) l.sector = in_.i32();
+  }
+
+  void read_things() {
+    section(format::kThings, "THNG");
+    const uint32_t n = in_.count(28, "things");
+    level_.things.resize(n);
+    for (Thing& t : level_.things) {
+      t.type = in_.i32();
+      t.pos = {finite("thing x"), finite("thing y")};
+      t.angle = finite("thing angle");
+    }
+  }
+
+  void check_references() const {
+    const size_t textures = level_.textures.size(), sectors = level_.sectors.size(), walls = level_.walls.size();
+    index(level_.default_sector, kNone, sectors, "default sector");
+    index(level_.sky_texture, kNone, textures, "sky texture");
+    for (const Sector& s : level_.sectors) {
+      index(s.floor_texture, 0, textures, "floor texture");
+      if (s.ceiling_texture != kSky || level_.sky_texture == kNone) index(s.ceiling_texture, 0, textures, "ceiling texture");
+    }
+    for (const Wall& w : level_.walls) {
+      for (const Side& s : w.sides) {
+        index(s.sector, kNone, sectors, "side sector");
+        for (int t : {s.upper, s.middle, s.lower}) index(t, kNone, textures, "side texture");
+      }
+      if (w.segment()) {
+        if (w.sides[0].middle == kNone || w.sides[1].middle == kNone) in_.fail("segment without a texture");
+      } else if (w.sides[0].sector == kNone) {
+        in_.fail("wall without a front sector");
+      } else if (w.sides[1].sector == kNone && w.sides[0].middle == kNone) {
+        in_.fail("one-sided wall without a middle texture");
+      }
+    }
+    for (const Fragment& f : level_.fragments) {
+      index(static_cast<int32_t>(f.wall), 0, walls, "fragment wall");
+      if (!(0 <= f.t0 && f.t0 < f.t1 && f.t1 <= 1)) in_.fail("fragment with an empty or inverted range");
+      for (int k = 0; k < 2; ++k) {
+        const double t = k ? f.t1 : f.t0;
+        const bool original_end = t == (k ? 1.0 : 0.0);
+        if (original_end != (f.cut[k] == kNone)) in_.fail("fragment end does not match its cut");
+        index(f.cut[k], kNone, walls, "fragment cut");
+        if (f.cut[k] != kNone && geom::parallel(level_.walls[f.wall].line(), level_.walls[f.cut[k]].line()))
+          in_.fail("fragment cut by a parallel line");
+      }
+    }
+    for (const Leaf& l : level_.leaves) index(l.sector, kNone, sectors, "leaf sector");
+  }
+
+  // A proper binary tree rooted at node 0 whose fragments partition the fragment
+  // array, each fragment exactly on its node's splitter line.
+  void check_tree() const {
+    const size_t nodes = level_.nodes.size(), leaves = level_.leaves.size();
+    if (nodes == 0 || leaves != nodes + 1) in_.fail("tree has " + std::to_string(nodes) + " nodes and " +
+                                                     std::to_string(leaves) + " leaves");
+    std::vector<uint8_t> node_seen(nodes, 0), leaf_seen(leaves, 0), fragment_seen(level_.fragments.size(), 0);
+    for (size_t i = 0; i < nodes; ++i) {
+      const Node& n = level_.nodes[i];
+      index(static_cast<int32_t>(n.splitter), 0, level_.walls.size(), "node splitter");
+      for (int32_t c : n.child) {
+        if (is_leaf(c)) {
+          index(leaf_index(c), 0, leaves, "leaf");
+          if (leaf_seen[leaf_index(c)]++) in_.fail("leaf " + std::to_string(leaf_index(c)) + " has two parents");
+        } else {
+          if (c <= static_cast<int32_t>(i) || c >= static_cast<int32_t>(nodes)) in_.fail("node child out of order");
+          if (node_seen[c]++) in_.fail("node " + std::to_string(c) + " has two parents");
+        }
+      }
+      if (uint64_t(n.first_fragment) + n.fragment_count > level_.fragments.size())
+        in_.fail("node fragment range out of bounds");
+      const geom::Line splitter = level_.walls[n.splitter].line();
+      for (uint32_t f = n.first_fragment; f < n.first_fragment + n.fragment_count; ++f) {
+        if (fragment_seen[f]++) in_.fail("fragment " + std::to_string(f) + " belongs to two nodes");
+        if (!geom::same_line(splitter, level_.walls[level_.fragments[f].wall].line()))
+          in_.fail("fragment " + std::to_string(f) + " is not on its node's splitter");
+      }
+    }
+    for (size_t i = 1; i < nodes; ++i)
+      if (!node_seen[i]) in_.fail("node " + std::to_string(i) + " is unreachable");
+    for (size_t i = 0; i < leaves; ++i)
+      if (!leaf_seen[i]) in_.fail("leaf " + std::to_string(i) + " is unreachable");
+    for (size_t i = 0; i < fragment_seen.size(); ++i)
+      if (!fragment_seen[i]) in_.fail("fragment " + std::to_string(i) + " belongs to no node");
+  }
+
+  mutable ByteReader in_;
+  Level level_;
+};
+
+}  // namespace
+
+Level decode(std::span<const uint8_t> bytes, const std::string& what) {
+  if (bytes.size() < format::kHeaderSize || std::memcmp(bytes.data(), format::kMagic, 8) != 0)
+    throw Error(what + ": not a compiled level (bad magic; compile maps with mapc)");
+  ByteReader header(bytes.subspan(8, format::kHeaderSize - 8), what);
+  const uint32_t version = header.u32();
+  if (version != format::kVersion)
+    throw Error(what + ": compiled level version " + std::to_string(version) + " is not supported (expected " +
+                std::to_string(format::kVersion) + "; recompile with mapc)");
+  header.u32();
+  const uint64_t size = header.u64();
+  const uint64_t checksum = header.u64();
+  const auto payload = bytes.subspan(format::kHeaderSize);
+  if (size != payload.size())
+    throw Error(what + ": truncated or padded file (payload is " + std::to_string(payload.size()) + " bytes, header says " +
+                std::to_string(size) + ")");
+  if (fnv1a64(payload) != checksum) throw Error(what + ": checksum mismatch (the file is corrupted)");
+  return Reader(payload, what).run();
+}
+
+Level read(const std::filesystem::path& path) { return decode(read_file_bytes(path), path.string()); }
+
+}  // namespace p3d::level

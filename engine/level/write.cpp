@@ -1,0 +1,121 @@
+// Level -> bytes, following format.h field by field.
+#include <cstring>
+
+#include "engine/level/format.h"
+#include "engine/level/io.h"
+#include "engine/util/bytes.h"
+#include "engine/util/file.h"
+
+namespace p3d::level {
+
+namespace {
+
+void write_side(ByteWriter& out, const Side& s) {
+  out.i32(s.sector);
+  out.i32(s.upper);
+  out.i32(s.middle);
+  out.i32(s.lower);
+  out.f64(s.x_offset);
+  out.f64(s.y_offset);
+}
+
+void write_payload(ByteWriter& out, const Level& level) {
+  out.u32(format::kMeta);
+  out.str(level.title);
+  out.f64(level.player_start.x);
+  out.f64(level.player_start.y);
+  out.f64(level.player_angle);
+  out.i32(level.default_sector);
+  out.i32(level.sky_texture);
+
+  out.u32(format::kTextures);
+  out.u32(static_cast<uint32_t>(level.textures.size()));
+  for (const Texture& t : level.textures) {
+    out.str(t.name);
+    out.u32(t.width);
+    out.u32(t.height);
+    for (int y = 0; y < t.height; ++y)
+      for (int x = 0; x < t.width; ++x) out.u32(t.at(x, y));  // rows, R,G,B,A byte order
+  }
+
+  out.u32(format::kSectors);
+  out.u32(static_cast<uint32_t>(level.sectors.size()));
+  for (const Sector& s : level.sectors) {
+    out.str(s.name);
+    out.f64(s.floor);
+    out.f64(s.ceiling);
+    out.i32(s.light);
+    out.i32(s.floor_texture);
+    out.i32(s.ceiling_texture);
+  }
+
+  out.u32(format::kWalls);
+  out.u32(static_cast<uint32_t>(level.walls.size()));
+  for (const Wall& w : level.walls) {
+    out.i64(w.p1.x);
+    out.i64(w.p1.y);
+    out.i64(w.p2.x);
+    out.i64(w.p2.y);
+    out.u32(w.flags);
+    write_side(out, w.sides[0]);
+    write_side(out, w.sides[1]);
+  }
+
+  out.u32(format::kFragments);
+  out.u32(static_cast<uint32_t>(level.fragments.size()));
+  for (const Fragment& f : level.fragments) {
+    out.u32(f.wall);
+    out.i32(f.cut[0]);
+    out.i32(f.cut[1]);
+    out.f64(f.t0);
+    out.f64(f.t1);
+  }
+
+  out.u32(format::kNodes);
+  out.u32(static_cast<uint32_t>(level.nodes.size()));
+  for (const Node& n : level.nodes) {
+    out.u32(n.splitter);
+    out.i32(n.child[0]);
+    out.i32(n.child[1]);
+    out.u32(n.first_fragment);
+    out.u32(n.fragment_count);
+    out.f64(n.bbox.min.x);
+    out.f64(n.bbox.min.y);
+    out.f64(n.bbox.max.x);
+    out.f64(n.bbox.max.y);
+  }
+
+  out.u32(format::kLeaves);
+  out.u32(static_cast<uint32_t>(level.leaves.size()));
+  for (const Leaf& l : level.leaves) out.i32(l.sector);
+
+  out.u32(format::kThings);
+  out.u32(static_cast<uint32_t>(level.things.size()));
+  for (const Thing& t : level.things) {
+    out.i32(t.type);
+    out.f64(t.pos.x);
+    out.f64(t.pos.y);
+    out.f64(t.angle);
+  }
+}
+
+}  // namespace
+
+std::vector<uint8_t> encode(const Level& level) {
+  ByteWriter out;
+  out.raw(std::span(reinterpret_cast<const uint8_t*>(format::kMagic), 8));
+  out.u32(format::kVersion);
+  out.u32(0);
+  out.u64(0);  // payload size, patched below
+  out.u64(0);  // checksum, patched below
+  write_payload(out, level);
+  std::vector<uint8_t>& bytes = out.bytes();
+  const std::span<const uint8_t> payload(bytes.data() + format::kHeaderSize, bytes.size() - format::kHeaderSize);
+  out.patch_u64(16, payload.size());
+  out.patch_u64(24, fnv1a64(payload));
+  return std::move(bytes);
+}
+
+void write(const Level& level, const std::filesystem::path& path) { write_file_atomically(path, encode(level)); }
+
+}  // namespace p3d::level

@@ -1,0 +1,354 @@
+// The .map text parser: one statement per line, positional arguments then
+// key=value options. Every mistake is reported as "file:line: message".
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+#include "engine/map/source.h"
+#include "engine/util/file.h"
+
+namespace p3d::map {
+
+namespace {
+
+class Statement {
+ public:
+  Statement(const FileLoc& loc, std::vector<std::string_view> words) : loc_(loc) {
+    keyword_ = words.front();
+    for (size_t i = 1; i < words.size(); ++i) {
+      const size_t eq = words[i].find('=');
+      if (eq == std::string_view::npos) {
+        if (!options_.empty()) fail("positional argument '" + std::string(words[i]) + "' after key=value options");
+        args_.push_back(words[i]);
+      } else {
+        const std::string key(words[i].substr(0, eq));
+        if (key.empty()) fail("missing key before '=' in '" + std::string(words[i]) + "'");
+        if (!options_.emplace(key, words[i].substr(eq + 1)).second) fail("option '" + key + "' given twice");
+      }
+    }
+  }
+
+  std::string_view keyword() const { return keyword_; }
+  const FileLoc& loc() const { return loc_; }
+  [[noreturn]] void fail(const std::string& message) const { throw Error(loc_, message); }
+
+  void expect_args(size_t n, const char* usage) const {
+    if (args_.size() != n) fail(std::string(keyword_) + ": expected " + usage);
+  }
+  std::string_view arg(size_t i) const { return args_[i]; }
+  size_t arg_count() const { return args_.size(); }
+
+  double number(std::string_view text, const std::string& what) const {
+    double v = 0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+    if (ec == std::errc::result_out_of_range) fail(what + " '" + std::string(text) + "' is out of range");
+    if (ec != std::errc() || ptr != end) fail(what + " '" + std::string(text) + "' is not a number");
+    if (!std::isfinite(v)) fail(what + " '" + std::string(text) + "' is not finite");
+    return v;
+  }
+  int integer(std::string_view text, const std::string& what, int lo, int hi) const {
+    const double v = number(text, what);
+    if (v != std::floor(v) || v < lo || v > hi)
+      fail(what + " '" + std::string(text) + "' must be an integer from " + std::to_string(lo) + " to " +
+           std::to_string(hi));
+    return static_cast<int>(v);
+  }
+  int64_t coordinate(std::string_view text, const char* axis) const {
+    int64_t fixed = 0;
+    if (!geom::to_fixed(number(text, std::string(axis) + " coordinate"), fixed))
+      fail(std::string(axis) + " coordinate '" + std::string(text) + "' is outside +-" +
+           std::to_string(static_cast<int64_t>(geom::kMaxCoord)));
+    return fixed;
+  }
+
+  // Options: each must be consumed exactly once; leftovers are reported as unknown.
+  std::optional<std::string_view> take(const std::string& key) {
+    auto it = options_.find(key);
+    if (it == options_.end()) return std::nullopt;
+    std::string_view v = it->second;
+    options_.erase(it);
+    return v;
+  }
+  std::string_view require(const std::string& key) {
+    auto v = take(key);
+    if (!v) fail(std::string(keyword_) + ": missing option " + key + "=");
+    return *v;
+  }
+  void finish() const {
+    if (!options_.empty()) fail(std::string(keyword_) + ": unknown option '" + options_.begin()->first + "'");
+  }
+
+ private:
+  FileLoc loc_;
+  std::string_view keyword_;
+  std::vector<std::string_view> args_;
+  std::map<std::string, std::string_view> options_;  // ordered: deterministic messages
+};
+
+std::vector<std::string_view> split_words(std::string_view line) {
+  std::vector<std::string_view> words;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    if (i >= line.size() || line[i] == '#') break;
+    const size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r' && line[i] != '#') ++i;
+    words.push_back(line.substr(start, i - start));
+  }
+  return words;
+}
+
+class Parser {
+ public:
+  explicit Parser(const std::filesystem::path& path) { source_.path = path; }
+
+  Source run(const std::string& text) {
+    int line_number = 0;
+    size_t pos = 0;
+    while (pos <= text.size()) {
+      size_t end = text.find('\n', pos);
+      if (end == std::string::npos) end = text.size();
+      ++line_number;
+      const std::string_view line(text.data() + pos, end - pos);
+      if (line.find('\0') != std::string_view::npos)
+        throw Error(FileLoc{source_.path.string(), line_number}, "binary data in a text map");
+      auto words = split_words(line);
+      if (!words.empty()) statement(Statement({source_.path.string(), line_number}, std::move(words)));
+      pos = end + 1;
+    }
+    if (!have_player_) throw Error(FileLoc{source_.path.string(), 0}, "no player start (add 'player X Y ANGLE')");
+    if (source_.walls.empty()) throw Error(FileLoc{source_.path.string(), 0}, "the map has no walls");
+    if (source_.sectors.empty() && source_.default_sector == kNone) add_builtin_default_sector();
+    return std::move(source_);
+  }
+
+ private:
+  void statement(Statement s) {
+    const std::string_view k = s.keyword();
+    if (k == "title") return title(s);
+    if (k == "texture") return texture(s);
+    if (k == "sky") return sky(s);
+    if (k == "vertex") return vertex(s);
+    if (k == "sector") return sector(s, false);
+    if (k == "default") return sector(s, true);
+    if (k == "wall") return wall(s);
+    if (k == "segment") return segment(s);
+    if (k == "player") return player(s);
+    if (k == "thing") return thing(s);
+    s.fail("unknown statement '" + std::string(k) + "'");
+  }
+
+  void title(Statement& s) {
+    s.finish();
+    std::string t;
+    for (size_t i = 0; i < s.arg_count(); ++i) {
+      if (i) t.push_back(' ');
+      t.append(s.arg(i));
+    }
+    source_.title = t;
+  }
+
+  void texture(Statement& s) {
+    s.expect_args(2, "texture NAME FILE.png");
+    s.finish();
+    const std::string name(s.arg(0));
+    if (name == "sky" || name == "-") s.fail("'" + name + "' is reserved and cannot name a texture");
+    if (texture_index_.count(name)) s.fail("texture '" + name + "' is defined twice");
+    const std::filesystem::path file = source_.path.parent_path() / std::string(s.arg(1));
+    if (!std::filesystem::exists(file)) s.fail("texture file '" + file.string() + "' does not exist");
+    Texture t{name, {}, s.loc()};
+    try {
+      t.image = image::load_png(file);
+    } catch (const Error& e) {
+      s.fail(e.what());
+    }
+    auto pow2 = [](int v) { return v > 0 && (v & (v - 1)) == 0; };
+    if (!pow2(t.image.width) || !pow2(t.image.height) || t.image.width > kMaxTextureSize ||
+        t.image.height > kMaxTextureSize)
+      s.fail("texture '" + name + "' is " + std::to_string(t.image.width) + "x" + std::to_string(t.image.height) +
+             ": sides must be powers of two up to " + std::to_string(kMaxTextureSize));
+    texture_index_[name] = static_cast<int>(source_.textures.size());
+    source_.textures.push_back(std::move(t));
+  }
+
+  void sky(Statement& s) {
+    s.expect_args(1, "sky TEXTURE");
+    s.finish();
+    source_.sky_texture = texture_ref(s, s.arg(0));
+  }
+
+  void vertex(Statement& s) {
+    s.expect_args(3, "vertex NAME X Y");
+    s.finish();
+    const std::string name(s.arg(0));
+    if (vertex_index_.count(name)) s.fail("vertex '" + name + "' is defined twice");
+    vertex_index_[name] = static_cast<int>(source_.vertices.size());
+    source_.vertices.push_back({name, {s.coordinate(s.arg(1), "x"), s.coordinate(s.arg(2), "y")}, s.loc()});
+  }
+
+  void sector(Statement& s, bool is_default) {
+    Sector sec;
+    sec.loc = s.loc();
+    if (is_default) {
+      s.expect_args(0, "default floor=F ceiling=C light=L floor_tex=T ceiling_tex=T");
+      if (source_.default_sector != kNone) s.fail("default sector is defined twice");
+      sec.name = "(default)";
+    } else {
+      s.expect_args(1, "sector NAME floor=F ceiling=C light=L floor_tex=T ceiling_tex=T");
+      sec.name = std::string(s.arg(0));
+      if (sector_index_.count(sec.name)) s.fail("sector '" + sec.name + "' is defined twice");
+    }
+    sec.floor = height(s, s.require("floor"), "floor");
+    sec.ceiling = height(s, s.require("ceiling"), "ceiling");
+    if (sec.ceiling < sec.floor) s.fail("ceiling is below the floor");
+    if (auto l = s.take("light")) sec.light = s.integer(*l, "light", 0, 255);
+    sec.floor_texture = texture_ref(s, s.require("floor_tex"));
+    const std::string_view ceiling = s.require("ceiling_tex");
+    if (ceiling == "sky") {
+      if (source_.sky_texture == kNone) s.fail("ceiling_tex=sky needs a 'sky TEXTURE' statement before it");
+      sec.ceiling_texture = kSkyTexture;
+    } else {
+      sec.ceiling_texture = texture_ref(s, ceiling);
+    }
+    s.finish();
+    const int index = static_cast<int>(source_.sectors.size());
+    if (is_default)
+      source_.default_sector = index;
+    else
+      sector_index_[sec.name] = index;
+    source_.sectors.push_back(std::move(sec));
+  }
+
+  double height(const Statement& s, std::string_view text, const char* what) const {
+    const double v = s.number(text, what);
+    if (std::fabs(v) > geom::kMaxCoord) s.fail(std::string(what) + " height is out of range");
+    return v;
+  }
+
+  void wall(Statement& s) {
+    s.expect_args(2, "wall V1 V2 front=SECTOR [back=SECTOR] [middle=T] [upper=T] [lower=T] ...");
+    Wall w = endpoints(s);
+    w.front = side(s, "", sector_ref(s, s.require("front")));
+    if (auto back = s.take("back")) {
+      w.back = side(s, "back_", sector_ref(s, *back));
+      // Upper and lower textures default to the same on both sides.
+      if (w.back.upper == kNone) w.back.upper = w.front.upper;
+      if (w.back.lower == kNone) w.back.lower = w.front.lower;
+      if (w.front.middle != kNone || w.back.middle != kNone)
+        s.fail("two-sided walls take upper= and lower= textures; masked middle textures are not supported");
+    } else {
+      if (w.front.middle == kNone) s.fail("one-sided wall needs a middle= texture");
+    }
+    if (auto peg = s.take("unpeg")) {
+      if (*peg == "upper") w.flags = kUnpegUpper;
+      else if (*peg == "lower") w.flags = kUnpegLower;
+      else if (*peg == "both") w.flags = kUnpegUpper | kUnpegLower;
+      else s.fail("unpeg must be upper, lower or both");
+    }
+    s.finish();
+    source_.walls.push_back(w);
+  }
+
+  void segment(Statement& s) {
+    s.expect_args(2, "segment V1 V2 texture=T [xoff=N] [yoff=N]");
+    Wall w = endpoints(s);
+    w.segment = true;
+    w.front.middle = texture_ref(s, s.require("texture"));
+    if (auto x = s.take("xoff")) w.front.x_offset = s.number(*x, "xoff");
+    if (auto y = s.take("yoff")) w.front.y_offset = s.number(*y, "yoff");
+    w.back = w.front;
+    s.finish();
+    source_.walls.push_back(w);
+  }
+
+  Wall endpoints(const Statement& s) {
+    Wall w;
+    w.loc = s.loc();
+    w.v1 = vertex_ref(s, s.arg(0));
+    w.v2 = vertex_ref(s, s.arg(1));
+    if (source_.point(w.v1) == source_.point(w.v2)) s.fail("zero-length wall: both ends are at the same point");
+    return w;
+  }
+
+  Side side(Statement& s, const std::string& prefix, int sector) {
+    Side sd;
+    sd.sector = sector;
+    if (auto t = s.take(prefix + "upper")) sd.upper = texture_ref(s, *t);
+    if (auto t = s.take(prefix + "middle")) sd.middle = texture_ref(s, *t);
+    if (auto t = s.take(prefix + "lower")) sd.lower = texture_ref(s, *t);
+    if (auto x = s.take(prefix + "xoff")) sd.x_offset = s.number(*x, prefix + "xoff");
+    if (auto y = s.take(prefix + "yoff")) sd.y_offset = s.number(*y, prefix + "yoff");
+    return sd;
+  }
+
+  void player(Statement& s) {
+    s.expect_args(3, "player X Y ANGLE");
+    s.finish();
+    if (have_player_) s.fail("player start is defined twice");
+    have_player_ = true;
+    source_.player.pos = geom::to_world({s.coordinate(s.arg(0), "x"), s.coordinate(s.arg(1), "y")});
+    source_.player.angle = s.number(s.arg(2), "angle");
+    source_.player.loc = s.loc();
+  }
+
+  void thing(Statement& s) {
+    s.expect_args(4, "thing TYPE X Y ANGLE");
+    s.finish();
+    Thing t;
+    t.type = s.integer(s.arg(0), "thing type", 0, 1 << 30);
+    t.pos = geom::to_world({s.coordinate(s.arg(1), "x"), s.coordinate(s.arg(2), "y")});
+    t.angle = s.number(s.arg(3), "angle");
+    source_.things.push_back(t);
+  }
+
+  int vertex_ref(const Statement& s, std::string_view name) const {
+    auto it = vertex_index_.find(std::string(name));
+    if (it == vertex_index_.end()) s.fail("unknown vertex '" + std::string(name) + "'");
+    return it->second;
+  }
+  int sector_ref(const Statement& s, std::string_view name) const {
+    auto it = sector_index_.find(std::string(name));
+    if (it == sector_index_.end()) s.fail("unknown sector '" + std::string(name) + "'");
+    return it->second;
+  }
+  int texture_ref(const Statement& s, std::string_view name) const {
+    auto it = texture_index_.find(std::string(name));
+    if (it == texture_index_.end()) s.fail("unknown texture '" + std::string(name) + "'");
+    return it->second;
+  }
+
+  // A map of plain segments still needs a floor and a ceiling: flat grey, 128 high.
+  void add_builtin_default_sector() {
+    Texture flat{"(default flat)", image::Image(64, 64), {}};
+    for (int y = 0; y < 64; ++y)
+      for (int x = 0; x < 64; ++x) {
+        const uint32_t v = ((x / 8 + y / 8) & 1) ? 96 : 80;
+        flat.image.at(x, y) = image::rgba(v, v, v);
+      }
+    const int tex = static_cast<int>(source_.textures.size());
+    source_.textures.push_back(std::move(flat));
+    Sector sec;
+    sec.name = "(default)";
+    sec.floor_texture = sec.ceiling_texture = tex;
+    source_.default_sector = static_cast<int>(source_.sectors.size());
+    source_.sectors.push_back(sec);
+  }
+
+  Source source_;
+  bool have_player_ = false;
+  std::unordered_map<std::string, int> vertex_index_, sector_index_, texture_index_;
+};
+
+}  // namespace
+
+Source parse_map(const std::string& text, const std::filesystem::path& path) { return Parser(path).run(text); }
+
+Source load_map(const std::filesystem::path& path) {
+  Source source = parse_map(read_file_text(path), path);
+  validate(source);
+  return source;
+}
+
+}  // namespace p3d::map

@@ -1,0 +1,163 @@
+// Source validation shared by all map formats: every wall has length, no two
+// walls cross or overlap, every sector is used and closed, heights and textures
+// make sense. Messages point at the line of the offending statement.
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "engine/map/source.h"
+
+namespace p3d::map {
+
+namespace {
+
+using geom::IPoint;
+
+// Candidate pairs come from a uniform grid: each wall is entered in the cells its
+// segment passes through, and walls sharing a cell are tested exactly.
+void check_crossings(const Source& src) {
+  const auto& walls = src.walls;
+  const size_t n = walls.size();
+  if (n < 2) return;
+
+  int64_t min_x = INT64_MAX, min_y = INT64_MAX, max_x = INT64_MIN, max_y = INT64_MIN;
+  double total_length = 0;
+  for (const Wall& w : walls) {
+    for (IPoint p : {src.point(w.v1), src.point(w.v2)}) {
+      min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
+      min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
+    }
+    const IPoint d = geom::sub(src.point(w.v2), src.point(w.v1));
+    total_length += std::hypot(double(d.x), double(d.y));
+  }
+  const double extent = double(std::max(max_x - min_x, max_y - min_y)) + 1;
+  const double cell = std::max({total_length / n, extent / 4096.0, 1.0});
+  const int64_t cells_x = static_cast<int64_t>((max_x - min_x) / cell) + 1;
+
+  std::vector<std::pair<uint64_t, uint32_t>> entries;  // (cell id, wall)
+  entries.reserve(n * 3);
+  for (uint32_t i = 0; i < n; ++i) {
+    IPoint a = src.point(walls[i].v1), b = src.point(walls[i].v2);
+    if (b.x < a.x) std::swap(a, b);
+    const double ax = (a.x - min_x) / cell, ay = (a.y - min_y) / cell;
+    const double bx = (b.x - min_x) / cell, by = (b.y - min_y) / cell;
+    const int64_t c0 = static_cast<int64_t>(ax), c1 = static_cast<int64_t>(bx);
+    for (int64_t cx = c0; cx <= c1; ++cx) {
+      // y-range of the segment inside this column of cells, widened to be conservative.
+      auto y_at = [&](double x) { return bx == ax ? ay : ay + (by - ay) * (std::clamp(x, ax, bx) - ax) / (bx - ax); };
+      double y0 = y_at(double(cx)), y1 = y_at(double(cx + 1));
+      if (y0 > y1) std::swap(y0, y1);
+      if (cx == c0) y0 = std::min(y0, ay), y1 = std::max(y1, ay);
+      if (cx == c1) y0 = std::min(y0, by), y1 = std::max(y1, by);
+      const int64_t r0 = std::max<int64_t>(0, static_cast<int64_t>(y0 - 1e-6));
+      const int64_t r1 = static_cast<int64_t>(y1 + 1e-6);
+      for (int64_t cy = r0; cy <= r1; ++cy) entries.push_back({uint64_t(cy * cells_x + cx), i});
+    }
+  }
+  std::sort(entries.begin(), entries.end());
+
+  std::pair<uint32_t, uint32_t> worst{UINT32_MAX, UINT32_MAX};  // the conflict with the smallest later wall
+  geom::SegmentContact worst_kind = geom::SegmentContact::kNone;
+  for (size_t begin = 0; begin < entries.size();) {
+    size_t end = begin;
+    while (end < entries.size() && entries[end].first == entries[begin].first) ++end;
+    for (size_t p = begin; p < end; ++p)
+      for (size_t q = p + 1; q < end; ++q) {
+        const uint32_t i = entries[p].second, j = entries[q].second;  // i < j (sorted)
+        if (std::make_pair(j, i) >= std::make_pair(worst.second, worst.first)) continue;
+        const auto kind = geom::segment_contact(src.point(walls[i].v1), src.point(walls[i].v2),
+                                                src.point(walls[j].v1), src.point(walls[j].v2));
+        if (kind == geom::SegmentContact::kCross || kind == geom::SegmentContact::kOverlap) {
+          worst = {i, j};
+          worst_kind = kind;
+        }
+      }
+    begin = end;
+  }
+  if (worst.first == UINT32_MAX) return;
+  const Wall& later = walls[worst.second];
+  const std::string other = walls[worst.first].loc.str();
+  if (worst_kind == geom::SegmentContact::kCross)
+    throw Error(later.loc, "wall crosses the wall at " + other);
+  throw Error(later.loc, "wall overlaps the collinear wall at " + other);
+}
+
+// Walking a sector's boundary with the sector on the right, every point is
+// entered as often as it is left; otherwise the sector leaks.
+void check_sector_closure(const Source& src) {
+  struct Key {
+    int sector;
+    IPoint p;
+    bool operator==(const Key&) const = default;
+  };
+  struct KeyHash {
+    size_t operator()(const Key& k) const {
+      return std::hash<int64_t>()(k.p.x * 0x9E3779B97F4A7C15ll ^ k.p.y * 31 ^ k.sector);
+    }
+  };
+  std::unordered_map<Key, int, KeyHash> balance;
+  std::vector<bool> used(src.sectors.size(), false);
+  auto edge = [&](int sector, int from, int to) {
+    used[sector] = true;
+    balance[{sector, src.point(from)}] += 1;
+    balance[{sector, src.point(to)}] -= 1;
+  };
+  for (const Wall& w : src.walls) {
+    if (w.segment) continue;
+    edge(w.front.sector, w.v1, w.v2);
+    if (w.two_sided()) edge(w.back.sector, w.v2, w.v1);
+  }
+  for (size_t s = 0; s < src.sectors.size(); ++s)
+    if (!used[s] && int(s) != src.default_sector)
+      throw Error(src.sectors[s].loc, "sector '" + src.sectors[s].name + "' is not bounded by any wall");
+
+  // Report the open point of the earliest sector, at the smallest coordinates.
+  const Key* worst = nullptr;
+  for (const auto& [key, count] : balance) {
+    if (count == 0) continue;
+    if (!worst || std::tie(key.sector, key.p.x, key.p.y) < std::tie(worst->sector, worst->p.x, worst->p.y))
+      worst = &key;
+  }
+  if (worst) {
+    const geom::Vec2 p = geom::to_world(worst->p);
+    const Sector& s = src.sectors[worst->sector];
+    throw Error(s.loc, "sector '" + s.name + "' is not closed: its boundary has an open end at (" +
+                           std::to_string(p.x) + ", " + std::to_string(p.y) + ")");
+  }
+}
+
+// A two-sided wall shows an upper part where the far ceiling is lower than the
+// near one, and a lower part where the far floor is higher; those need textures.
+void check_wall_textures(const Source& src) {
+  for (const Wall& w : src.walls) {
+    if (!w.two_sided()) continue;
+    const Sector& f = src.sectors[w.front.sector];
+    const Sector& b = src.sectors[w.back.sector];
+    const bool both_sky = f.ceiling_texture == kSkyTexture && b.ceiling_texture == kSkyTexture;
+    auto need = [&](const Side& side, const Sector& near, const Sector& far, const char* which) {
+      if (far.ceiling < near.ceiling && !both_sky && side.upper == kNone)
+        throw Error(w.loc, std::string("wall needs an upper texture on its ") + which + " side (sector '" + far.name +
+                               "' has a lower ceiling than '" + near.name + "')");
+      if (far.floor > near.floor && side.lower == kNone)
+        throw Error(w.loc, std::string("wall needs a lower texture on its ") + which + " side (sector '" + far.name +
+                               "' has a higher floor than '" + near.name + "')");
+    };
+    need(w.front, f, b, "front");
+    need(w.back, b, f, "back");
+  }
+}
+
+}  // namespace
+
+void validate(const Source& src) {
+  if (src.walls.empty()) throw Error(FileLoc{src.path.string(), 0}, "the map has no walls");
+  for (const Wall& w : src.walls) {
+    if (src.point(w.v1) == src.point(w.v2)) throw Error(w.loc, "zero-length wall: both ends are at the same point");
+    if (!w.segment && w.front.sector == kNone) throw Error(w.loc, "wall has no front sector");
+  }
+  check_crossings(src);
+  check_sector_closure(src);
+  check_wall_textures(src);
+}
+
+}  // namespace p3d::map

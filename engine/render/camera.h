@@ -1,0 +1,49 @@
+// Camera, per-frame statistics and per-column hit records: the plain data that
+// flows into and out of every renderer.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "engine/geom/geom.h"
+#include "engine/image/image.h"
+#include "engine/level/level.h"
+
+namespace p3d::render {
+
+using geom::Vec2;
+using Frame = image::Image;
+
+constexpr double kEyeHeight = 41;  // Doom's view height above the floor
+
+struct Camera {
+  Vec2 pos{0, 0};
+  double z = kEyeHeight;  // absolute eye height
+  double angle = 0;       // degrees, counter-clockwise from east (+x)
+  double fov = 90;        // horizontal field of view, degrees
+};
+
+// A camera standing at pos with its eye `eye_height` above the floor found there.
+Camera camera_at(const level::Level& level, Vec2 pos, double angle, double eye_height = kEyeHeight, double fov = 90);
+
+struct RenderStats {
+  uint64_t nodes_visited = 0;    // BSP nodes whose splitter was tested
+  uint64_t subtrees_culled = 0;  // subtrees skipped because their box projects onto closed (or no) columns
+  uint64_t fragments_drawn = 0;  // fragments that drew at least one column
+  uint64_t columns_closed = 0;
+  uint64_t pixels_written = 0;
+  bool early_exit = false;       // the traversal stopped because every column was closed
+  // Ray-based renderers:
+  uint64_t rays = 0;
+  uint64_t steps = 0;            // cells (DDA) or marching steps (sphere) over all rays
+  uint64_t max_steps = 0;        // most steps of one ray
+};
+
+// Per screen column: the wall that closes it (source order) and its perpendicular distance.
+struct ColumnHit {
+  int32_t wall = -1;
+  double dist = 0;
+};
+using ColumnHits = std::vector<ColumnHit>;
+
+}  // namespace p3d::render

@@ -1,0 +1,80 @@
+// The only writer of pixels. A Canvas holds, per screen column, the rows still
+// open (Doom's ceilingclip/floorclip as one [top, bottom) range) and the sector
+// the column's ray is travelling through. Renderers hand it wall hits, column by
+// column, nearest first; it draws the wall's visible parts and the floor and
+// ceiling in front of it, then narrows (or closes) the column.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "engine/render/view.h"
+
+namespace p3d::render {
+
+// One wall seen in one column.
+struct WallHit {
+  uint32_t wall;
+  int side;      // the side facing the camera: 0 front, 1 back
+  double depth;  // along the view direction
+  double t;      // parameter along the wall, 0 at p1
+};
+
+class Canvas {
+ public:
+  // Resets every column to fully open, in `camera_sector` (may be kNone).
+  void begin(const level::Level& level, const View& view, Frame& frame, int camera_sector, ColumnHits* hits);
+
+  // Front to back: draws what the hit shows in the column's open rows and narrows
+  // them. Returns true when this hit closes the column.
+  bool draw_wall(int x, const WallHit& hit);
+
+  // Back to front (painter): draws the hit's wall parts and the planes in front of
+  // it over the whole column, ignoring and keeping the column's state.
+  void paint_wall(int x, const WallHit& hit);
+  // Painter's first coat: the sector's planes out to the horizon over the whole column.
+  void paint_background(int x, int sector);
+
+  // Fills the rows still open in every column with the planes of the column's sector, out to the horizon.
+  void finish();
+
+  bool closed(int x) const { return columns_[x].top >= columns_[x].bottom; }
+  int column_sector(int x) const { return columns_[x].sector; }
+
+  uint64_t pixels_written() const { return pixels_; }
+  uint64_t columns_closed() const { return closed_count_; }
+  // Optional per-pixel write counts (for overdraw pictures); empty unless enabled before begin().
+  void count_writes(bool enable) { count_writes_ = enable; }
+  std::span<const uint16_t> write_counts() const { return writes_; }
+
+ private:
+  struct Column {
+    int top, bottom;  // open rows [top, bottom)
+    int sector;
+  };
+  struct Rows;  // the rows where a hit's parts fall, see draw.cpp
+
+  void draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom);
+  void close(int x, const WallHit& hit);
+  void plane_span(int x, int y0, int y1, int sector, bool ceiling);
+  void sky_span(int x, int y0, int y1);
+  void wall_span(int x, int y0, int y1, int texture, const WallHit& hit, double anchor, int light);
+  void fill_span(int x, int y0, int y1, uint32_t color);
+  void planes_to_horizon(int x, int y0, int y1, int sector);
+  int near_sector(const level::Wall& w, const WallHit& hit, int x) const;
+  uint32_t* pixel(int x, int y) { return frame_->pixels.data() + size_t(y) * view_->width + x; }
+  void count(int x, int y0, int y1);
+
+  const level::Level* level_ = nullptr;
+  const View* view_ = nullptr;
+  Frame* frame_ = nullptr;
+  ColumnHits* hits_ = nullptr;
+  std::vector<Column> columns_;
+  std::vector<double> row_dy_;   // (y + 0.5) - H/2 per row
+  std::vector<double> row_inv_;  // 1 / row_dy_
+  uint64_t pixels_ = 0, closed_count_ = 0;
+  bool count_writes_ = false;
+  std::vector<uint16_t> writes_;
+};
+
+}  // namespace p3d::render

@@ -1,0 +1,63 @@
+// The brute-force reference renderer, the oracle of the tests: for every column,
+// hit every wall, sort the hits by distance and hand them to the canvas nearest
+// first. No BSP anywhere, not even to find the camera's sector.
+#include <algorithm>
+
+#include "engine/render/draw.h"
+#include "engine/render/renderer.h"
+
+namespace p3d::render {
+
+namespace {
+
+class Reference final : public Renderer {
+ public:
+  std::string_view name() const override { return "reference"; }
+
+  RenderStats render(const level::Level& level, const Camera& camera, Frame& frame, ColumnHits* hits) override {
+    const View view(camera, frame.width, frame.height);
+    canvas_.begin(level, view, frame, level::sector_at_brute_force(level, camera.pos), hits);
+
+    walls_.clear();
+    for (uint32_t i = 0; i < level.walls.size(); ++i) {
+      const level::Wall& w = level.walls[i];
+      const int side = facing_side(w, view.pos);
+      if (side >= 0 && visible_side(w, side)) walls_.push_back({i, side, WallProjector(view, w.a, w.b)});
+    }
+    for (int x = 0; x < view.width; ++x) {
+      column_hits_.clear();
+      for (const VisibleWall& w : walls_) {
+        double depth, t;
+        if (w.projector.hit(x, depth, t) && t >= 0 && t <= 1) column_hits_.push_back({w.wall, w.side, depth, t});
+      }
+      std::sort(column_hits_.begin(), column_hits_.end(), [](const WallHit& a, const WallHit& b) {
+        return a.depth != b.depth ? a.depth < b.depth : a.wall < b.wall;
+      });
+      for (const WallHit& h : column_hits_)
+        if (canvas_.draw_wall(x, h)) break;
+    }
+    canvas_.finish();
+
+    RenderStats stats;
+    stats.columns_closed = canvas_.columns_closed();
+    stats.pixels_written = canvas_.pixels_written();
+    stats.rays = static_cast<uint64_t>(view.width);
+    return stats;
+  }
+
+ private:
+  struct VisibleWall {
+    uint32_t wall;
+    int side;
+    WallProjector projector;
+  };
+  Canvas canvas_;
+  std::vector<VisibleWall> walls_;
+  std::vector<WallHit> column_hits_;
+};
+
+}  // namespace
+
+std::unique_ptr<Renderer> make_reference() { return std::make_unique<Reference>(); }
+
+}  // namespace p3d::render

@@ -1,0 +1,25 @@
+#include "engine/render/renderer.h"
+
+#include "engine/render/view.h"
+
+namespace p3d::render {
+
+Camera camera_at(const level::Level& level, Vec2 pos, double angle, double eye_height, double fov) {
+  int sector = level.sector_at(pos);
+  if (sector == level::kNone) sector = level.default_sector;
+  const double floor = sector == level::kNone ? 0 : level.sectors[sector].floor;
+  return Camera{pos, floor + eye_height, angle, fov};
+}
+
+const std::vector<std::string>& renderer_names() {
+  static const std::vector<std::string> names = {"bsp", "reference"};
+  return names;
+}
+
+std::unique_ptr<Renderer> make_renderer(std::string_view name) {
+  if (name == "bsp") return make_bsp_front_to_back();
+  if (name == "reference") return make_reference();
+  return nullptr;
+}
+
+}  // namespace p3d::render

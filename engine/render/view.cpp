@@ -1,0 +1,51 @@
+#include "engine/render/view.h"
+
+namespace p3d::render {
+
+namespace {
+
+// Camera-space point: x = lateral (right), y = depth (forward).
+Vec2 to_camera(const View& v, Vec2 p) { return {v.lateral_of(p), v.depth_of(p)}; }
+
+// Widens [lo, hi] (in screen x) to whole columns, one extra on each side, clamped to the screen.
+ColumnRange to_columns(const View& v, double lo, double hi) {
+  lo = std::clamp(lo, -2.0, v.width + 2.0);
+  hi = std::clamp(hi, -2.0, v.width + 2.0);
+  return {std::max(0, static_cast<int>(std::floor(lo - 0.5)) - 1),
+          std::min(v.width - 1, static_cast<int>(std::ceil(hi - 0.5)) + 1)};
+}
+
+// Projects a camera-space polygon clipped to depth >= near; empty if nothing is in front.
+ColumnRange project(const View& v, const Vec2* pts, int n) {
+  double lo = INFINITY, hi = -INFINITY;
+  auto add = [&](Vec2 c) {
+    const double sx = v.half_w + v.d * c.x / c.y;
+    lo = std::min(lo, sx);
+    hi = std::max(hi, sx);
+  };
+  for (int i = 0; i < n; ++i) {
+    const Vec2 p = pts[i], q = pts[(i + 1) % n];
+    const bool p_in = p.y >= kNearDepth, q_in = q.y >= kNearDepth;
+    if (p_in) add(p);
+    if (p_in != q_in) add(p + (q - p) * ((kNearDepth - p.y) / (q.y - p.y)));
+  }
+  if (lo > hi) return {};
+  return to_columns(v, lo, hi);
+}
+
+}  // namespace
+
+ColumnRange columns_of_segment(const View& v, Vec2 p0, Vec2 p1) {
+  const Vec2 pts[2] = {to_camera(v, p0), to_camera(v, p1)};
+  return project(v, pts, 2);
+}
+
+ColumnRange columns_of_box(const View& v, const geom::BBox& box) {
+  if (box.empty()) return {};
+  if (box.contains(v.pos, 1)) return {0, v.width - 1};
+  const Vec2 pts[4] = {to_camera(v, box.min), to_camera(v, {box.max.x, box.min.y}), to_camera(v, box.max),
+                       to_camera(v, {box.min.x, box.max.y})};
+  return project(v, pts, 4);
+}
+
+}  // namespace p3d::render

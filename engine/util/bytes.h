@@ -1,0 +1,103 @@
+// Little-endian byte encoding with bounds-checked decoding, independent of the
+// host's struct layout, plus the FNV-1a checksum used by the compiled format.
+#pragma once
+
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "engine/util/error.h"
+
+namespace p3d {
+
+class ByteWriter {
+ public:
+  void u8(uint8_t v) { out_.push_back(v); }
+  void u32(uint32_t v) { put(v); }
+  void i32(int32_t v) { put(static_cast<uint32_t>(v)); }
+  void u64(uint64_t v) { put(v); }
+  void i64(int64_t v) { put(static_cast<uint64_t>(v)); }
+  void f64(double v) { put(std::bit_cast<uint64_t>(v)); }
+  void str(const std::string& s) {
+    u32(static_cast<uint32_t>(s.size()));
+    out_.insert(out_.end(), s.begin(), s.end());
+  }
+  void raw(std::span<const uint8_t> bytes) { out_.insert(out_.end(), bytes.begin(), bytes.end()); }
+  void patch_u64(size_t offset, uint64_t v) {
+    for (int i = 0; i < 8; ++i) out_[offset + i] = static_cast<uint8_t>(v >> (8 * i));
+  }
+  size_t size() const { return out_.size(); }
+  std::vector<uint8_t>& bytes() { return out_; }
+
+ private:
+  template <typename U>
+  void put(U v) {
+    for (size_t i = 0; i < sizeof(U); ++i) out_.push_back(static_cast<uint8_t>(v >> (8 * i)));
+  }
+  std::vector<uint8_t> out_;
+};
+
+// Every read checks the remaining size and throws Error("<what>: truncated ...").
+class ByteReader {
+ public:
+  ByteReader(std::span<const uint8_t> bytes, std::string what) : bytes_(bytes), what_(std::move(what)) {}
+
+  uint8_t u8() { return static_cast<uint8_t>(get<uint8_t>()); }
+  uint32_t u32() { return get<uint32_t>(); }
+  int32_t i32() { return static_cast<int32_t>(get<uint32_t>()); }
+  uint64_t u64() { return get<uint64_t>(); }
+  int64_t i64() { return static_cast<int64_t>(get<uint64_t>()); }
+  double f64() { return std::bit_cast<double>(get<uint64_t>()); }
+  std::string str(size_t max_size) {
+    const uint32_t n = u32();
+    if (n > max_size) fail("string of " + std::to_string(n) + " bytes is too long");
+    need(n);
+    std::string s(reinterpret_cast<const char*>(bytes_.data() + pos_), n);
+    pos_ += n;
+    return s;
+  }
+  std::span<const uint8_t> raw(size_t n) {
+    need(n);
+    auto s = bytes_.subspan(pos_, n);
+    pos_ += n;
+    return s;
+  }
+  // A count of records, each at least min_record_size bytes, that must fit in what is left.
+  uint32_t count(size_t min_record_size, const char* name) {
+    const uint32_t n = u32();
+    if (static_cast<uint64_t>(n) * min_record_size > remaining())
+      fail(std::string("truncated: ") + std::to_string(n) + " " + name + " do not fit in the file");
+    return n;
+  }
+  size_t remaining() const { return bytes_.size() - pos_; }
+  size_t position() const { return pos_; }
+  [[noreturn]] void fail(const std::string& message) const { throw Error(what_ + ": " + message); }
+
+ private:
+  void need(size_t n) const {
+    if (n > remaining()) fail("truncated at byte " + std::to_string(pos_));
+  }
+  template <typename U>
+  U get() {
+    need(sizeof(U));
+    U v = 0;
+    for (size_t i = 0; i < sizeof(U); ++i) v |= static_cast<U>(static_cast<U>(bytes_[pos_ + i]) << (8 * i));
+    pos_ += sizeof(U);
+    return v;
+  }
+  std::span<const uint8_t> bytes_;
+  std::string what_;
+  size_t pos_ = 0;
+};
+
+// FNV-1a, 64-bit: the checksum of the compiled level format.
+inline uint64_t fnv1a64(std::span<const uint8_t> bytes) {
+  uint64_t h = 0xcbf29ce484222325ull;
+  for (uint8_t b : bytes) h = (h ^ b) * 0x100000001b3ull;
+  return h;
+}
+
+}  // namespace p3d

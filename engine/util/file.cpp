@@ -1,0 +1,60 @@
+#include "engine/util/file.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "engine/util/error.h"
+
+namespace p3d {
+
+namespace {
+
+std::string errno_text() { return std::strerror(errno); }
+
+template <typename Container>
+Container read_all(const std::filesystem::path& path) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) throw Error(path.string() + ": cannot open: " + errno_text());
+  Container data;
+  char buffer[1 << 16];
+  size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) data.insert(data.end(), buffer, buffer + n);
+  const bool failed = std::ferror(f);
+  std::fclose(f);
+  if (failed) throw Error(path.string() + ": read error");
+  return data;
+}
+
+}  // namespace
+
+std::vector<uint8_t> read_file_bytes(const std::filesystem::path& path) {
+  if (std::filesystem::is_directory(path)) throw Error(path.string() + ": is a directory");
+  return read_all<std::vector<uint8_t>>(path);
+}
+
+std::string read_file_text(const std::filesystem::path& path) {
+  if (std::filesystem::is_directory(path)) throw Error(path.string() + ": is a directory");
+  return read_all<std::string>(path);
+}
+
+void write_file_atomically(const std::filesystem::path& path, std::span<const uint8_t> bytes) {
+  const std::filesystem::path tmp = path.string() + ".tmp-" + std::to_string(::getpid());
+  std::FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (!f) throw Error(path.string() + ": cannot write: " + errno_text());
+  const bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+  const bool closed = std::fclose(f) == 0;
+  if (!ok || !closed || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const std::string why = errno_text();
+    std::remove(tmp.c_str());
+    throw Error(path.string() + ": cannot write: " + why);
+  }
+}
+
+void write_file_atomically(const std::filesystem::path& path, const std::string& text) {
+  write_file_atomically(path, std::span(reinterpret_cast<const uint8_t*>(text.data()), text.size()));
+}
+
+}  // namespace p3d

@@ -1,0 +1,92 @@
+// mapc: the map compiler. map source -> validate -> BSP -> self-contained .bsp.
+#include <unistd.h>
+
+#include "engine/bsp/build.h"
+#include "engine/bsp/check.h"
+#include "engine/level/io.h"
+#include "tools/cli.h"
+
+using namespace p3d;
+
+namespace {
+
+struct Args {
+  std::string input, output, strategy = "greedy";
+  uint64_t seed = 1;
+  bool stats = false, check = false;
+  bsp::Options options;
+};
+
+void print_stats(const bsp::Stats& s, double parse_seconds, double build_seconds, const bsp::Options& o) {
+  const double bound = s.random_bound();
+  std::printf("strategy            %s (seed %llu)\n", bsp::strategy_name(o.strategy),
+              static_cast<unsigned long long>(o.seed));
+  std::printf("input walls n       %zu\n", s.walls);
+  std::printf("fragments           %zu\n", s.fragments);
+  std::printf("splits              %zu\n", s.splits);
+  std::printf("nodes               %zu\n", s.nodes);
+  std::printf("leaves              %zu\n", s.leaves);
+  std::printf("free splits         %zu\n", s.free_splits);
+  std::printf("depth max / mean    %zu / %.2f\n", s.max_depth, s.mean_depth);
+  std::printf("shortest fragment   %.6g map units\n", s.shortest_fragment);
+  std::printf("ray-cast leaves     %zu\n", s.ray_cast_leaves);
+  std::printf("parse + validate    %.3f s\n", parse_seconds);
+  std::printf("build time          %.3f s\n", build_seconds);
+  std::printf("n + 2n ln n         %.0f\n", bound);
+  std::printf("fragments / bound   %.4f\n", bound > 0 ? s.fragments / bound : 0.0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"mapc: compile a .map level into a self-contained BSP (.bsp)", "mapc"};
+  Args a;
+  app.add_option("input", a.input, "map source (.map)")->required()->check(CLI::ExistingFile);
+  app.add_option("-o,--output", a.output, "compiled level to write (.bsp)")->required();
+  app.add_option("--strategy", a.strategy, "splitter choice: first, random, freesplit or greedy")
+      ->check(CLI::IsMember({"first", "random", "freesplit", "greedy"}))
+      ->capture_default_str();
+  app.add_option("--seed", a.seed, "seed for random choices (same seed, same file)")->capture_default_str();
+  app.add_option("--candidates", a.options.greedy_candidates, "greedy: candidate splitters per cell")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
+  app.add_option("--sample", a.options.greedy_sample, "greedy: fragments scored per candidate")
+      ->check(CLI::Range(1, 1 << 30))
+      ->capture_default_str();
+  app.add_option("--split-weight", a.options.split_weight, "greedy: cost of a split")
+      ->check(CLI::Range(0.0, 1e9))
+      ->capture_default_str();
+  app.add_option("--balance-weight", a.options.balance_weight, "greedy: cost of a fragment of imbalance")
+      ->check(CLI::Range(0.0, 1e9))
+      ->capture_default_str();
+  app.add_flag("--stats", a.stats, "print tree statistics");
+  app.add_flag("--check", a.check, "verify the BSP invariants exactly before writing");
+
+  return cli::run(app, argc, argv, [&] {
+    a.options.strategy = *bsp::parse_strategy(a.strategy);
+    a.options.seed = a.seed;
+
+    const auto start = std::chrono::steady_clock::now();
+    const map::Source source = map::load_map(a.input);
+    const double parse_seconds = cli::seconds_since(start);
+
+    const auto build_start = std::chrono::steady_clock::now();
+    const bool terminal = ::isatty(2);
+    a.options.progress = [&](double done) {
+      if (terminal && cli::seconds_since(build_start) > 1.0) std::fprintf(stderr, "\rcompiling: %3.0f%%", 100 * done);
+    };
+    bsp::Stats stats;
+    const level::Level level = bsp::build(source, a.options, &stats);
+    const double build_seconds = cli::seconds_since(build_start);
+    if (terminal && build_seconds > 1.0) std::fprintf(stderr, "\rcompiling: done\n");
+
+    if (a.check) {
+      const auto problems = bsp::check_invariants(level);
+      for (const std::string& p : problems) std::fprintf(stderr, "%s: invariant violated: %s\n", a.input.c_str(), p.c_str());
+      if (!problems.empty()) return 1;
+    }
+    level::write(level, a.output);
+    if (a.stats) print_stats(stats, parse_seconds, build_seconds, a.options);
+    return 0;
+  });
+}
