@@ -1,11 +1,10 @@
 // capture: headless frames of a compiled level as PNG, with per-column hits
 // (--columns) and per-frame statistics (--stats). Same inputs, same bytes.
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 #include "engine/image/image.h"
 #include "engine/level/io.h"
+#include "engine/render/camera_file.h"
 #include "engine/render/renderer.h"
 #include "engine/util/file.h"
 #include "tools/cli.h"
@@ -13,40 +12,6 @@
 using namespace p3d;
 
 namespace {
-
-struct Shot {
-  std::string name;
-  geom::Vec2 pos;
-  double angle = 0;
-  double eye = render::kEyeHeight;
-  double fov = 90;
-};
-
-// Lines "NAME X Y ANGLE [EYE [FOV]]"; '#' starts a comment.
-std::vector<Shot> read_cameras(const std::string& path) {
-  std::vector<Shot> shots;
-  std::istringstream in(read_file_text(path));
-  std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
-    line = line.substr(0, line.find('#'));
-    std::istringstream words(line);
-    Shot s;
-    if (!(words >> s.name)) continue;
-    const FileLoc loc{path, number};
-    if (!(words >> s.pos.x >> s.pos.y >> s.angle)) throw Error(loc, "expected NAME X Y ANGLE [EYE [FOV]]");
-    if (!(words >> s.eye)) s.eye = render::kEyeHeight;
-    else if (!(words >> s.fov)) s.fov = 90;
-    std::string extra;
-    if (words >> extra) throw Error(loc, "unexpected '" + extra + "'");
-    if (!std::isfinite(s.pos.x) || !std::isfinite(s.pos.y) || !std::isfinite(s.angle) || !std::isfinite(s.eye))
-      throw Error(loc, "numbers must be finite");
-    if (!(s.fov > 0 && s.fov < 180)) throw Error(loc, "field of view must be between 0 and 180 degrees");
-    if (s.name.find('/') != std::string::npos) throw Error(loc, "camera names cannot contain '/'");
-    shots.push_back(s);
-  }
-  if (shots.empty()) throw Error(path + ": no cameras");
-  return shots;
-}
 
 std::string columns_csv(const render::ColumnHits& hits) {
   std::string out = "x,wall,dist\n";
@@ -87,10 +52,10 @@ int main(int argc, char** argv) {
     auto renderer = render::make_renderer(renderer_name);
     if (!renderer) throw CLI::ValidationError("--renderer", "unknown renderer '" + renderer_name + "'");
 
-    std::vector<Shot> shots;
+    std::vector<render::CameraSpec> shots;
     if (!cameras.empty()) {
       if (!pos_text.empty()) throw CLI::ValidationError("--pos", "use either --pos or --cameras");
-      shots = read_cameras(cameras);
+      shots = render::read_camera_list(cameras);
     } else {
       if (pos_text.empty()) throw CLI::ValidationError("--pos", "a camera position is required (or --cameras)");
       if (!std::isfinite(angle) || !std::isfinite(eye)) throw CLI::ValidationError("--angle", "must be finite");
@@ -102,7 +67,7 @@ int main(int argc, char** argv) {
       throw Error(map_path + ": the " + renderer_name + " renderer cannot draw this level");
     render::Frame frame(width, height);
     render::ColumnHits hits;
-    for (const Shot& shot : shots) {
+    for (const render::CameraSpec& shot : shots) {
       const render::Camera camera = render::camera_at(level, shot.pos, shot.angle, shot.eye, shot.fov);
       const auto start = std::chrono::steady_clock::now();
       const render::RenderStats s = renderer->render(level, camera, frame, columns.empty() ? nullptr : &hits);

@@ -360,8 +360,12 @@ class Builder {
   }
 
   // Leaves bounded by no wall: the first wall a ray from inside meets tells the sector.
+  // A map of plain segments has only its default sector: no ray needed.
   void resolve_leaves_by_ray_cast() {
-    for (const auto& [leaf, inside] : unresolved_) out_.leaves[leaf].sector = ray_cast_sector(inside);
+    const bool segments_only =
+        std::all_of(src_.walls.begin(), src_.walls.end(), [](const map::Wall& w) { return w.segment; });
+    for (const auto& [leaf, inside] : unresolved_)
+      out_.leaves[leaf].sector = segments_only ? out_.default_sector : ray_cast_sector(inside);
   }
 
   int32_t ray_cast_sector(Vec2 origin) const {
@@ -416,7 +420,9 @@ class Builder {
     s.max_depth = max_depth_;
     s.mean_depth = s.leaves ? double(leaf_depth_sum_) / s.leaves : 0;
     s.shortest_fragment = shortest_;
-    s.ray_cast_leaves = unresolved_.size();
+    s.ray_cast_leaves = std::all_of(src_.walls.begin(), src_.walls.end(), [](const map::Wall& w) { return w.segment; })
+                            ? 0
+                            : unresolved_.size();
   }
 
   const map::Source& src_;

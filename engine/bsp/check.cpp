@@ -85,6 +85,9 @@ class Checker {
       if (item.depth > 0) path.push_back(item.from_parent);
       const level::Node& n = level_.nodes[item.node];
       const geom::Line splitter = level_.walls[n.splitter].line();
+      for (const Constraint& c : path)
+        if (geom::same_line(c.line, splitter))
+          problem("node " + std::to_string(item.node) + " splits along the same line as an ancestor");
       for (uint32_t i = n.first_fragment; i < n.first_fragment + n.fragment_count; ++i) {
         const Fragment& f = level_.fragments[i];
         const std::string name = "fragment " + std::to_string(i) + " of node " + std::to_string(item.node);

@@ -242,8 +242,9 @@ class Reader {
 }  // namespace
 
 Level decode(std::span<const uint8_t> bytes, const std::string& what) {
-  if (bytes.size() < format::kHeaderSize || std::memcmp(bytes.data(), format::kMagic, 8) != 0)
+  if (bytes.size() < 8 || std::memcmp(bytes.data(), format::kMagic, 8) != 0)
     throw Error(what + ": not a compiled level (bad magic; compile maps with mapc)");
+  if (bytes.size() < format::kHeaderSize) throw Error(what + ": truncated header");
   ByteReader header(bytes.subspan(8, format::kHeaderSize - 8), what);
   const uint32_t version = header.u32();
   if (version != format::kVersion)

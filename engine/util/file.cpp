@@ -44,7 +44,7 @@ void write_file_atomically(const std::filesystem::path& path, std::span<const ui
   const std::filesystem::path tmp = path.string() + ".tmp-" + std::to_string(::getpid());
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) throw Error(path.string() + ": cannot write: " + errno_text());
-  const bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+  const bool ok = bytes.empty() || std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
   const bool closed = std::fclose(f) == 0;
   if (!ok || !closed || std::rename(tmp.c_str(), path.c_str()) != 0) {
     const std::string why = errno_text();

@@ -1,0 +1,37 @@
+// Random level generators for tests and benchmarks, and the .map writer.
+//
+// Content is a pure function of (seed, cell coordinates), and cells are filled
+// in a spiral from the origin, so a smaller map is exactly the middle of a larger
+// one: the same camera sees the same surroundings at every size.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "engine/map/source.h"
+
+namespace p3d::map {
+
+struct GenerateOptions {
+  size_t walls = 1000;  // target wall count (soups: exact; rooms: at least this many)
+  uint64_t seed = 1;
+  // Texture names and images; walls and flats pick among them. At least one.
+  std::vector<Texture> textures;
+};
+
+// Non-crossing plain segments, about two per 128-unit cell, under one default sector.
+Source generate_soup(const GenerateOptions& options);
+
+// A grid of rooms (own floor, ceiling and light; some with a pillar) joined by
+// doorways through 16-unit-thick walls.
+Source generate_rooms(const GenerateOptions& options);
+
+// Small procedural textures for generated maps when no files are at hand.
+std::vector<Texture> builtin_textures();
+
+// The .map text of a source; texture_files[i] is the file written for texture i.
+std::string to_map_text(const Source& source, const std::vector<std::string>& texture_files);
+
+}  // namespace p3d::map

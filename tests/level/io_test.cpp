@@ -1,0 +1,136 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/level/format.h"
+#include "engine/level/io.h"
+#include "engine/util/bytes.h"
+#include "tests/support/support.h"
+
+namespace p3d::level {
+namespace {
+
+std::string decode_error(const std::vector<uint8_t>& bytes) {
+  try {
+    decode(bytes, "x.bsp");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// Rewrites the header so that a deliberately edited payload passes the checksum.
+void reseal(std::vector<uint8_t>& bytes) {
+  const std::span<const uint8_t> payload(bytes.data() + format::kHeaderSize, bytes.size() - format::kHeaderSize);
+  const uint64_t size = payload.size(), sum = fnv1a64(payload);
+  for (int i = 0; i < 8; ++i) {
+    bytes[16 + i] = uint8_t(size >> (8 * i));
+    bytes[24 + i] = uint8_t(sum >> (8 * i));
+  }
+}
+
+class LevelIo : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { level_ = new Level(test::compile(test::random_rooms(300, 3))); }
+  static void TearDownTestSuite() { delete level_; }
+  static Level* level_;
+};
+Level* LevelIo::level_ = nullptr;
+
+TEST_F(LevelIo, RoundTripIsExact) {
+  const std::vector<uint8_t> bytes = encode(*level_);
+  const Level back = decode(bytes, "x.bsp");
+  EXPECT_EQ(encode(back), bytes);
+  ASSERT_EQ(back.walls.size(), level_->walls.size());
+  EXPECT_EQ(back.walls[5].p1, level_->walls[5].p1);
+  EXPECT_EQ(back.fragments[7].t1, level_->fragments[7].t1);
+  EXPECT_EQ(back.nodes[3].bbox.max, level_->nodes[3].bbox.max);
+  EXPECT_EQ(back.textures[1].texels, level_->textures[1].texels);
+  EXPECT_EQ(back.leaves[9].sector, level_->leaves[9].sector);
+  EXPECT_EQ(back.bounds.min, level_->bounds.min);
+}
+
+TEST_F(LevelIo, RejectsDamagedFiles) {
+  const std::vector<uint8_t> good = encode(*level_);
+  EXPECT_EQ(decode_error({}), "x.bsp: not a compiled level (bad magic; compile maps with mapc)");
+  std::vector<uint8_t> text(good);
+  text[0] = 'w';
+  EXPECT_EQ(decode_error(text), "x.bsp: not a compiled level (bad magic; compile maps with mapc)");
+
+  std::vector<uint8_t> version(good);
+  version[8] = 9;
+  EXPECT_EQ(decode_error(version), "x.bsp: compiled level version 9 is not supported (expected 1; recompile with mapc)");
+
+  std::vector<uint8_t> truncated(good.begin(), good.begin() + good.size() / 2);
+  EXPECT_NE(decode_error(truncated).find("x.bsp: truncated or padded file"), std::string::npos);
+  EXPECT_NE(decode_error(std::vector<uint8_t>(good.begin(), good.begin() + 20)).find("x.bsp: truncated"),
+            std::string::npos);
+
+  for (size_t at : {size_t(40), good.size() / 3, good.size() - 1}) {
+    std::vector<uint8_t> flipped(good);
+    flipped[at] ^= 0x10;
+    EXPECT_EQ(decode_error(flipped), "x.bsp: checksum mismatch (the file is corrupted)") << "byte " << at;
+  }
+
+  std::vector<uint8_t> padded(good);
+  padded.push_back(0);
+  reseal(padded);
+  EXPECT_EQ(decode_error(padded), "x.bsp: 1 unexpected bytes after the last section");
+
+  std::vector<uint8_t> cut(good.begin(), good.end() - 6);
+  reseal(cut);
+  EXPECT_NE(decode_error(cut).find("x.bsp: truncated"), std::string::npos) << decode_error(cut);
+}
+
+// Edits that keep a valid checksum must still be caught by the structural checks.
+TEST_F(LevelIo, RejectsInconsistentStructure) {
+  struct Case {
+    const char* name;
+    void (*edit)(Level&);
+    const char* message;
+  };
+  const Case cases[] = {
+      {"child out of range", [](Level& l) { l.nodes[0].child[0] = 100000; }, "x.bsp: node child out of order"},
+      {"leaf out of range", [](Level& l) { l.nodes[0].child[0] = leaf_child(100000); }, "x.bsp: leaf index 100000 is out of range"},
+      {"fragment wall", [](Level& l) { l.fragments[0].wall = 1u << 30; }, "x.bsp: fragment wall index 1073741824 is out of range"},
+      {"empty fragment", [](Level& l) { l.fragments[0].t1 = l.fragments[0].t0; }, "x.bsp: fragment with an empty or inverted range"},
+      {"sector light", [](Level& l) { l.sectors[0].light = 300; }, "x.bsp: sector 'r0_0' has light out of range"},
+      {"nan height", [](Level& l) { l.sectors[0].floor = std::nan(""); }, "x.bsp: sector floor is not finite"},
+      {"bad texture index", [](Level& l) { l.walls[0].sides[0].middle = 77; }, "x.bsp: side texture index 77 is out of range"},
+      {"two parents", [](Level& l) { l.nodes[0].child[1] = l.nodes[0].child[0]; }, nullptr},
+      {"fragment off its line",
+       [](Level& l) {
+         for (Fragment& f : l.fragments)
+           if (!geom::same_line(l.walls[f.wall].line(), l.walls[l.fragments[0].wall].line())) {
+             std::swap(f.wall, l.fragments[0].wall);
+             std::swap(f.t0, l.fragments[0].t0), std::swap(f.t1, l.fragments[0].t1);
+             std::swap(f.cut, l.fragments[0].cut);
+             return;
+           }
+       },
+       "is not on its node's splitter"},
+      {"coordinate range", [](Level& l) { l.walls[0].p1.x = int64_t(1) << 40; }, "x.bsp: wall coordinate out of range"},
+  };
+  for (const Case& c : cases) {
+    Level copy = *level_;
+    c.edit(copy);
+    const std::string error = decode_error(encode(copy));
+    if (c.message)
+      EXPECT_NE(error.find(c.message), std::string::npos) << c.name << ": " << error;
+    else
+      EXPECT_NE(error, "(no error)") << c.name;
+  }
+}
+
+TEST_F(LevelIo, TexturesAreColumnMajor) {
+  const uint32_t rows[8] = {1, 2, 3, 4, 5, 6, 7, 8};  // 4 wide, 2 high
+  const Texture t = make_texture("t", 4, 2, rows);
+  EXPECT_EQ(t.at(0, 0), 1u);
+  EXPECT_EQ(t.at(3, 0), 4u);
+  EXPECT_EQ(t.at(0, 1), 5u);
+  EXPECT_EQ(t.at(5, 3), 6u);  // wraps
+  EXPECT_EQ(t.column(2)[1], 7u);
+}
+
+}  // namespace
+}  // namespace p3d::level

@@ -1,0 +1,152 @@
+#include <gtest/gtest.h>
+
+#include "engine/map/source.h"
+#include "engine/util/file.h"
+#include "tests/support/support.h"
+
+namespace p3d::map {
+namespace {
+
+// A small valid map: one square room with a pillar-less two-sided window into a
+// second room, and a plain segment.
+const char* kRoomHeader = R"(title Test room
+texture wall wall.png
+texture flat flat.png
+sector a floor=0 ceiling=128 light=160 floor_tex=flat ceiling_tex=flat
+sector b floor=16 ceiling=96 light=200 floor_tex=flat ceiling_tex=flat
+vertex v0 0 0
+vertex v1 0 256
+vertex v2 256 256
+vertex v3 256 0
+vertex v4 512 256
+vertex v5 512 0
+vertex s0 64 64
+vertex s1 96 96
+)";
+const char* kRoomWalls = R"(wall v0 v1 front=a middle=wall
+wall v1 v2 front=a middle=wall
+wall v2 v3 front=a back=b upper=wall lower=wall
+wall v3 v0 front=a middle=wall
+wall v2 v4 front=b middle=wall
+wall v4 v5 front=b middle=wall
+wall v5 v3 front=b middle=wall
+segment s0 s1 texture=wall
+player 32 32 45
+)";
+
+class ParseTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = test::temp_dir("parse");
+    image::save_png(image::Image(64, 64, image::rgba(200, 0, 0)), dir_ / "wall.png");
+    image::save_png(image::Image(32, 32, image::rgba(0, 200, 0)), dir_ / "flat.png");
+    image::save_png(image::Image(48, 64), dir_ / "odd.png");
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  Source load(const std::string& text) {
+    write_file_atomically(dir_ / "test.map", text);
+    return load_map(dir_ / "test.map");
+  }
+  // The error message of loading `text`, with the temp directory replaced by "DIR".
+  std::string error(const std::string& text) {
+    try {
+      load(text);
+    } catch (const Error& e) {
+      std::string m = e.what();
+      const std::string d = dir_.string();
+      for (size_t at; (at = m.find(d)) != std::string::npos;) m.replace(at, d.size(), "DIR");
+      return m;
+    }
+    return "(no error)";
+  }
+  std::filesystem::path dir_;
+};
+
+TEST_F(ParseTest, ValidMap) {
+  const Source s = load(std::string(kRoomHeader) + kRoomWalls + "thing 2001 100 100 90\n");
+  EXPECT_EQ(s.title, "Test room");
+  EXPECT_EQ(s.walls.size(), 8u);
+  EXPECT_EQ(s.sectors.size(), 2u);
+  EXPECT_TRUE(s.walls[2].two_sided());
+  EXPECT_EQ(s.walls[2].back.upper, s.walls[2].front.upper);  // back textures default to the front's
+  EXPECT_TRUE(s.walls[7].segment);
+  EXPECT_EQ(s.player.pos, geom::Vec2(32, 32));
+  EXPECT_EQ(s.things.size(), 1u);
+  EXPECT_EQ(s.walls[0].loc.line, 14);
+  EXPECT_EQ(s.textures[0].image.width, 64);
+}
+
+TEST_F(ParseTest, SegmentsOnlyGetADefaultSector) {
+  const Source s = load("texture wall wall.png\nvertex a 0 0\nvertex b 10 0\nsegment a b texture=wall\nplayer 5 5 0\n");
+  ASSERT_NE(s.default_sector, kNone);
+  EXPECT_EQ(s.sectors.size(), 1u);
+}
+
+TEST_F(ParseTest, CommentsAndFractionsAndTabs) {
+  const Source s = load("# heading\ntexture wall wall.png # trailing\nvertex a\t0.5 -0.25\nvertex b 10 0\n\n"
+                        "segment a b texture=wall\nplayer 5 5 0\n");
+  EXPECT_EQ(s.vertices[0].pos.x, 128);
+  EXPECT_EQ(s.vertices[0].pos.y, -64);
+}
+
+struct BadCase {
+  const char* name;
+  std::string text;
+  std::string message;
+};
+
+TEST_F(ParseTest, BadInputGivesLocatedMessages) {
+  const std::string base = kRoomHeader;
+  const std::string walls = kRoomWalls;
+  const std::vector<BadCase> cases = {
+      {"unknown statement", base + "floorplan 3\n" + walls, "DIR/test.map:14: unknown statement 'floorplan'"},
+      {"missing vertex", base + "wall v0 v9 front=a middle=wall\n" + walls, "DIR/test.map:14: unknown vertex 'v9'"},
+      {"unknown sector", base + "wall v0 v5 front=c middle=wall\n" + walls, "DIR/test.map:14: unknown sector 'c'"},
+      {"dangling sector", base + "sector lonely floor=0 ceiling=64 floor_tex=flat ceiling_tex=flat\n" + walls,
+       "DIR/test.map:14: sector 'lonely' is not bounded by any wall"},
+      {"open sector", base + std::string(walls).replace(walls.find("wall v3 v0"), 31, ""),
+       "DIR/test.map:4: sector 'a' is not closed: its boundary has an open end at (0.000000, 0.000000)"},
+      {"crossing walls", base + walls + "vertex x0 -10 128\nvertex x1 100 128\nsegment x0 x1 texture=wall\n",
+       "DIR/test.map:25: wall crosses the wall at DIR/test.map:14"},
+      {"overlapping walls", base + walls + "vertex x0 0 10\nvertex x1 0 20\nsegment x0 x1 texture=wall\n",
+       "DIR/test.map:25: wall overlaps the collinear wall at DIR/test.map:14"},
+      {"zero-length wall", base + "vertex z 0 0\nsegment v0 z texture=wall\n" + walls,
+       "DIR/test.map:15: zero-length wall: both ends are at the same point"},
+      {"not a number", base + "vertex q 1x 0\n" + walls, "DIR/test.map:14: x coordinate '1x' is not a number"},
+      {"nan", base + "vertex q nan 0\n" + walls, "DIR/test.map:14: x coordinate 'nan' is not finite"},
+      {"infinity", base + "vertex q 0 inf\n" + walls, "DIR/test.map:14: y coordinate 'inf' is not finite"},
+      {"huge", base + "vertex q 1e999 0\n" + walls, "DIR/test.map:14: x coordinate '1e999' is out of range"},
+      {"out of range", base + "vertex q 3000000 0\n" + walls, "DIR/test.map:14: x coordinate '3000000' is outside +-2097152"},
+      {"missing texture file", "texture wall nowhere.png\n", "DIR/test.map:1: texture file 'DIR/nowhere.png' does not exist"},
+      {"bad texture size", "texture odd odd.png\n",
+       "DIR/test.map:1: texture 'odd' is 48x64: sides must be powers of two up to 1024"},
+      {"unknown texture", base + "segment v0 v4 texture=nope\n" + walls, "DIR/test.map:14: unknown texture 'nope'"},
+      {"unknown option", base + "wall v0 v5 front=a middle=wall colour=red\n" + walls,
+       "DIR/test.map:14: wall: unknown option 'colour'"},
+      {"missing option", base + "sector c floor=0 ceiling=1 floor_tex=flat\n" + walls,
+       "DIR/test.map:14: sector: missing option ceiling_tex="},
+      {"repeated option", base + "segment v0 v4 texture=wall texture=wall\n" + walls,
+       "DIR/test.map:14: option 'texture' given twice"},
+      {"ceiling below floor", base + "sector c floor=10 ceiling=5 floor_tex=flat ceiling_tex=flat\n" + walls,
+       "DIR/test.map:14: ceiling is below the floor"},
+      {"light range", base + "sector c floor=0 ceiling=5 light=300 floor_tex=flat ceiling_tex=flat\n" + walls,
+       "DIR/test.map:14: light '300' must be an integer from 0 to 255"},
+      {"duplicate vertex", base + "vertex v0 5 5\n" + walls, "DIR/test.map:14: vertex 'v0' is defined twice"},
+      {"no player", base + "wall v0 v1 front=a middle=wall\n", "DIR/test.map: no player start (add 'player X Y ANGLE')"},
+      {"two players", base + walls + "player 1 1 0\n", "DIR/test.map:23: player start is defined twice"},
+      {"one-sided without texture", base + "wall v0 v5 front=a\n" + walls,
+       "DIR/test.map:14: one-sided wall needs a middle= texture"},
+      {"missing upper texture",
+       base + std::string(walls).replace(walls.find("upper=wall "), 11, ""),
+       "DIR/test.map:16: wall needs an upper texture on its front side (sector 'b' has a lower ceiling than 'a')"},
+      {"sky without sky", base + "sector c floor=0 ceiling=64 floor_tex=flat ceiling_tex=sky\n" + walls,
+       "DIR/test.map:14: ceiling_tex=sky needs a 'sky TEXTURE' statement before it"},
+      {"binary junk", std::string("vertex a 0 0\n\x01\x02\0\x03\n", 18), "DIR/test.map:2: binary data in a text map"},
+      {"empty", "", "DIR/test.map: no player start (add 'player X Y ANGLE')"},
+  };
+  for (const BadCase& c : cases) EXPECT_EQ(error(c.text), c.message) << c.name;
+}
+
+}  // namespace
+}  // namespace p3d::map

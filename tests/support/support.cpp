@@ -1,0 +1,63 @@
+#include "tests/support/support.h"
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+
+namespace p3d::test {
+
+map::Source random_soup(size_t walls, uint64_t seed) {
+  map::GenerateOptions o;
+  o.walls = walls;
+  o.seed = seed;
+  o.textures = map::builtin_textures();
+  return map::generate_soup(o);
+}
+
+map::Source random_rooms(size_t walls, uint64_t seed) {
+  map::GenerateOptions o;
+  o.walls = walls;
+  o.seed = seed;
+  o.textures = map::builtin_textures();
+  return map::generate_rooms(o);
+}
+
+level::Level compile(const map::Source& source, bsp::Strategy strategy, uint64_t seed) {
+  map::validate(source);
+  bsp::Options options;
+  options.strategy = strategy;
+  options.seed = seed;
+  return bsp::build(source, options);
+}
+
+render::Camera random_camera(const level::Level& level, Rng& rng) {
+  const bool has_sectors = std::any_of(level.walls.begin(), level.walls.end(), [](const level::Wall& w) { return !w.segment(); });
+  for (int attempt = 0;; ++attempt) {
+    const geom::Vec2 p{rng.uniform(level.bounds.min.x, level.bounds.max.x), rng.uniform(level.bounds.min.y, level.bounds.max.y)};
+    const int sector = level.sector_at(p);
+    if (has_sectors && sector == level::kNone && attempt < 1000) continue;
+    render::Camera c = render::camera_at(level, p, rng.uniform(0, 360), rng.uniform(8, 72), rng.uniform(60, 120));
+    return c;
+  }
+}
+
+std::filesystem::path temp_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("p3d-test-" + name + "-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+int run(const std::string& command, std::string& output) {
+  output.clear();
+  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+  if (!pipe) return -1;
+  std::array<char, 4096> buffer;
+  size_t n;
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) output.append(buffer.data(), n);
+  const int status = ::pclose(pipe);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+}  // namespace p3d::test

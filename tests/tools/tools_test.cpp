@@ -1,0 +1,160 @@
+// The command-line tools end to end: the bad-input corpus (tests/bad/*.map, each
+// opening with "# expect: MESSAGE"), damaged compiled levels, bad arguments,
+// and byte-for-byte reproducible outputs.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "engine/image/image.h"
+#include "engine/level/io.h"
+#include "engine/util/file.h"
+#include "tests/support/support.h"
+
+namespace p3d {
+namespace {
+
+std::string tool(const std::string& name) { return (test::tools_dir() / name).string(); }
+
+// Runs a command in the source directory (so paths in messages are relative).
+int run_in_source(const std::string& command, std::string& output) {
+  return test::run("cd '" + test::source_dir().string() + "' && " + command, output);
+}
+
+std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
+
+class Tools : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = test::temp_dir("tools"); }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::string out(const std::string& name) const { return (dir_ / name).string(); }
+  std::filesystem::path dir_;
+};
+
+TEST_F(Tools, BadMapsGiveTheirMessageAndNoOutput) {
+  int cases = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(test::source_dir() / "tests/bad")) {
+    if (entry.path().extension() != ".map") continue;
+    const std::string text = read_file_text(entry.path());
+    ASSERT_EQ(text.rfind("# expect: ", 0), 0u) << entry.path() << " must open with '# expect: MESSAGE'";
+    const std::string expected = first_line(text).substr(10);
+    std::string output;
+    const int status =
+        run_in_source(tool("mapc") + " tests/bad/" + entry.path().filename().string() + " -o " + out("x.bsp"), output);
+    EXPECT_EQ(status, 1) << entry.path();
+    EXPECT_EQ(first_line(output), expected) << entry.path();
+    EXPECT_FALSE(std::filesystem::exists(out("x.bsp"))) << entry.path() << " left a partial output";
+    ++cases;
+  }
+  EXPECT_GE(cases, 10);
+  for (const auto& entry : std::filesystem::directory_iterator(dir_))
+    EXPECT_EQ(entry.path().string().find(".tmp-"), std::string::npos) << "temporary file left: " << entry.path();
+}
+
+TEST_F(Tools, CompileAndCaptureAreReproducible) {
+  std::string o;
+  ASSERT_EQ(run_in_source(tool("mapc") + " maps/outpost.map -o " + out("a.bsp") + " --stats --check", o), 0) << o;
+  EXPECT_NE(o.find("fragments / bound"), std::string::npos) << o;
+  ASSERT_EQ(run_in_source(tool("mapc") + " maps/outpost.map -o " + out("b.bsp"), o), 0) << o;
+  EXPECT_EQ(read_file_bytes(out("a.bsp")), read_file_bytes(out("b.bsp")));
+
+  const std::string capture = tool("capture") + " " + out("a.bsp") + " --pos 64,96 --angle 30 --size 200x120 ";
+  ASSERT_EQ(test::run(capture + "-o " + out("a.png") + " --columns " + out("a.csv") + " --stats", o), 0) << o;
+  EXPECT_NE(o.find("early_exit=yes"), std::string::npos) << o;
+  ASSERT_EQ(test::run(capture + "-o " + out("b.png"), o), 0) << o;
+  EXPECT_EQ(read_file_bytes(out("a.png")), read_file_bytes(out("b.png")));
+  const image::Image img = image::load_png(out("a.png"));
+  EXPECT_EQ(img.width, 200);
+  EXPECT_EQ(img.height, 120);
+  const std::string csv = read_file_text(out("a.csv"));
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 201);
+  EXPECT_EQ(first_line(csv), "x,wall,dist");
+
+  // The reference renderer draws the same picture.
+  ASSERT_EQ(test::run(capture + "--renderer reference -o " + out("r.png"), o), 0) << o;
+  EXPECT_EQ(read_file_bytes(out("a.png")), read_file_bytes(out("r.png")));
+
+  // Many cameras in one run.
+  write_file_atomically(out("cams"), "one 64 96 30\ntwo 300 192 0 41 70\n");
+  std::filesystem::create_directories(out("shots"));
+  ASSERT_EQ(test::run(tool("capture") + " " + out("a.bsp") + " --cameras " + out("cams") + " --size 64x40 -o " +
+                          out("shots") + " --columns " + out("shots"),
+                      o),
+            0)
+      << o;
+  EXPECT_TRUE(std::filesystem::exists(out("shots/one.png")));
+  EXPECT_TRUE(std::filesystem::exists(out("shots/two.csv")));
+}
+
+TEST_F(Tools, DamagedLevelsAreRejected) {
+  std::string o;
+  ASSERT_EQ(run_in_source(tool("mapc") + " maps/outpost.map -o " + out("good.bsp"), o), 0) << o;
+  const std::vector<uint8_t> good = read_file_bytes(out("good.bsp"));
+  struct Case {
+    std::string name;
+    std::vector<uint8_t> bytes;
+    std::string message;
+  };
+  std::vector<uint8_t> flipped = good, version = good;
+  flipped[good.size() / 2] ^= 1;
+  version[8] = 2;
+  const std::vector<Case> cases = {
+      {"truncated.bsp", std::vector<uint8_t>(good.begin(), good.begin() + good.size() - 100), "truncated or padded file"},
+      {"corrupted.bsp", flipped, "checksum mismatch (the file is corrupted)"},
+      {"version.bsp", version, "compiled level version 2 is not supported"},
+      {"text.bsp", std::vector<uint8_t>{'h', 'e', 'l', 'l', 'o'}, "not a compiled level"},
+      {"empty.bsp", {}, "not a compiled level"},
+  };
+  for (const Case& c : cases) {
+    write_file_atomically(out(c.name), c.bytes);
+    const int status = test::run(tool("capture") + " " + out(c.name) + " --pos 0,0 -o " + out("x.png"), o);
+    EXPECT_EQ(status, 1) << c.name;
+    EXPECT_NE(o.find(out(c.name) + ": " + c.message), std::string::npos) << c.name << ": " << o;
+    EXPECT_FALSE(std::filesystem::exists(out("x.png"))) << c.name;
+  }
+}
+
+TEST_F(Tools, BadArgumentsAreRefused) {
+  std::string o;
+  ASSERT_EQ(run_in_source(tool("mapc") + " maps/outpost.map -o " + out("a.bsp"), o), 0) << o;
+  const std::string cap = tool("capture") + " " + out("a.bsp") + " ";
+  struct Case {
+    std::string args, message;
+  };
+  write_file_atomically(out("bad.cams"), "one 1 2\n");
+  const std::vector<Case> cases = {
+      {"--pos 1 -o " + out("x.png"), "expected X,Y"},
+      {"--pos 1,nan -o " + out("x.png"), "expected X,Y with finite numbers"},
+      {"--pos 1,1 --size 0x10 -o " + out("x.png"), "expected WxH"},
+      {"--pos 1,1 --size 100 -o " + out("x.png"), "expected WxH"},
+      {"--pos 1,1 --fov 200 -o " + out("x.png"), "--fov"},
+      {"--pos 1,1 --renderer magic -o " + out("x.png"), "unknown renderer 'magic'"},
+      {"-o " + out("x.png"), "a camera position is required"},
+      {"--cameras " + out("bad.cams") + " -o " + dir_.string(), "bad.cams:1: expected NAME X Y ANGLE"},
+      {"--pos 1,1 --angle inf -o " + out("x.png"), "finite"},
+  };
+  for (const Case& c : cases) {
+    const int status = test::run(cap + c.args, o);
+    EXPECT_NE(status, 0) << c.args;
+    EXPECT_NE(o.find(c.message), std::string::npos) << c.args << ": " << o;
+    EXPECT_FALSE(std::filesystem::exists(out("x.png"))) << c.args;
+  }
+  EXPECT_NE(test::run(tool("mapc") + " /nonexistent.map -o " + out("y.bsp"), o), 0);
+  EXPECT_NE(test::run(tool("mapc") + " " + out("a.bsp") + " -o " + out("y.bsp"), o), 0);  // binary, not a map
+  EXPECT_FALSE(std::filesystem::exists(out("y.bsp")));
+  EXPECT_NE(test::run(tool("mapc") + " --strategy best " + out("a.bsp") + " -o " + out("y.bsp"), o), 0);
+  EXPECT_NE(test::run(tool("mapgen") + " maze -o " + out("m.map"), o), 0);
+}
+
+TEST_F(Tools, GeneratedMapsCompile) {
+  std::string o;
+  ASSERT_EQ(run_in_source(tool("mapgen") + " rooms --walls 500 --seed 3 -o " + out("r.map"), o), 0) << o;
+  ASSERT_EQ(run_in_source(tool("mapc") + " " + out("r.map") + " -o " + out("r.bsp") + " --check", o), 0) << o;
+  ASSERT_EQ(run_in_source(tool("mapgen") + " soup --walls 500 -o " + out("s.map"), o), 0) << o;
+  for (const char* strategy : {"first", "random", "freesplit", "greedy"})
+    ASSERT_EQ(run_in_source(tool("mapc") + " " + out("s.map") + " -o " + out("s.bsp") + " --check --strategy " + strategy, o),
+              0)
+        << strategy << ": " << o;
+}
+
+}  // namespace
+}  // namespace p3d
