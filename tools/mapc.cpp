@@ -1,6 +1,11 @@
 // mapc: the map compiler. map source -> validate -> BSP -> self-contained .bsp.
 #include <unistd.h>
 
+#include <atomic>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
 #include "engine/bsp/build.h"
 #include "engine/bsp/check.h"
 #include "engine/level/io.h"
@@ -36,6 +41,52 @@ void print_stats(const bsp::Stats& s, double parse_seconds, double build_seconds
   std::printf("fragments / bound   %.4f\n", bound > 0 ? s.fragments / bound : 0.0);
 }
 
+// Shows the current phase (and the build's percentage) on a terminal once the
+// compile has taken more than a second; silent otherwise.
+class Progress {
+ public:
+  Progress() : enabled_(::isatty(2)), start_(std::chrono::steady_clock::now()) {
+    if (enabled_) thread_ = std::thread([this] { loop(); });
+  }
+  ~Progress() {
+    if (!enabled_) return;
+    {
+      std::lock_guard lock(mutex_);
+      done_ = true;
+    }
+    wake_.notify_all();
+    thread_.join();
+    if (shown_) std::fprintf(stderr, "\r%-40s\r", "");
+  }
+  void phase(const char* name) {
+    phase_.store(name);
+    fraction_.store(-1);
+  }
+  void fraction(double f) { fraction_.store(f); }
+
+ private:
+  void loop() {
+    std::unique_lock lock(mutex_);
+    while (!wake_.wait_for(lock, std::chrono::milliseconds(200), [this] { return done_; })) {
+      if (cli::seconds_since(start_) < 1.0) continue;
+      const double f = fraction_.load();
+      if (f >= 0)
+        std::fprintf(stderr, "\r%s: %3.0f%%   ", phase_.load(), 100 * f);
+      else
+        std::fprintf(stderr, "\r%s...        ", phase_.load());
+      shown_ = true;
+    }
+  }
+  const bool enabled_;
+  const std::chrono::steady_clock::time_point start_;
+  std::atomic<const char*> phase_{"reading"};
+  std::atomic<double> fraction_{-1};
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool done_ = false, shown_ = false;
+  std::thread thread_;
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -66,25 +117,26 @@ int main(int argc, char** argv) {
     a.options.strategy = *bsp::parse_strategy(a.strategy);
     a.options.seed = a.seed;
 
+    Progress progress;
+    progress.phase("parsing and validating");
     const auto start = std::chrono::steady_clock::now();
     const map::Source source = map::load_map(a.input);
     const double parse_seconds = cli::seconds_since(start);
 
+    progress.phase("building the BSP");
     const auto build_start = std::chrono::steady_clock::now();
-    const bool terminal = ::isatty(2);
-    a.options.progress = [&](double done) {
-      if (terminal && cli::seconds_since(build_start) > 1.0) std::fprintf(stderr, "\rcompiling: %3.0f%%", 100 * done);
-    };
+    a.options.progress = [&](double done) { progress.fraction(done); };
     bsp::Stats stats;
     const level::Level level = bsp::build(source, a.options, &stats);
     const double build_seconds = cli::seconds_since(build_start);
-    if (terminal && build_seconds > 1.0) std::fprintf(stderr, "\rcompiling: done\n");
 
     if (a.check) {
+      progress.phase("checking invariants");
       const auto problems = bsp::check_invariants(level);
       for (const std::string& p : problems) std::fprintf(stderr, "%s: invariant violated: %s\n", a.input.c_str(), p.c_str());
       if (!problems.empty()) return 1;
     }
+    progress.phase("writing");
     level::write(level, a.output);
     if (a.stats) print_stats(stats, parse_seconds, build_seconds, a.options);
     return 0;

@@ -254,14 +254,17 @@ class RoomGrid {
     }
   }
 
-  // Half the rooms get a square pillar; some get a raised platform instead.
+  // Half the rooms get a square pillar, a quarter a raised platform, always in one
+  // quadrant: the room's centre (where cameras and players start) stays clear.
   void furnish(const Room& r, int i, int j, int64_t x0, int64_t y0) {
     Rng rng(Rng::mix(seed_ ^ 0xF00Dull, uint64_t(int64_t(i)), uint64_t(int64_t(j))));
     const int kind = int(rng.below(4));
     if (kind >= 2) return;
     const int64_t size = 32 + 16 * rng.range(0, 2);
-    const int64_t px = x0 + 48 + 16 * rng.range(0, int((240 - 96 - size) / 16));
-    const int64_t py = y0 + 48 + 16 * rng.range(0, int((240 - 96 - size) / 16));
+    const int quadrant = int(rng.below(4));
+    const int slack = int((80 - size) / 8);  // quadrant span 80 = 120 minus 24 to the wall and 16 to the centre
+    const int64_t px = x0 + (quadrant & 1 ? 136 : 24) + 8 * rng.range(0, slack);
+    const int64_t py = y0 + (quadrant & 2 ? 136 : 24) + 8 * rng.range(0, slack);
     const int a = b_.vertex(px, py), c = b_.vertex(px + size, py), e = b_.vertex(px + size, py + size),
               f = b_.vertex(px, py + size);
     if (kind == 0) {  // pillar: counter-clockwise around it keeps the room on the right

@@ -145,6 +145,23 @@ TEST_F(Tools, BadArgumentsAreRefused) {
   EXPECT_NE(test::run(tool("mapgen") + " maze -o " + out("m.map"), o), 0);
 }
 
+// The example in maps/FORMAT.md must stay a valid map.
+TEST_F(Tools, FormatExampleCompiles) {
+  const std::string doc = read_file_text(test::source_dir() / "maps/FORMAT.md");
+  const size_t start = doc.find("```\ntitle Two rooms");
+  ASSERT_NE(start, std::string::npos);
+  const size_t end = doc.find("```", start + 4);
+  write_file_atomically(out("example.map"), doc.substr(start + 4, end - start - 4));
+  std::filesystem::create_directory_symlink(test::source_dir() / "maps/textures", dir_ / "textures");
+  std::string o;
+  ASSERT_EQ(test::run(tool("mapc") + " " + out("example.map") + " -o " + out("example.bsp") + " --check", o), 0) << o;
+  ASSERT_EQ(test::run(tool("capture") + " " + out("example.bsp") + " --pos 32,32 --angle 45 --size 64x40 -o " +
+                          out("example.png"),
+                      o),
+            0)
+      << o;
+}
+
 TEST_F(Tools, GeneratedMapsCompile) {
   std::string o;
   ASSERT_EQ(run_in_source(tool("mapgen") + " rooms --walls 500 --seed 3 -o " + out("r.map"), o), 0) << o;

@@ -1,0 +1,288 @@
+// bench: the project's benchmark (Release builds). Prints markdown tables:
+//   render      median ms/frame and fps per renderer along a fixed camera path
+//   scaling     compile time and frame time as generated maps grow from 1k to 1M walls
+//   strategies  tree size, depth, build time and frame time per BSP strategy
+// Timings are wall-clock medians on one thread; compare ratios within one run.
+#include <algorithm>
+#include <fstream>
+#include <map>
+
+#include "engine/bsp/build.h"
+#include "engine/level/io.h"
+#include "engine/map/generate.h"
+#include "engine/render/camera_file.h"
+#include "engine/render/renderer.h"
+#include "engine/util/file.h"
+#include "tools/cli.h"
+
+using namespace p3d;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+struct Settings {
+  int width = 640, height = 400;
+  int repeat = 3;              // renders per camera; the median of all frames is reported
+  double budget_seconds = 2;   // per renderer and map: slow renderers render a prefix of the path
+  std::string source_dir = ".";
+  std::vector<size_t> sizes = {1000, 10000, 100000, 1000000};
+  std::vector<std::string> renderers;
+};
+
+struct Timing {
+  double median_ms = 0;
+  size_t frames = 0;
+  double nodes_visited = 0;  // mean per frame
+  double pixels = 0;         // mean per frame
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+Timing time_renderer(render::Renderer& r, const level::Level& level, const std::vector<render::Camera>& path,
+                     const Settings& s) {
+  render::Frame frame(s.width, s.height);
+  std::vector<double> times;
+  Timing t;
+  const auto start = Clock::now();
+  r.render(level, path.front(), frame);  // warm up caches and scratch buffers
+  if (cli::seconds_since(start) > s.budget_seconds) {  // too slow to repeat: that one frame is the measure
+    t.frames = 1;
+    t.median_ms = cli::seconds_since(start) * 1000;
+    return t;
+  }
+  for (const render::Camera& c : path) {
+    for (int i = 0; i < s.repeat; ++i) {
+      const auto t0 = Clock::now();
+      const render::RenderStats st = r.render(level, c, frame);
+      times.push_back(cli::seconds_since(t0) * 1000);
+      t.nodes_visited += double(st.nodes_visited);
+      t.pixels += double(st.pixels_written);
+    }
+    if (cli::seconds_since(start) > s.budget_seconds) break;  // slow renderers: a prefix of the path
+  }
+  t.frames = times.size();
+  t.median_ms = median(times);
+  t.nodes_visited /= double(t.frames);
+  t.pixels /= double(t.frames);
+  return t;
+}
+
+std::vector<render::Camera> cameras_from(const level::Level& level, const std::vector<render::CameraSpec>& specs) {
+  std::vector<render::Camera> path;
+  for (const auto& c : specs) path.push_back(render::camera_at(level, c.pos, c.angle, c.eye, c.fov));
+  return path;
+}
+
+// Turning on the spot at the player start: the same view at every map size.
+std::vector<render::Camera> turn_around(const level::Level& level, int steps = 36) {
+  std::vector<render::Camera> path;
+  for (int i = 0; i < steps; ++i) path.push_back(render::camera_at(level, level.player_start, i * 360.0 / steps));
+  return path;
+}
+
+std::vector<map::Texture> bundled_textures(const Settings& s) {
+  std::vector<map::Texture> textures;
+  for (const char* name : {"brick", "stone", "metal", "wood", "tech", "rock"})
+    textures.push_back({name, image::load_png(std::filesystem::path(s.source_dir) / "maps/textures" / (std::string(name) + ".png")), {}});
+  return textures;
+}
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+std::string count_text(size_t n) {
+  if (n >= 1000000 && n % 1000000 == 0) return std::to_string(n / 1000000) + "M";
+  if (n >= 1000 && n % 1000 == 0) return std::to_string(n / 1000) + "k";
+  return std::to_string(n);
+}
+
+std::vector<std::string> renderer_list(const Settings& s) {
+  return s.renderers.empty() ? render::renderer_names() : s.renderers;
+}
+
+// ---- render ------------------------------------------------------------------
+
+void bench_render(const Settings& s) {
+  std::printf("\n### Renderers, %dx%d, one thread\n\n", s.width, s.height);
+  std::printf("| map | walls | renderer | median ms/frame | fps | frames | nodes visited | pixels written / screen |\n");
+  std::printf("|---|---:|---|---:|---:|---:|---:|---:|\n");
+  struct Case {
+    std::string name;
+    level::Level level;
+    std::vector<render::Camera> path;
+  };
+  std::vector<Case> cases;
+  {
+    const auto src = map::load_map(std::filesystem::path(s.source_dir) / "maps/outpost.map");
+    level::Level level = bsp::build(src, {});
+    auto path = cameras_from(level, render::read_camera_list(std::filesystem::path(s.source_dir) / "maps/outpost.path"));
+    cases.push_back({"outpost (default)", std::move(level), std::move(path)});
+  }
+  for (const char* kind : {"rooms", "soup"}) {
+    map::GenerateOptions o;
+    o.walls = 100000;
+    o.textures = bundled_textures(s);
+    const auto src = std::string(kind) == "rooms" ? map::generate_rooms(o) : map::generate_soup(o);
+    level::Level level = bsp::build(src, {});
+    auto path = turn_around(level);
+    cases.push_back({std::string(kind) + " 100k", std::move(level), std::move(path)});
+  }
+  for (const Case& c : cases)
+    for (const std::string& name : renderer_list(s)) {
+      auto r = render::make_renderer(name);
+      if (!r || !r->supports(c.level)) continue;
+      const Timing t = time_renderer(*r, c.level, c.path, s);
+      std::printf("| %s | %zu | %s | %s | %s | %zu | %s | %s |\n", c.name.c_str(), c.level.walls.size(), name.c_str(),
+                  fixed(t.median_ms, 3).c_str(), fixed(1000 / t.median_ms, 0).c_str(), t.frames,
+                  fixed(t.nodes_visited, 0).c_str(), fixed(t.pixels / (s.width * s.height), 2).c_str());
+      std::fflush(stdout);
+    }
+}
+
+// ---- scaling -----------------------------------------------------------------
+
+void bench_scaling(const Settings& s) {
+  const auto dir = std::filesystem::temp_directory_path() / ("p3d-bench-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::printf("\n### Scaling: compile (as mapc does: parse + validate, build, write) and render the same view\n\n");
+  std::printf("| map | walls | parse + validate s | build s | write s | total s | fragments | depth max/mean |");
+  for (const std::string& name : renderer_list(s)) std::printf(" %s ms/frame |", name.c_str());
+  std::printf("\n|---|---:|---:|---:|---:|---:|---:|---:|");
+  for (size_t i = 0; i < renderer_list(s).size(); ++i) std::printf("---:|");
+  std::printf("\n");
+  const auto textures = bundled_textures(s);
+  std::vector<std::string> files;
+  for (const auto& t : textures)
+    files.push_back(std::filesystem::absolute(std::filesystem::path(s.source_dir) / "maps/textures" / (t.name + ".png")).string());
+  for (const char* kind : {"rooms", "soup"})
+    for (size_t walls : s.sizes) {
+      map::GenerateOptions o;
+      o.walls = walls;
+      o.textures = textures;
+      const auto path = dir / (std::string(kind) + ".map");
+      {
+        const auto generated = std::string(kind) == "rooms" ? map::generate_rooms(o) : map::generate_soup(o);
+        write_file_atomically(path, map::to_map_text(generated, files));
+      }
+      const auto t0 = Clock::now();
+      const map::Source src = map::load_map(path);
+      const double parse = cli::seconds_since(t0);
+      const auto t1 = Clock::now();
+      bsp::Stats stats;
+      const level::Level level = bsp::build(src, {}, &stats);
+      const double build = cli::seconds_since(t1);
+      const auto out = dir / (std::string(kind) + std::to_string(walls) + ".bsp");  // a new file: no unlink in the timing
+      const auto t2 = Clock::now();
+      level::write(level, out);
+      const double write = cli::seconds_since(t2);
+      std::filesystem::remove(out);
+      std::printf("| %s | %s | %s | %s | %s | %s | %zu | %zu / %s |", kind, count_text(src.walls.size()).c_str(),
+                  fixed(parse, 3).c_str(), fixed(build, 3).c_str(), fixed(write, 3).c_str(),
+                  fixed(parse + build + write, 3).c_str(), stats.fragments, stats.max_depth,
+                  fixed(stats.mean_depth, 1).c_str());
+      const auto cameras = turn_around(level);
+      for (const std::string& name : renderer_list(s)) {
+        auto r = render::make_renderer(name);
+        if (!r || !r->supports(level)) {
+          std::printf(" n/a |");
+          continue;
+        }
+        std::printf(" %s |", fixed(time_renderer(*r, level, cameras, s).median_ms, 3).c_str());
+      }
+      std::printf("\n");
+      std::fflush(stdout);
+    }
+  std::filesystem::remove_all(dir);
+}
+
+// ---- strategies --------------------------------------------------------------
+
+void bench_strategies(const Settings& s) {
+  std::printf("\n### BSP strategies (seed 1; bsp renderer on each map's path)\n\n");
+  std::printf("| map | strategy | fragments | splits | fragments / (n + 2n ln n) | depth max/mean | build ms | "
+              "bsp ms/frame | nodes visited |\n");
+  std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
+  struct Case {
+    std::string name;
+    map::Source src;
+    std::vector<render::CameraSpec> path;
+  };
+  std::vector<Case> cases;
+  cases.push_back({"outpost", map::load_map(std::filesystem::path(s.source_dir) / "maps/outpost.map"),
+                   render::read_camera_list(std::filesystem::path(s.source_dir) / "maps/outpost.path")});
+  for (const char* kind : {"rooms", "soup"}) {
+    map::GenerateOptions o;
+    o.walls = 10000;
+    o.textures = bundled_textures(s);
+    cases.push_back({std::string(kind) + " 10k", std::string(kind) == "rooms" ? map::generate_rooms(o) : map::generate_soup(o), {}});
+  }
+  for (const Case& c : cases)
+    for (bsp::Strategy strategy : {bsp::Strategy::kFirst, bsp::Strategy::kRandom, bsp::Strategy::kFreeSplit, bsp::Strategy::kGreedy}) {
+      bsp::Options o;
+      o.strategy = strategy;
+      bsp::Stats stats;
+      const auto t0 = Clock::now();
+      const level::Level level = bsp::build(c.src, o, &stats);
+      const double build_ms = cli::seconds_since(t0) * 1000;
+      const auto path = c.path.empty() ? turn_around(level) : cameras_from(level, c.path);
+      auto r = render::make_renderer("bsp");
+      const Timing t = time_renderer(*r, level, path, s);
+      std::printf("| %s | %s | %zu | %zu | %s | %zu / %s | %s | %s | %s |\n", c.name.c_str(), bsp::strategy_name(strategy),
+                  stats.fragments, stats.splits, fixed(stats.fragments / stats.random_bound(), 3).c_str(), stats.max_depth,
+                  fixed(stats.mean_depth, 1).c_str(), fixed(build_ms, 1).c_str(), fixed(t.median_ms, 3).c_str(),
+                  fixed(t.nodes_visited, 0).c_str());
+      std::fflush(stdout);
+    }
+}
+
+std::string cpu_name() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown CPU";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"bench: renderer and compiler benchmarks, printed as markdown tables", "bench"};
+  Settings s;
+  std::vector<std::string> sections;
+  std::string size_text = "640x400";
+  app.add_option("sections", sections, "render, scaling, strategies (default: all)")
+      ->check(CLI::IsMember({"render", "scaling", "strategies"}));
+  app.add_option("--size", size_text, "resolution WxH")->capture_default_str();
+  app.add_option("--repeat", s.repeat, "renders per camera")->check(CLI::Range(1, 1000))->capture_default_str();
+  app.add_option("--budget", s.budget_seconds, "seconds per renderer and map before the path is cut short")
+      ->check(CLI::Range(0.01, 3600.0))
+      ->capture_default_str();
+  app.add_option("--sizes", s.sizes, "wall counts for the scaling section")->capture_default_str();
+  app.add_option("--renderers", s.renderers, "renderers to time (default: all)")->delimiter(',');
+  app.add_option("--source-dir", s.source_dir, "the project's source directory (for maps/)")
+      ->check(CLI::ExistingDirectory)
+      ->capture_default_str();
+  return cli::run(app, argc, argv, [&] {
+    cli::parse_size(size_text, s.width, s.height);
+    for (const auto& r : s.renderers)
+      if (!render::make_renderer(r)) throw CLI::ValidationError("--renderers", "unknown renderer '" + r + "'");
+    if (sections.empty()) sections = {"render", "scaling", "strategies"};
+#ifndef NDEBUG
+    std::printf("WARNING: not a Release build; timings are meaningless.\n");
+#endif
+    std::printf("bench on %s, %dx%d, median of %d renders per camera\n", cpu_name().c_str(), s.width, s.height, s.repeat);
+    for (const std::string& section : sections) {
+      if (section == "render") bench_render(s);
+      if (section == "scaling") bench_scaling(s);
+      if (section == "strategies") bench_strategies(s);
+    }
+    return 0;
+  });
+}
