@@ -110,6 +110,9 @@ int main(int argc, char** argv) {
   app.add_option("--balance-weight", a.options.balance_weight, "greedy: cost of a fragment of imbalance")
       ->check(CLI::Range(0.0, 1e9))
       ->capture_default_str();
+  app.add_option("--sliver-weight", a.options.sliver_weight, "greedy: cost of a split leaving a piece under 1/16 unit")
+      ->check(CLI::Range(0.0, 1e9))
+      ->capture_default_str();
   app.add_flag("--stats", a.stats, "print tree statistics");
   app.add_flag("--check", a.check, "verify the BSP invariants exactly before writing");
 
