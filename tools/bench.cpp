@@ -1,6 +1,7 @@
 // bench: the project's benchmark (Release builds). Prints markdown tables:
 //   render      median ms/frame and fps per renderer along a fixed camera path
 //   scaling     compile time and frame time as generated maps grow from 1k to 1M walls
+//   grids       grid ray casting against open distance: mazes and open arenas
 //   strategies  tree size, depth, build time and frame time per BSP strategy
 // Timings are wall-clock medians on one thread; compare ratios within one run.
 #include <algorithm>
@@ -34,6 +35,7 @@ struct Timing {
   size_t frames = 0;
   double nodes_visited = 0;  // mean per frame
   double pixels = 0;         // mean per frame
+  double steps_per_ray = 0;  // mean (ray-based renderers)
 };
 
 double median(std::vector<double> v) {
@@ -47,11 +49,15 @@ Timing time_renderer(render::Renderer& r, const level::Level& level, const std::
   render::Frame frame(s.width, s.height);
   std::vector<double> times;
   Timing t;
+  r.prepare(level);  // acceleration structures are built outside the timing
   const auto start = Clock::now();
-  r.render(level, path.front(), frame);  // warm up caches and scratch buffers
+  const render::RenderStats first = r.render(level, path.front(), frame);  // warms up caches and scratch buffers
   if (cli::seconds_since(start) > s.budget_seconds) {  // too slow to repeat: that one frame is the measure
     t.frames = 1;
     t.median_ms = cli::seconds_since(start) * 1000;
+    t.nodes_visited = double(first.nodes_visited);
+    t.pixels = double(first.pixels_written);
+    t.steps_per_ray = first.rays ? double(first.steps) / double(first.rays) : 0;
     return t;
   }
   for (const render::Camera& c : path) {
@@ -61,6 +67,7 @@ Timing time_renderer(render::Renderer& r, const level::Level& level, const std::
       times.push_back(cli::seconds_since(t0) * 1000);
       t.nodes_visited += double(st.nodes_visited);
       t.pixels += double(st.pixels_written);
+      t.steps_per_ray += st.rays ? double(st.steps) / double(st.rays) : 0;
     }
     if (cli::seconds_since(start) > s.budget_seconds) break;  // slow renderers: a prefix of the path
   }
@@ -68,6 +75,7 @@ Timing time_renderer(render::Renderer& r, const level::Level& level, const std::
   t.median_ms = median(times);
   t.nodes_visited /= double(t.frames);
   t.pixels /= double(t.frames);
+  t.steps_per_ray /= double(t.frames);
   return t;
 }
 
@@ -111,8 +119,9 @@ std::vector<std::string> renderer_list(const Settings& s) {
 
 void bench_render(const Settings& s) {
   std::printf("\n### Renderers, %dx%d, one thread\n\n", s.width, s.height);
-  std::printf("| map | walls | renderer | median ms/frame | fps | frames | nodes visited | pixels written / screen |\n");
-  std::printf("|---|---:|---|---:|---:|---:|---:|---:|\n");
+  std::printf("| map | walls | renderer | median ms/frame | fps | frames | nodes visited | pixels written / screen | "
+              "steps / ray |\n");
+  std::printf("|---|---:|---|---:|---:|---:|---:|---:|---:|\n");
   struct Case {
     std::string name;
     level::Level level;
@@ -124,6 +133,11 @@ void bench_render(const Settings& s) {
     level::Level level = bsp::build(src, {});
     auto path = cameras_from(level, render::read_camera_list(std::filesystem::path(s.source_dir) / "maps/outpost.path"));
     cases.push_back({"outpost (default)", std::move(level), std::move(path)});
+  }
+  {
+    level::Level level = bsp::build(map::load_grid(std::filesystem::path(s.source_dir) / "maps/labyrinth.grid"), {});
+    auto path = turn_around(level);
+    cases.push_back({"labyrinth (grid 256x256)", std::move(level), std::move(path)});
   }
   for (const char* kind : {"rooms", "soup"}) {
     map::GenerateOptions o;
@@ -139,9 +153,10 @@ void bench_render(const Settings& s) {
       auto r = render::make_renderer(name);
       if (!r || !r->supports(c.level)) continue;
       const Timing t = time_renderer(*r, c.level, c.path, s);
-      std::printf("| %s | %zu | %s | %s | %s | %zu | %s | %s |\n", c.name.c_str(), c.level.walls.size(), name.c_str(),
-                  fixed(t.median_ms, 3).c_str(), fixed(1000 / t.median_ms, 0).c_str(), t.frames,
-                  fixed(t.nodes_visited, 0).c_str(), fixed(t.pixels / (s.width * s.height), 2).c_str());
+      std::printf("| %s | %zu | %s | %s | %s | %zu | %s | %s | %s |\n", c.name.c_str(), c.level.walls.size(), name.c_str(),
+                  fixed(t.median_ms, 3).c_str(), fixed(1000 / t.median_ms, 1).c_str(), t.frames,
+                  fixed(t.nodes_visited, 0).c_str(), fixed(t.pixels / (s.width * s.height), 2).c_str(),
+                  t.steps_per_ray > 0 ? fixed(t.steps_per_ray, 1).c_str() : "");
       std::fflush(stdout);
     }
 }
@@ -158,11 +173,13 @@ void bench_scaling(const Settings& s) {
   for (size_t i = 0; i < renderer_list(s).size(); ++i) std::printf("---:|");
   std::printf("\n");
   const auto textures = bundled_textures(s);
+  std::map<std::string, double> last_ms;  // renderer -> ms/frame at the previous size of this kind
   std::vector<std::string> files;
   for (const auto& t : textures)
     files.push_back(std::filesystem::absolute(std::filesystem::path(s.source_dir) / "maps/textures" / (t.name + ".png")).string());
   for (const char* kind : {"rooms", "soup"})
     for (size_t walls : s.sizes) {
+      if (walls == s.sizes.front()) last_ms.clear();
       map::GenerateOptions o;
       o.walls = walls;
       o.textures = textures;
@@ -194,9 +211,46 @@ void bench_scaling(const Settings& s) {
           std::printf(" n/a |");
           continue;
         }
-        std::printf(" %s |", fixed(time_renderer(*r, level, cameras, s).median_ms, 3).c_str());
+        if (last_ms.count(name) && last_ms[name] > 5000) {  // over 5 s a frame already: the next size is 10x that
+          std::printf(" skipped |");
+          continue;
+        }
+        last_ms[name] = time_renderer(*r, level, cameras, s).median_ms;
+        std::printf(" %s |", fixed(last_ms[name], 3).c_str());
       }
       std::printf("\n");
+      std::fflush(stdout);
+    }
+  std::filesystem::remove_all(dir);
+}
+
+// ---- grids -------------------------------------------------------------------
+
+void bench_grids(const Settings& s) {
+  const auto dir = std::filesystem::temp_directory_path() / ("p3d-bench-grid-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::printf("\n### Grid ray casting and open distance (turning on the spot at the player start)\n\n");
+  std::printf("| grid | tiles | walls | dda ms/frame | dda cells / ray | bsp ms/frame | bsp nodes visited | sphere ms/frame | "
+              "sphere steps / ray |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  map::GridOptions o;
+  for (const char* name : {"brick", "stone", "metal", "wood", "tech", "tiles", "ceiling"})
+    o.texture_files.push_back(
+        std::filesystem::absolute(std::filesystem::path(s.source_dir) / "maps/textures" / (std::string(name) + ".png")).string());
+  for (const char* kind : {"maze", "arena"})
+    for (int side : {64, 256, 1024}) {
+      o.kind = kind;
+      o.cols = o.rows = side;
+      write_file_atomically(dir / "g.grid", map::generate_grid_text(o));
+      const level::Level level = bsp::build(map::load_grid(dir / "g.grid"), {});
+      const auto cameras = turn_around(level);
+      const Timing dda = time_renderer(*render::make_renderer("dda"), level, cameras, s);
+      const Timing bsp = time_renderer(*render::make_renderer("bsp"), level, cameras, s);
+      const Timing sphere = time_renderer(*render::make_renderer("sphere"), level, cameras, s);
+      std::printf("| %s | %dx%d | %zu | %s | %s | %s | %s | %s | %s |\n", kind, side, side, level.walls.size(),
+                  fixed(dda.median_ms, 3).c_str(), fixed(dda.steps_per_ray, 1).c_str(), fixed(bsp.median_ms, 3).c_str(),
+                  fixed(bsp.nodes_visited, 0).c_str(), fixed(sphere.median_ms, 3).c_str(),
+                  fixed(sphere.steps_per_ray, 1).c_str());
       std::fflush(stdout);
     }
   std::filesystem::remove_all(dir);
@@ -217,6 +271,7 @@ void bench_strategies(const Settings& s) {
   std::vector<Case> cases;
   cases.push_back({"outpost", map::load_map(std::filesystem::path(s.source_dir) / "maps/outpost.map"),
                    render::read_camera_list(std::filesystem::path(s.source_dir) / "maps/outpost.path")});
+  cases.push_back({"labyrinth", map::load_grid(std::filesystem::path(s.source_dir) / "maps/labyrinth.grid"), {}});
   for (const char* kind : {"rooms", "soup"}) {
     map::GenerateOptions o;
     o.walls = 10000;
@@ -257,8 +312,8 @@ int main(int argc, char** argv) {
   Settings s;
   std::vector<std::string> sections;
   std::string size_text = "640x400";
-  app.add_option("sections", sections, "render, scaling, strategies (default: all)")
-      ->check(CLI::IsMember({"render", "scaling", "strategies"}));
+  app.add_option("sections", sections, "render, scaling, grids, strategies (default: all)")
+      ->check(CLI::IsMember({"render", "scaling", "grids", "strategies"}));
   app.add_option("--size", size_text, "resolution WxH")->capture_default_str();
   app.add_option("--repeat", s.repeat, "renders per camera")->check(CLI::Range(1, 1000))->capture_default_str();
   app.add_option("--budget", s.budget_seconds, "seconds per renderer and map before the path is cut short")
@@ -273,7 +328,7 @@ int main(int argc, char** argv) {
     cli::parse_size(size_text, s.width, s.height);
     for (const auto& r : s.renderers)
       if (!render::make_renderer(r)) throw CLI::ValidationError("--renderers", "unknown renderer '" + r + "'");
-    if (sections.empty()) sections = {"render", "scaling", "strategies"};
+    if (sections.empty()) sections = {"render", "scaling", "grids", "strategies"};
 #ifndef NDEBUG
     std::printf("WARNING: not a Release build; timings are meaningless.\n");
 #endif
@@ -281,6 +336,7 @@ int main(int argc, char** argv) {
     for (const std::string& section : sections) {
       if (section == "render") bench_render(s);
       if (section == "scaling") bench_scaling(s);
+      if (section == "grids") bench_grids(s);
       if (section == "strategies") bench_strategies(s);
     }
     return 0;

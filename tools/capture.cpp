@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "engine/image/image.h"
-#include "engine/level/io.h"
+#include "engine/bsp/load.h"
 #include "engine/render/camera_file.h"
 #include "engine/render/renderer.h"
 #include "engine/util/file.h"
@@ -30,7 +30,10 @@ int main(int argc, char** argv) {
   std::string map_path, output, pos_text, size_text = "640x400", renderer_name = "bsp", columns, cameras;
   double angle = 0, eye = render::kEyeHeight, fov = 90;
   bool stats = false;
-  app.add_option("map", map_path, "compiled level (.bsp)")->required()->check(CLI::ExistingFile);
+  render::RendererOptions ropt;
+  app.add_option("map", map_path, "compiled level (.bsp), or a .map/.grid compiled on the fly")
+      ->required()
+      ->check(CLI::ExistingFile);
   app.add_option("--pos", pos_text, "camera position X,Y (map units)");
   app.add_option("--angle", angle, "view angle, degrees counter-clockwise from east")->capture_default_str();
   app.add_option("--eye", eye, "eye height above the floor")->capture_default_str();
@@ -45,11 +48,20 @@ int main(int argc, char** argv) {
   app.add_option("--columns", columns, "CSV of x,wall,dist per column (a directory with --cameras)");
   app.add_option("--cameras", cameras, "file of cameras: NAME X Y ANGLE [EYE [FOV]] per line")->check(CLI::ExistingFile);
   app.add_flag("--stats", stats, "print per-frame statistics and time per frame");
+  app.add_option("--epsilon", ropt.sphere_epsilon, "sphere: distance at which walls are tested exactly")
+      ->check(CLI::Range(1e-6, 1e6))
+      ->capture_default_str();
+  app.add_option("--relaxation", ropt.sphere_relaxation, "sphere: over-relaxation factor (1 = plain)")
+      ->check(CLI::Range(1.0, 1.99))
+      ->capture_default_str();
+  app.add_option("--max-steps", ropt.sphere_max_steps, "sphere: steps before a ray gives up")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
 
   return cli::run(app, argc, argv, [&] {
     int width = 0, height = 0;
     cli::parse_size(size_text, width, height);
-    auto renderer = render::make_renderer(renderer_name);
+    auto renderer = render::make_renderer(renderer_name, ropt);
     if (!renderer) throw CLI::ValidationError("--renderer", "unknown renderer '" + renderer_name + "'");
 
     std::vector<render::CameraSpec> shots;
@@ -62,22 +74,24 @@ int main(int argc, char** argv) {
       shots.push_back({"", cli::parse_point(pos_text, "--pos"), angle, eye, fov});
     }
 
-    const level::Level level = level::read(map_path);
+    const level::Level level = bsp::load_level(map_path);
     if (!renderer->supports(level))
       throw Error(map_path + ": the " + renderer_name + " renderer cannot draw this level");
+    renderer->prepare(level);
     render::Frame frame(width, height);
-    render::ColumnHits hits;
+    render::Probe probe;
+    probe.want_columns = !columns.empty();
     for (const render::CameraSpec& shot : shots) {
       const render::Camera camera = render::camera_at(level, shot.pos, shot.angle, shot.eye, shot.fov);
       const auto start = std::chrono::steady_clock::now();
-      const render::RenderStats s = renderer->render(level, camera, frame, columns.empty() ? nullptr : &hits);
+      const render::RenderStats s = renderer->render(level, camera, frame, &probe);
       double ms = cli::seconds_since(start) * 1000;
 
       const bool many = !cameras.empty();
       image::save_png(frame, many ? std::filesystem::path(output) / (shot.name + ".png") : std::filesystem::path(output));
       if (!columns.empty())
         write_file_atomically(many ? std::filesystem::path(columns) / (shot.name + ".csv") : std::filesystem::path(columns),
-                              columns_csv(hits));
+                              columns_csv(probe.columns));
       if (stats) {
         std::vector<double> times{ms};  // median of a few more frames: one frame is too noisy to report
         for (int i = 0; i < 4; ++i) {
@@ -88,11 +102,15 @@ int main(int argc, char** argv) {
         std::nth_element(times.begin(), times.begin() + 2, times.end());
         ms = times[2];
         std::printf("%s%s renderer=%s nodes_visited=%llu subtrees_culled=%llu fragments_drawn=%llu "
-                    "columns_closed=%llu pixels_written=%llu early_exit=%s ms_per_frame=%.3f\n",
+                    "columns_closed=%llu pixels_written=%llu early_exit=%s",
                     shot.name.c_str(), shot.name.empty() ? "frame" : "", renderer_name.c_str(),
                     (unsigned long long)s.nodes_visited, (unsigned long long)s.subtrees_culled,
                     (unsigned long long)s.fragments_drawn, (unsigned long long)s.columns_closed,
-                    (unsigned long long)s.pixels_written, s.early_exit ? "yes" : "no", ms);
+                    (unsigned long long)s.pixels_written, s.early_exit ? "yes" : "no");
+        if (s.rays)
+          std::printf(" rays=%llu mean_steps=%.2f max_steps=%llu", (unsigned long long)s.rays,
+                      double(s.steps) / double(s.rays), (unsigned long long)s.max_steps);
+        std::printf(" ms_per_frame=%.3f\n", ms);
       }
     }
     return 0;

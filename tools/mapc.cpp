@@ -9,14 +9,19 @@
 #include "engine/bsp/build.h"
 #include "engine/bsp/check.h"
 #include "engine/level/io.h"
+#include "engine/render/renderer.h"
+#include "engine/util/file.h"
 #include "tools/cli.h"
+#include "tools/overview_svg.h"
 
 using namespace p3d;
 
 namespace {
 
 struct Args {
-  std::string input, output, strategy = "greedy";
+  std::string input, output, strategy = "greedy", svg, pos;
+  double angle = 0, fov = 90;
+  int columns = 160;
   uint64_t seed = 1;
   bool stats = false, check = false;
   bsp::Options options;
@@ -92,7 +97,7 @@ class Progress {
 int main(int argc, char** argv) {
   CLI::App app{"mapc: compile a .map level into a self-contained BSP (.bsp)", "mapc"};
   Args a;
-  app.add_option("input", a.input, "map source (.map)")->required()->check(CLI::ExistingFile);
+  app.add_option("input", a.input, "map source (.map or .grid)")->required()->check(CLI::ExistingFile);
   app.add_option("-o,--output", a.output, "compiled level to write (.bsp)")->required();
   app.add_option("--strategy", a.strategy, "splitter choice: first, random, freesplit or greedy")
       ->check(CLI::IsMember({"first", "random", "freesplit", "greedy"}))
@@ -115,6 +120,11 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_flag("--stats", a.stats, "print tree statistics");
   app.add_flag("--check", a.check, "verify the BSP invariants exactly before writing");
+  app.add_option("--svg", a.svg, "also draw the level and its BSP from above as SVG");
+  app.add_option("--pos", a.pos, "--svg: show a camera at X,Y: its view cone, draw order and closed columns");
+  app.add_option("--angle", a.angle, "--svg: the camera's angle")->capture_default_str();
+  app.add_option("--fov", a.fov, "--svg: the camera's field of view")->check(CLI::Range(1.0, 179.0))->capture_default_str();
+  app.add_option("--columns", a.columns, "--svg: screen columns traced")->check(CLI::Range(1, 4096))->capture_default_str();
 
   return cli::run(app, argc, argv, [&] {
     a.options.strategy = *bsp::parse_strategy(a.strategy);
@@ -123,7 +133,7 @@ int main(int argc, char** argv) {
     Progress progress;
     progress.phase("parsing and validating");
     const auto start = std::chrono::steady_clock::now();
-    const map::Source source = map::load_map(a.input);
+    const map::Source source = map::load_source(a.input);
     const double parse_seconds = cli::seconds_since(start);
 
     progress.phase("building the BSP");
@@ -141,6 +151,14 @@ int main(int argc, char** argv) {
     }
     progress.phase("writing");
     level::write(level, a.output);
+    if (!a.svg.empty()) {
+      std::optional<tools::ViewTrace> view;
+      if (!a.pos.empty()) {
+        const auto camera = render::camera_at(level, cli::parse_point(a.pos, "--pos"), a.angle, render::kEyeHeight, a.fov);
+        view = tools::trace_view(level, camera, a.columns, std::max(1, a.columns * 5 / 8));
+      }
+      write_file_atomically(a.svg, tools::overview_svg(level, view));
+    }
     if (a.stats) print_stats(stats, parse_seconds, build_seconds, a.options);
     return 0;
   });

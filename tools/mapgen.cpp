@@ -1,35 +1,67 @@
-// mapgen: random levels for tests and benchmarks (segment soups, room grids).
+// mapgen: random levels for tests and benchmarks: segment soups and room grids
+// (.map), mazes and caves (.grid tile maps).
 #include "engine/map/generate.h"
 #include "engine/util/file.h"
 #include "tools/cli.h"
 
 using namespace p3d;
 
+namespace {
+
+// Texture file paths as written in the map: relative to the map's directory.
+std::vector<std::string> texture_files(const std::string& texture_dir, const std::string& output,
+                                       const std::vector<std::string>& names) {
+  const std::filesystem::path out_dir = std::filesystem::absolute(output).parent_path();
+  std::vector<std::string> files;
+  for (const std::string& name : names) {
+    const auto file = std::filesystem::absolute(std::filesystem::path(texture_dir) / (name + ".png"));
+    if (!std::filesystem::exists(file)) throw Error(file.string() + ": texture not found (see --textures)");
+    files.push_back(std::filesystem::relative(file, out_dir).string());
+  }
+  return files;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  CLI::App app{"mapgen: write a random level as a .map source", "mapgen"};
-  std::string kind, output, texture_dir = "maps/textures";
+  CLI::App app{"mapgen: write a random level: a .map (soup, rooms) or a .grid (maze, caves)", "mapgen"};
+  std::string kind, output, texture_dir = "maps/textures", grid_size = "64x64";
   map::GenerateOptions options;
-  app.add_option("kind", kind, "soup (plain non-crossing segments) or rooms (sectors joined by doorways)")
+  map::GridOptions grid;
+  app.add_option("kind", kind,
+                 "soup (plain non-crossing segments), rooms (sectors joined by doorways), "
+                 "maze (a tile labyrinth with rooms), caves (random tiles), arena (an open hall with pillars)")
       ->required()
-      ->check(CLI::IsMember({"soup", "rooms"}));
-  app.add_option("--walls", options.walls, "number of walls (rooms: at least this many)")
+      ->check(CLI::IsMember({"soup", "rooms", "maze", "caves", "arena"}));
+  app.add_option("--walls", options.walls, "soup, rooms: number of walls (rooms: at least this many)")
       ->check(CLI::Range(size_t{1}, size_t{4000000}))
       ->capture_default_str();
+  app.add_option("--grid", grid_size, "maze, caves, arena: tiles WxH")->capture_default_str();
+  app.add_option("--cell", grid.cell, "maze, caves, arena: cell size in map units")->check(CLI::Range(8, 512))->capture_default_str();
   app.add_option("--seed", options.seed, "random seed")->capture_default_str();
-  app.add_option("--textures", texture_dir, "directory with brick, stone, metal, wood, tech and rock PNGs")
+  app.add_option("--textures", texture_dir, "directory with the bundled texture PNGs")
       ->check(CLI::ExistingDirectory)
       ->capture_default_str();
-  app.add_option("-o,--output", output, ".map file to write")->required();
+  app.add_option("-o,--output", output, "file to write")->required();
 
   return cli::run(app, argc, argv, [&] {
-    const std::vector<std::string> names = {"brick", "stone", "metal", "wood", "tech", "rock"};
-    const std::filesystem::path out_dir = std::filesystem::absolute(output).parent_path();
-    std::vector<std::string> files;
-    for (const std::string& name : names) {
-      const std::filesystem::path file = std::filesystem::absolute(std::filesystem::path(texture_dir) / (name + ".png"));
-      options.textures.push_back({name, image::load_png(file), {}});
-      files.push_back(std::filesystem::relative(file, out_dir).string());
+    if (kind == "maze" || kind == "caves" || kind == "arena") {
+      cli::parse_size(grid_size, grid.cols, grid.rows);
+      if (grid.cols < 8 || grid.rows < 8 || grid.cols > 4096 || grid.rows > 4096)
+        throw CLI::ValidationError("--grid", "between 8x8 and 4096x4096 tiles");
+      grid.kind = kind;
+      grid.seed = options.seed;
+      grid.texture_files = texture_files(texture_dir, output, {"brick", "stone", "metal", "wood", "tech", "tiles", "ceiling"});
+      const std::string text = map::generate_grid_text(grid);
+      map::validate(map::parse_grid(text, output));  // never write a map mapc would refuse
+      write_file_atomically(output, text);
+      std::printf("%s: %dx%d tiles\n", output.c_str(), grid.cols, grid.rows);
+      return 0;
     }
+    const std::vector<std::string> names = {"brick", "stone", "metal", "wood", "tech", "rock"};
+    const auto files = texture_files(texture_dir, output, names);
+    for (size_t i = 0; i < names.size(); ++i)
+      options.textures.push_back({names[i], image::load_png(std::filesystem::path(texture_dir) / (names[i] + ".png")), {}});
     const map::Source source = kind == "soup" ? map::generate_soup(options) : map::generate_rooms(options);
     map::validate(source);
     write_file_atomically(output, map::to_map_text(source, files));

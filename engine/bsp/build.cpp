@@ -89,6 +89,7 @@ class Builder {
     level::finalize(out_);
     compute_bounding_boxes();
     resolve_leaves_by_ray_cast();
+    level::finalize(out_);  // again: plain segments look up their sector in the finished tree
     check_player_start();
     if (stats) fill_stats(*stats);
     return std::move(out_);
@@ -119,6 +120,7 @@ class Builder {
     out_.player_angle = src_.player.angle;
     out_.default_sector = src_.default_sector;
     out_.sky_texture = src_.sky_texture;
+    if (src_.grid) out_.grid = level::Grid{src_.grid->cols, src_.grid->rows, src_.grid->cell, src_.grid->solid, src_.grid->faces};
   }
 
   static level::Side side(const map::Side& s) {

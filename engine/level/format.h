@@ -13,6 +13,8 @@
 //                           f64 bbox min x, min y, max x, max y }
 //     LEAVES   u32 n; n x { i32 sector }
 //     THINGS   u32 n; n x { i32 type, f64 x, y, angle }
+//     GRID     u32 present (0 or 1); if 1: u32 cols, u32 rows, f64 cell,
+//              cols*rows u8 solid (row 0 south), cols*rows*4 i32 face walls (east, north, west, south)
 // All integers and IEEE doubles little-endian; str = u32 length + bytes.
 #pragma once
 
@@ -21,7 +23,7 @@
 namespace p3d::level::format {
 
 constexpr char kMagic[8] = {'P', '3', 'D', 'B', 'S', 'P', '\r', '\n'};
-constexpr uint32_t kVersion = 1;
+constexpr uint32_t kVersion = 2;
 constexpr size_t kHeaderSize = 8 + 4 + 4 + 8 + 8;
 
 constexpr uint32_t tag(const char (&s)[5]) {
@@ -29,7 +31,9 @@ constexpr uint32_t tag(const char (&s)[5]) {
          uint32_t(uint8_t(s[3])) << 24;
 }
 constexpr uint32_t kMeta = tag("META"), kTextures = tag("TEXS"), kSectors = tag("SECS"), kWalls = tag("WALL"),
-                   kFragments = tag("FRAG"), kNodes = tag("NODE"), kLeaves = tag("LEAF"), kThings = tag("THNG");
+                   kFragments = tag("FRAG"), kNodes = tag("NODE"), kLeaves = tag("LEAF"), kThings = tag("THNG"),
+                   kGrid = tag("GRID");
+constexpr int kMaxGridSide = 4096;
 
 constexpr size_t kWallRecord = 4 * 8 + 4 + 2 * (4 * 4 + 2 * 8);
 constexpr size_t kFragmentRecord = 4 * 3 + 8 * 2;

@@ -2,6 +2,7 @@
 // sector lookup (the oracle) and leaf cells.
 #include "engine/level/level.h"
 
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -25,6 +26,8 @@ Texture make_texture(const std::string& name, int width, int height, const uint3
 }
 
 void finalize(Level& level) {
+  static std::atomic<uint64_t> generations{0};
+  level.generation = ++generations;
   level.bounds = BBox{};
   for (Wall& w : level.walls) {
     w.a = geom::to_world(w.p1);
@@ -48,6 +51,9 @@ void finalize(Level& level) {
       level.fragments[i].same_direction = glm::dot(w.b - w.a, n.direction) > 0;
     }
   }
+  if (!level.nodes.empty() && !level.leaves.empty())
+    for (Wall& w : level.walls)
+      if (w.segment()) w.segment_sector = level.sector_at((w.a + w.b) * 0.5);
 }
 
 int Level::leaf_at(Vec2 p) const {
@@ -114,6 +120,34 @@ int sector_at_brute_force(const Level& level, Vec2 p) {
   for (size_t s = 0; s < parity.size(); ++s)
     if (parity[s]) return static_cast<int>(s);
   return level.default_sector;
+}
+
+std::vector<Chord> node_chords(const Level& level, const BBox& bounds) {
+  std::vector<Chord> chords(level.nodes.size());
+  std::vector<std::pair<int32_t, geom::Polygon>> stack{{0, geom::box_polygon(bounds)}};
+  while (!stack.empty()) {
+    auto [child, poly] = std::move(stack.back());
+    stack.pop_back();
+    if (is_leaf(child)) continue;
+    const Node& n = level.nodes[child];
+    // The line meets the convex cell in one segment: between its extreme projections
+    // among the cell's edge crossings.
+    double lo = INFINITY, hi = -INFINITY;
+    const double len2 = glm::dot(n.direction, n.direction);
+    for (size_t i = 0; i < poly.size(); ++i) {
+      const Vec2 p = poly[i], q = poly[(i + 1) % poly.size()];
+      const double sp = geom::cross(n.direction, p - n.origin), sq = geom::cross(n.direction, q - n.origin);
+      if ((sp > 0) == (sq > 0) && sp != 0 && sq != 0) continue;
+      const Vec2 x = sp == sq ? p : p + (q - p) * (sp / (sp - sq));
+      const double t = glm::dot(x - n.origin, n.direction) / len2;
+      lo = std::min(lo, t);
+      hi = std::max(hi, t);
+    }
+    if (lo < hi) chords[child] = {n.origin + n.direction * lo, n.origin + n.direction * hi, false};
+    stack.push_back({n.child[1], geom::clip_polygon(poly, n.origin, n.direction, +1)});
+    stack.push_back({n.child[0], geom::clip_polygon(poly, n.origin, n.direction, -1)});
+  }
+  return chords;
 }
 
 std::vector<std::vector<Vec2>> leaf_cells(const Level& level, const BBox& bounds) {

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,7 @@ struct Wall {
   Vec2 a, b;            // p1, p2 in map units
   double length = 0;
   int contrast = 0;     // Doom's fake contrast: -1 along x, +1 along y, 0 otherwise
+  int segment_sector = kNone;  // for a plain segment: the sector it stands in
 
   bool segment() const { return flags & kSegment; }
   bool two_sided() const { return !segment() && sides[1].sector != kNone; }
@@ -99,6 +101,20 @@ struct Thing {
   double angle = 0;
 };
 
+// The tile grid of a level compiled from a .grid map, for the grid ray caster.
+// Cell (c, r) spans [c, c+1] x [r, r+1] cells from the origin; row 0 is the south.
+struct Grid {
+  enum Face { kEast = 0, kNorth = 1, kWest = 2, kSouth = 3 };
+  int cols = 0, rows = 0;
+  double cell = 64;             // map units
+  std::vector<uint8_t> solid;   // cols * rows
+  std::vector<int32_t> faces;   // 4 per cell: the wall on that side of an empty cell with a solid neighbour
+
+  bool inside(int c, int r) const { return c >= 0 && r >= 0 && c < cols && r < rows; }
+  bool is_solid(int c, int r) const { return !inside(c, r) || solid[size_t(r) * cols + c]; }
+  int32_t face(int c, int r, int f) const { return faces[(size_t(r) * cols + c) * 4 + f]; }
+};
+
 struct Level {
   std::string title;
   std::vector<Texture> textures;
@@ -112,15 +128,18 @@ struct Level {
   double player_angle = 0;
   int default_sector = kNone;
   int sky_texture = kNone;
+  std::optional<Grid> grid;  // levels compiled from .grid maps
   // Derived on load:
-  BBox bounds;  // of all walls
+  BBox bounds;              // of all walls
+  uint64_t generation = 0;  // unique per finalize(): renderers key per-level caches on it
 
   // Point location: descend the BSP. A point on a splitter goes to the front.
   int leaf_at(Vec2 p) const;
   int sector_at(Vec2 p) const { return leaves[leaf_at(p)].sector; }
 };
 
-// Fills the derived fields (texture masks, wall and fragment points, node lines, bounds).
+// Fills the derived fields (wall and fragment points, node lines, bounds, the
+// sectors plain segments stand in). Call again after changing leaf sectors.
 void finalize(Level& level);
 
 // Side of p relative to a node's splitter: > 0 back (left), < 0 front (right).
@@ -141,5 +160,12 @@ int sector_at_brute_force(const Level& level, Vec2 p);
 
 // The convex cell of every leaf, clipped to `bounds` (for drawing and checks).
 std::vector<std::vector<Vec2>> leaf_cells(const Level& level, const BBox& bounds);
+
+// For every node, the piece of its splitter line inside its cell (clipped to `bounds`).
+struct Chord {
+  Vec2 a, b;
+  bool empty = true;
+};
+std::vector<Chord> node_chords(const Level& level, const BBox& bounds);
 
 }  // namespace p3d::level

@@ -33,9 +33,11 @@ class Reader {
     read_nodes();
     read_leaves();
     read_things();
+    read_grid();
     if (in_.remaining() != 0) in_.fail(std::to_string(in_.remaining()) + " unexpected bytes after the last section");
 
     check_references();
+    check_grid();
     check_tree();
     finalize(level_);
     return std::move(level_);
@@ -161,6 +163,61 @@ class Reader {
       t.pos = {finite("thing x"), finite("thing y")};
       t.angle = finite("thing angle");
     }
+  }
+
+  void read_grid() {
+    section(format::kGrid, "GRID");
+    const uint32_t present = in_.u32();
+    if (present > 1) in_.fail("bad grid flag");
+    if (!present) return;
+    Grid g;
+    const uint32_t cols = in_.u32(), rows = in_.u32();
+    if (cols < 1 || rows < 1 || cols > uint32_t(format::kMaxGridSide) || rows > uint32_t(format::kMaxGridSide))
+      in_.fail("grid size out of range");
+    g.cols = int(cols);
+    g.rows = int(rows);
+    g.cell = finite("grid cell");
+    if (!(g.cell > 0) || g.cell * std::max(cols, rows) > geom::kMaxCoord) in_.fail("grid cell size out of range");
+    const size_t cells = size_t(cols) * rows;
+    if (in_.remaining() < cells * 17) in_.fail("truncated grid");
+    const auto solid = in_.raw(cells);
+    g.solid.assign(solid.begin(), solid.end());
+    g.faces.resize(cells * 4);
+    for (int32_t& f : g.faces) f = in_.i32();
+    level_.grid = std::move(g);
+  }
+
+  // Every face of an empty cell against a solid one has the wall lying along that
+  // face (exactly, on the fixed grid), and no other face has one: the grid ray
+  // caster trusts this mapping.
+  void check_grid() const {
+    if (!level_.grid) return;
+    const Grid& g = *level_.grid;
+    for (uint8_t s : g.solid)
+      if (s > 1) in_.fail("bad grid cell");
+    auto corner = [&](int gx, int gy) {
+      geom::IPoint p;
+      if (!geom::to_fixed(gx * g.cell, p.x) || !geom::to_fixed(gy * g.cell, p.y)) in_.fail("grid corner out of range");
+      return p;
+    };
+    const int dc[4] = {1, 0, -1, 0}, dr[4] = {0, 1, 0, -1};
+    for (int r = 0; r < g.rows; ++r)
+      for (int c = 0; c < g.cols; ++c)
+        for (int f = 0; f < 4; ++f) {
+          const int32_t w = g.face(c, r, f);
+          const bool needs_wall = !g.is_solid(c, r) && g.is_solid(c + dc[f], r + dr[f]);
+          if ((w != kNone) != needs_wall) in_.fail("grid face wall does not match the tiles");
+          if (w == kNone) continue;
+          index(w, 0, level_.walls.size(), "grid face wall");
+          // The face runs between two corners of the cell.
+          const int x0 = c + (f == Grid::kEast), y0 = r + (f == Grid::kNorth);
+          const int x1 = f == Grid::kNorth || f == Grid::kSouth ? x0 + 1 : x0, y1 = f == Grid::kEast || f == Grid::kWest ? y0 + 1 : y0;
+          const geom::IPoint a = corner(x0, y0), b = corner(x1, y1);
+          const Wall& wall = level_.walls[w];
+          if (geom::orient(wall.p1, wall.p2, a) != 0 || geom::orient(wall.p1, wall.p2, b) != 0 ||
+              geom::segment_contact(wall.p1, wall.p2, a, b) != geom::SegmentContact::kOverlap)
+            in_.fail("grid face wall does not lie along its face");
+        }
   }
 
   void check_references() const {

@@ -97,6 +97,16 @@ void write_payload(ByteWriter& out, const Level& level) {
     out.f64(t.pos.y);
     out.f64(t.angle);
   }
+
+  out.u32(format::kGrid);
+  out.u32(level.grid ? 1 : 0);
+  if (level.grid) {
+    out.u32(static_cast<uint32_t>(level.grid->cols));
+    out.u32(static_cast<uint32_t>(level.grid->rows));
+    out.f64(level.grid->cell);
+    out.raw(level.grid->solid);
+    for (int32_t f : level.grid->faces) out.i32(f);
+  }
 }
 
 }  // namespace

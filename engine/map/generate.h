@@ -28,6 +28,19 @@ Source generate_soup(const GenerateOptions& options);
 // doorways through 16-unit-thick walls.
 Source generate_rooms(const GenerateOptions& options);
 
+// A .grid tile map as text. kind "maze": a labyrinth of corridors with rooms carved
+// in and some loops; kind "caves": random solid tiles (30%); kind "arena": one open
+// hall with sparse pillars (1%), for long sight lines. cols and rows at least 8.
+// textures name the texture files (the first five texture walls, then floor, ceiling).
+struct GridOptions {
+  std::string kind = "maze";
+  int cols = 64, rows = 64;
+  int cell = 64;
+  uint64_t seed = 1;
+  std::vector<std::string> texture_files;  // 7 files: 5 wall textures, floor, ceiling
+};
+std::string generate_grid_text(const GridOptions& options);
+
 // Small procedural textures for generated maps when no files are at hand.
 std::vector<Texture> builtin_textures();
 

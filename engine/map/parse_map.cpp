@@ -1,104 +1,17 @@
 // The .map text parser: one statement per line, positional arguments then
 // key=value options. Every mistake is reported as "file:line: message".
-#include <charconv>
-#include <cmath>
-#include <map>
 #include <unordered_map>
 
 #include "engine/map/source.h"
+#include "engine/map/statement.h"
 #include "engine/util/file.h"
 
 namespace p3d::map {
 
+using detail::Statement;
+using detail::split_words;
+
 namespace {
-
-class Statement {
- public:
-  Statement(const FileLoc& loc, std::vector<std::string_view> words) : loc_(loc) {
-    keyword_ = words.front();
-    for (size_t i = 1; i < words.size(); ++i) {
-      const size_t eq = words[i].find('=');
-      if (eq == std::string_view::npos) {
-        if (!options_.empty()) fail("positional argument '" + std::string(words[i]) + "' after key=value options");
-        args_.push_back(words[i]);
-      } else {
-        const std::string key(words[i].substr(0, eq));
-        if (key.empty()) fail("missing key before '=' in '" + std::string(words[i]) + "'");
-        if (!options_.emplace(key, words[i].substr(eq + 1)).second) fail("option '" + key + "' given twice");
-      }
-    }
-  }
-
-  std::string_view keyword() const { return keyword_; }
-  const FileLoc& loc() const { return loc_; }
-  [[noreturn]] void fail(const std::string& message) const { throw Error(loc_, message); }
-
-  void expect_args(size_t n, const char* usage) const {
-    if (args_.size() != n) fail(std::string(keyword_) + ": expected " + usage);
-  }
-  std::string_view arg(size_t i) const { return args_[i]; }
-  size_t arg_count() const { return args_.size(); }
-
-  double number(std::string_view text, const std::string& what) const {
-    double v = 0;
-    const char* end = text.data() + text.size();
-    const auto [ptr, ec] = std::from_chars(text.data(), end, v);
-    if (ec == std::errc::result_out_of_range) fail(what + " '" + std::string(text) + "' is out of range");
-    if (ec != std::errc() || ptr != end) fail(what + " '" + std::string(text) + "' is not a number");
-    if (!std::isfinite(v)) fail(what + " '" + std::string(text) + "' is not finite");
-    return v;
-  }
-  int integer(std::string_view text, const std::string& what, int lo, int hi) const {
-    const double v = number(text, what);
-    if (v != std::floor(v) || v < lo || v > hi)
-      fail(what + " '" + std::string(text) + "' must be an integer from " + std::to_string(lo) + " to " +
-           std::to_string(hi));
-    return static_cast<int>(v);
-  }
-  int64_t coordinate(std::string_view text, const char* axis) const {
-    int64_t fixed = 0;
-    if (!geom::to_fixed(number(text, std::string(axis) + " coordinate"), fixed))
-      fail(std::string(axis) + " coordinate '" + std::string(text) + "' is outside +-" +
-           std::to_string(static_cast<int64_t>(geom::kMaxCoord)));
-    return fixed;
-  }
-
-  // Options: each must be consumed exactly once; leftovers are reported as unknown.
-  std::optional<std::string_view> take(const std::string& key) {
-    auto it = options_.find(key);
-    if (it == options_.end()) return std::nullopt;
-    std::string_view v = it->second;
-    options_.erase(it);
-    return v;
-  }
-  std::string_view require(const std::string& key) {
-    auto v = take(key);
-    if (!v) fail(std::string(keyword_) + ": missing option " + key + "=");
-    return *v;
-  }
-  void finish() const {
-    if (!options_.empty()) fail(std::string(keyword_) + ": unknown option '" + options_.begin()->first + "'");
-  }
-
- private:
-  FileLoc loc_;
-  std::string_view keyword_;
-  std::vector<std::string_view> args_;
-  std::map<std::string, std::string_view> options_;  // ordered: deterministic messages
-};
-
-std::vector<std::string_view> split_words(std::string_view line) {
-  std::vector<std::string_view> words;
-  size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
-    if (i >= line.size() || line[i] == '#') break;
-    const size_t start = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r' && line[i] != '#') ++i;
-    words.push_back(line.substr(start, i - start));
-  }
-  return words;
-}
 
 class Parser {
  public:
@@ -156,19 +69,7 @@ class Parser {
     const std::string name(s.arg(0));
     if (name == "sky" || name == "-") s.fail("'" + name + "' is reserved and cannot name a texture");
     if (texture_index_.count(name)) s.fail("texture '" + name + "' is defined twice");
-    const std::filesystem::path file = source_.path.parent_path() / std::string(s.arg(1));
-    if (!std::filesystem::exists(file)) s.fail("texture file '" + file.string() + "' does not exist");
-    Texture t{name, {}, s.loc()};
-    try {
-      t.image = image::load_png(file);
-    } catch (const Error& e) {
-      s.fail(e.what());
-    }
-    auto pow2 = [](int v) { return v > 0 && (v & (v - 1)) == 0; };
-    if (!pow2(t.image.width) || !pow2(t.image.height) || t.image.width > kMaxTextureSize ||
-        t.image.height > kMaxTextureSize)
-      s.fail("texture '" + name + "' is " + std::to_string(t.image.width) + "x" + std::to_string(t.image.height) +
-             ": sides must be powers of two up to " + std::to_string(kMaxTextureSize));
+    Texture t = detail::load_texture(s, name, source_.path, s.arg(1));
     texture_index_[name] = static_cast<int>(source_.textures.size());
     source_.textures.push_back(std::move(t));
   }

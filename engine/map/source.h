@@ -71,6 +71,17 @@ struct PlayerStart {
   FileLoc loc;
 };
 
+// A Wolfenstein-style tile grid behind a .grid map: kept so that the grid ray
+// caster (DDA) can walk the very walls the BSP draws.
+struct GridInfo {
+  int cols = 0, rows = 0;
+  double cell = 64;               // map units per cell
+  std::vector<uint8_t> solid;     // cols * rows, row 0 is the southernmost
+  std::vector<int32_t> faces;     // 4 per cell (east, north, west, south): the wall on that side of
+                                  // an empty cell whose neighbour is solid, else kNone
+  bool is_solid(int c, int r) const { return c < 0 || r < 0 || c >= cols || r >= rows || solid[size_t(r) * cols + c]; }
+};
+
 struct Source {
   std::filesystem::path path;
   std::string title;
@@ -82,6 +93,7 @@ struct Source {
   PlayerStart player;
   int default_sector = kNone;  // used where no sector bounds a point (segment-only maps always have one)
   int sky_texture = kNone;
+  std::optional<GridInfo> grid;  // for .grid maps
 
   geom::IPoint point(int vertex) const { return vertices[vertex].pos; }
 };
@@ -89,6 +101,19 @@ struct Source {
 // Parses and validates a .map file (see maps/FORMAT.md). Throws Error("file:line: message").
 Source load_map(const std::filesystem::path& path);
 Source parse_map(const std::string& text, const std::filesystem::path& path);
+
+// Parses and validates a .grid tile map into walls (see maps/FORMAT.md).
+Source load_grid(const std::filesystem::path& path);
+Source parse_grid(const std::string& text, const std::filesystem::path& path);
+
+// A .map or a .grid, by extension.
+Source load_source(const std::filesystem::path& path);
+
+// Walls along the edges between empty and solid cells (outside the grid counts as
+// solid), collinear runs of one texture merged, each facing its empty cell; fills
+// source.vertices, source.walls and source.grid. tile_texture[i] is cell i's texture.
+void grid_to_walls(Source& source, const GridInfo& grid, const std::vector<int>& tile_texture, int border_texture,
+                   int sector);
 
 // Geometry and consistency checks shared by every source format: zero-length,
 // crossing and overlapping walls, sector closure, heights, required textures.

@@ -15,9 +15,11 @@ class BspFrontToBack final : public Renderer {
  public:
   std::string_view name() const override { return "bsp"; }
 
-  RenderStats render(const level::Level& level, const Camera& camera, Frame& frame, ColumnHits* hits) override {
+  RenderStats render(const level::Level& level, const Camera& camera, Frame& frame, Probe* probe) override {
     const View view(camera, frame.width, frame.height);
-    canvas_.begin(level, view, frame, level.sector_at(camera.pos), hits);
+    canvas_.begin(level, view, frame, level.sector_at(camera.pos), probe);
+    order_ = probe && probe->want_order ? &probe->order : nullptr;
+    if (order_) order_->clear();
     mask_.reset(view.width);
     RenderStats stats;
 
@@ -72,15 +74,17 @@ class BspFrontToBack final : public Renderer {
         double depth, t;
         if (!projector.hit(x, depth, t) || t < f.t0 || t > f.t1) return;
         drew = true;
-        if (canvas_.draw_wall(x, {f.wall, side, depth, t})) mask_.close(x);
+        if (canvas_.draw_wall(x, {f.wall, side, depth, t, int32_t(i)})) mask_.close(x);
       });
       stats.fragments_drawn += drew;
+      if (drew && order_) order_->push_back(i);
     }
   }
 
   Canvas canvas_;
   ColumnMask mask_;
   std::vector<Item> stack_;
+  std::vector<uint32_t>* order_ = nullptr;
 };
 
 }  // namespace

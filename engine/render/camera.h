@@ -39,11 +39,23 @@ struct RenderStats {
   uint64_t max_steps = 0;        // most steps of one ray
 };
 
-// Per screen column: the wall that closes it (source order) and its perpendicular distance.
+// Per screen column: the wall that closes it (source order), its perpendicular
+// distance, and the BSP fragment it was drawn from (-1 for non-BSP renderers).
 struct ColumnHit {
   int32_t wall = -1;
   double dist = 0;
+  int32_t fragment = -1;
 };
 using ColumnHits = std::vector<ColumnHit>;
+
+// Optional per-frame outputs, filled only when asked for: the closing hit of every
+// column (capture --columns, the tests), the order in which fragments were drawn
+// (BSP renderers; pictures), and how often each pixel was written (overdraw).
+struct Probe {
+  bool want_columns = false, want_order = false, want_writes = false;
+  ColumnHits columns;
+  std::vector<uint32_t> order;   // fragment indices, in the order they first drew a column
+  std::vector<uint16_t> writes;  // per pixel, row-major
+};
 
 }  // namespace p3d::render

@@ -38,11 +38,12 @@ constexpr double kFix = 65536;  // 16.16 fixed point for texture coordinates
 
 }  // namespace
 
-void Canvas::begin(const level::Level& level, const View& view, Frame& frame, int camera_sector, ColumnHits* hits) {
+void Canvas::begin(const level::Level& level, const View& view, Frame& frame, int camera_sector, Probe* probe) {
   level_ = &level;
   view_ = &view;
   frame_ = &frame;
-  hits_ = hits;
+  hits_ = probe && probe->want_columns ? &probe->columns : nullptr;
+  writes_ = probe && probe->want_writes ? &probe->writes : nullptr;
   columns_.assign(view.width, Column{0, view.height, camera_sector});
   if (row_dy_.size() != size_t(view.height) || (!row_dy_.empty() && row_dy_[0] != 0.5 - view.half_h)) {
     row_dy_.resize(view.height);
@@ -52,14 +53,16 @@ void Canvas::begin(const level::Level& level, const View& view, Frame& frame, in
       row_inv_[y] = row_dy_[y] != 0 ? 1 / row_dy_[y] : 0;
     }
   }
-  if (hits) hits->assign(view.width, ColumnHit{});
+  if (hits_) hits_->assign(view.width, ColumnHit{});
+  if (writes_) writes_->assign(size_t(view.width) * view.height, 0);
   pixels_ = closed_count_ = 0;
-  if (count_writes_) writes_.assign(size_t(view.width) * view.height, 0);
 }
 
+// The sector whose heights frame the hit: the facing side's; for a plain segment
+// the sector it stands in; failing that the column's, then the default.
 int Canvas::near_sector(const level::Wall& w, const WallHit& hit, int x) const {
-  const int own = w.sides[hit.side].sector;
-  if (own != kNone) return own;
+  if (w.sides[hit.side].sector != kNone) return w.sides[hit.side].sector;
+  if (w.segment_sector != kNone) return w.segment_sector;
   const int column = x >= 0 ? columns_[x].sector : kNone;
   return column != kNone ? column : level_->default_sector;
 }
@@ -84,6 +87,15 @@ bool Canvas::draw_wall(int x, const WallHit& hit) {
   return true;
 }
 
+bool Canvas::clip_wall(int x, const WallHit& hit) {
+  dry_ = true;
+  const uint64_t pixels = pixels_;
+  const bool closed = draw_wall(x, hit);
+  pixels_ = pixels;
+  dry_ = false;
+  return closed;
+}
+
 void Canvas::paint_wall(int x, const WallHit& hit) {
   int top = 0, bottom = view_->height;
   draw_hit(x, hit, near_sector(level_->walls[hit.wall], hit, -1), top, bottom);
@@ -94,7 +106,7 @@ void Canvas::paint_background(int x, int sector) { planes_to_horizon(x, 0, view_
 void Canvas::close(int x, const WallHit& hit) {
   columns_[x].top = columns_[x].bottom;
   ++closed_count_;
-  if (hits_) (*hits_)[x] = {static_cast<int32_t>(hit.wall), hit.depth};
+  if (hits_) (*hits_)[x] = {static_cast<int32_t>(hit.wall), hit.depth, hit.fragment};
 }
 
 // Draws, within rows [top, bottom), the near sector's ceiling above the wall, its
@@ -146,13 +158,14 @@ void Canvas::draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom
 }
 
 void Canvas::count(int x, int y0, int y1) {
+  if (dry_) return;
   pixels_ += static_cast<uint64_t>(y1 - y0);
-  if (count_writes_)
-    for (int y = y0; y < y1; ++y) ++writes_[size_t(y) * view_->width + x];
+  if (writes_)
+    for (int y = y0; y < y1; ++y) ++(*writes_)[size_t(y) * view_->width + x];
 }
 
 void Canvas::fill_span(int x, int y0, int y1, uint32_t color) {
-  if (y0 >= y1) return;
+  if (y0 >= y1 || dry_) return;
   count(x, y0, y1);
   uint32_t* out = pixel(x, y0);
   for (int y = y0; y < y1; ++y, out += view_->width) *out = color;
@@ -161,7 +174,7 @@ void Canvas::fill_span(int x, int y0, int y1, uint32_t color) {
 // Texture row v at screen row y is v0 + y * step (anchor - height + y offset):
 // computed from row 0 so a pixel does not depend on where its span starts.
 void Canvas::wall_span(int x, int y0, int y1, int texture, const WallHit& hit, double anchor, int light) {
-  if (y0 >= y1) return;
+  if (y0 >= y1 || dry_) return;
   if (texture == kNone) return fill_span(x, y0, y1, kMissingTexture);
   count(x, y0, y1);
   const level::Wall& w = level_->walls[hit.wall];
@@ -182,7 +195,7 @@ void Canvas::wall_span(int x, int y0, int y1, int texture, const WallHit& hit, d
 // Floor or ceiling at height h: row y's ray meets the plane at k = (eye - h) / dy
 // ray lengths, i.e. at pos + ray(x) * k, depth k * d. Exact per pixel.
 void Canvas::plane_span(int x, int y0, int y1, int sector, bool ceiling) {
-  if (y0 >= y1) return;
+  if (y0 >= y1 || dry_) return;
   const level::Sector& s = level_->sectors[sector];
   const int texture = ceiling ? s.ceiling_texture : s.floor_texture;
   if (texture == kSky) return sky_span(x, y0, y1);
@@ -209,6 +222,7 @@ void Canvas::plane_span(int x, int y0, int y1, int sector, bool ceiling) {
 
 // The sky wraps four times around the horizon and hangs from the top of the screen.
 void Canvas::sky_span(int x, int y0, int y1) {
+  if (dry_) return;
   if (level_->sky_texture == kNone) return fill_span(x, y0, y1, kVoidColor);
   count(x, y0, y1);
   const level::Texture& tex = level_->textures[level_->sky_texture];

@@ -18,16 +18,21 @@ struct WallHit {
   int side;      // the side facing the camera: 0 front, 1 back
   double depth;  // along the view direction
   double t;      // parameter along the wall, 0 at p1
+  int32_t fragment = -1;  // the BSP fragment drawn, when there is one
 };
 
 class Canvas {
  public:
   // Resets every column to fully open, in `camera_sector` (may be kNone).
-  void begin(const level::Level& level, const View& view, Frame& frame, int camera_sector, ColumnHits* hits);
+  void begin(const level::Level& level, const View& view, Frame& frame, int camera_sector, Probe* probe);
 
   // Front to back: draws what the hit shows in the column's open rows and narrows
   // them. Returns true when this hit closes the column.
   bool draw_wall(int x, const WallHit& hit);
+
+  // Like draw_wall, but only narrows the column (and records the closing hit): the
+  // painter replays its hits front to back with this to learn which wall closed a column.
+  bool clip_wall(int x, const WallHit& hit);
 
   // Back to front (painter): draws the hit's wall parts and the planes in front of
   // it over the whole column, ignoring and keeping the column's state.
@@ -43,9 +48,6 @@ class Canvas {
 
   uint64_t pixels_written() const { return pixels_; }
   uint64_t columns_closed() const { return closed_count_; }
-  // Optional per-pixel write counts (for overdraw pictures); empty unless enabled before begin().
-  void count_writes(bool enable) { count_writes_ = enable; }
-  std::span<const uint16_t> write_counts() const { return writes_; }
 
  private:
   struct Column {
@@ -68,13 +70,13 @@ class Canvas {
   const level::Level* level_ = nullptr;
   const View* view_ = nullptr;
   Frame* frame_ = nullptr;
-  ColumnHits* hits_ = nullptr;
+  ColumnHits* hits_ = nullptr;         // from the probe, when asked for
+  std::vector<uint16_t>* writes_ = nullptr;
   std::vector<Column> columns_;
   std::vector<double> row_dy_;   // (y + 0.5) - H/2 per row
   std::vector<double> row_inv_;  // 1 / row_dy_
   uint64_t pixels_ = 0, closed_count_ = 0;
-  bool count_writes_ = false;
-  std::vector<uint16_t> writes_;
+  bool dry_ = false;  // clip_wall: compute rows, write nothing
 };
 
 }  // namespace p3d::render

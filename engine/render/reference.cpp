@@ -14,9 +14,9 @@ class Reference final : public Renderer {
  public:
   std::string_view name() const override { return "reference"; }
 
-  RenderStats render(const level::Level& level, const Camera& camera, Frame& frame, ColumnHits* hits) override {
+  RenderStats render(const level::Level& level, const Camera& camera, Frame& frame, Probe* probe) override {
     const View view(camera, frame.width, frame.height);
-    canvas_.begin(level, view, frame, level::sector_at_brute_force(level, camera.pos), hits);
+    canvas_.begin(level, view, frame, level::sector_at_brute_force(level, camera.pos), probe);
 
     walls_.clear();
     for (uint32_t i = 0; i < level.walls.size(); ++i) {

@@ -12,12 +12,16 @@ Camera camera_at(const level::Level& level, Vec2 pos, double angle, double eye_h
 }
 
 const std::vector<std::string>& renderer_names() {
-  static const std::vector<std::string> names = {"bsp", "reference"};
+  static const std::vector<std::string> names = {"bsp", "painter", "dda", "sphere", "sphere-naive", "reference"};
   return names;
 }
 
-std::unique_ptr<Renderer> make_renderer(std::string_view name) {
+std::unique_ptr<Renderer> make_renderer(std::string_view name, const RendererOptions& options) {
   if (name == "bsp") return make_bsp_front_to_back();
+  if (name == "painter") return make_painter();
+  if (name == "dda") return make_grid_ray_caster();
+  if (name == "sphere") return make_sphere_tracer(options, true);
+  if (name == "sphere-naive") return make_sphere_tracer(options, false);
   if (name == "reference") return make_reference();
   return nullptr;
 }

@@ -11,24 +11,36 @@
 
 namespace p3d::render {
 
+// Settings some renderers take; the rest ignore them.
+struct RendererOptions {
+  double sphere_epsilon = 0.1;     // map units: closer than this, a marching ray tests walls exactly
+  double sphere_relaxation = 1.6;  // over-relaxation factor omega in [1, 2); 1 is plain sphere tracing
+  int sphere_max_steps = 512;      // marching steps before a ray gives up (grazing rays)
+};
+
 class Renderer {
  public:
   virtual ~Renderer() = default;
   virtual std::string_view name() const = 0;
   // Whether this renderer can draw the level at all (the grid ray caster needs a grid map).
   virtual bool supports(const level::Level&) const { return true; }
+  // Builds per-level acceleration data ahead of time (otherwise the first render does).
+  virtual void prepare(const level::Level&) {}
   // Draws the level seen by the camera into frame (whose size is the resolution).
-  // hits, when given, receives the closing wall of every column.
+  // probe, when given, receives the optional outputs it asks for.
   virtual RenderStats render(const level::Level& level, const Camera& camera, Frame& frame,
-                             ColumnHits* hits = nullptr) = 0;
+                             Probe* probe = nullptr) = 0;
 };
 
 // nullptr for an unknown name.
-std::unique_ptr<Renderer> make_renderer(std::string_view name);
+std::unique_ptr<Renderer> make_renderer(std::string_view name, const RendererOptions& options = {});
 const std::vector<std::string>& renderer_names();
 
 // Internal factories, one per renderer file.
 std::unique_ptr<Renderer> make_bsp_front_to_back();
+std::unique_ptr<Renderer> make_painter();
+std::unique_ptr<Renderer> make_grid_ray_caster();
+std::unique_ptr<Renderer> make_sphere_tracer(const RendererOptions& options, bool accelerated);
 std::unique_ptr<Renderer> make_reference();
 
 }  // namespace p3d::render

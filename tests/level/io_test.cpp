@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "engine/level/format.h"
+#include "engine/map/source.h"
 #include "engine/level/io.h"
 #include "engine/util/bytes.h"
 #include "tests/support/support.h"
@@ -59,7 +60,7 @@ TEST_F(LevelIo, RejectsDamagedFiles) {
 
   std::vector<uint8_t> version(good);
   version[8] = 9;
-  EXPECT_EQ(decode_error(version), "x.bsp: compiled level version 9 is not supported (expected 1; recompile with mapc)");
+  EXPECT_EQ(decode_error(version), "x.bsp: compiled level version 9 is not supported (expected 2; recompile with mapc)");
 
   std::vector<uint8_t> truncated(good.begin(), good.begin() + good.size() / 2);
   EXPECT_NE(decode_error(truncated).find("x.bsp: truncated or padded file"), std::string::npos);
@@ -120,6 +121,26 @@ TEST_F(LevelIo, RejectsInconsistentStructure) {
     else
       EXPECT_NE(error, "(no error)") << c.name;
   }
+}
+
+TEST_F(LevelIo, GridRoundTripsAndIsValidated) {
+  Level grid = test::compile(map::load_grid(test::source_dir() / "maps/bunker.grid"));
+  const std::vector<uint8_t> bytes = encode(grid);
+  const Level back = decode(bytes, "x.bsp");
+  ASSERT_TRUE(back.grid.has_value());
+  EXPECT_EQ(back.grid->faces, grid.grid->faces);
+  EXPECT_EQ(back.grid->solid, grid.grid->solid);
+  // A face pointing at the wrong wall, and a solid tile left without its walls.
+  for (size_t i = 0; i < grid.grid->faces.size(); ++i)
+    if (grid.grid->faces[i] >= 0) {
+      Level copy = grid;
+      copy.grid->faces[i] = (copy.grid->faces[i] + 1) % int32_t(copy.walls.size());
+      EXPECT_EQ(decode_error(encode(copy)), "x.bsp: grid face wall does not lie along its face");
+      break;
+    }
+  Level copy = grid;
+  copy.grid->solid[size_t(copy.grid->rows / 2) * copy.grid->cols + copy.grid->cols / 2] ^= 1;
+  EXPECT_EQ(decode_error(encode(copy)), "x.bsp: grid face wall does not match the tiles");
 }
 
 TEST_F(LevelIo, TexturesAreColumnMajor) {

@@ -148,5 +148,72 @@ TEST_F(ParseTest, BadInputGivesLocatedMessages) {
   for (const BadCase& c : cases) EXPECT_EQ(error(c.text), c.message) << c.name;
 }
 
+const char* kGrid = R"(title Little grid
+cell 32
+texture wall wall.png
+texture flat flat.png
+floor 0 flat
+ceiling 64 flat
+tile W wall
+map
+WWWWW
+W>..W
+W.W.W
+W...W
+WWWWW
+end
+)";
+
+TEST_F(ParseTest, GridBecomesMergedWallsAndFaces) {
+  write_file_atomically(dir_ / "g.grid", kGrid);
+  const Source s = load_source(dir_ / "g.grid");
+  ASSERT_TRUE(s.grid.has_value());
+  EXPECT_EQ(s.grid->cols, 5);
+  EXPECT_EQ(s.grid->rows, 5);
+  EXPECT_EQ(s.player.pos, geom::Vec2(48, 112));  // tile (1, 3) from the south-west, facing east
+  EXPECT_EQ(s.player.angle, 0);
+  // The ring of empty tiles around the pillar: 4 outer runs of 3 tiles, 4 pillar faces.
+  EXPECT_EQ(s.walls.size(), 8u);
+  // Each empty tile's face towards a solid tile names a wall lying along it.
+  int faces = 0;
+  for (int r = 0; r < 5; ++r)
+    for (int c = 0; c < 5; ++c)
+      for (int f = 0; f < 4; ++f) {
+        const int32_t w = s.grid->faces[(size_t(r) * 5 + c) * 4 + f];
+        faces += w != kNone;
+        if (w != kNone) {
+          EXPECT_FALSE(s.grid->solid[size_t(r) * 5 + c]);
+        }
+      }
+  EXPECT_EQ(faces, 16);
+}
+
+TEST_F(ParseTest, BadGridsGiveLocatedMessages) {
+  const std::string head = "texture wall wall.png\ntexture flat flat.png\nfloor 0 flat\nceiling 64 flat\ntile W wall\n";
+  const std::vector<BadCase> cases = {
+      {"ragged", head + "map\nWWW\nW>W\nWW\nend\n", "DIR/g.grid:9: row has 2 tiles, expected 3"},
+      {"unknown tile", head + "map\nWWW\nW>X\nWWW\nend\n", "DIR/g.grid:8: unknown tile 'X' in column 3 (add 'tile X TEXTURE')"},
+      {"no player", head + "map\nWWW\nW.W\nWWW\nend\n", "DIR/g.grid: no player marker (> ^ < or v) in the map rows"},
+      {"two players", head + "map\nWWWW\nW><W\nWWWW\nend\n", "DIR/g.grid:8: a second player marker"},
+      {"no end", head + "map\nWWW\nW>W\n", "DIR/g.grid:6: map rows are not closed by a line 'end'"},
+      {"no floor", "texture wall wall.png\ntile W wall\nceiling 64 wall\nmap\nW>W\nend\n", "DIR/g.grid: no floor (add 'floor HEIGHT TEXTURE')"},
+      {"bad tile", head + "tile . wall\n", "DIR/g.grid:6: a tile is one character other than '.', space, '#', '=' and the player markers > ^ < v"},
+      {"statement after map", head + "map\nW>W\nend\nlight 3\n", "DIR/g.grid:9: statements must come before the map rows"},
+      {"cell", "cell 0\n", "DIR/g.grid:1: cell size '0' must be an integer from 1 to 4096"},
+  };
+  for (const BadCase& c : cases) {
+    write_file_atomically(dir_ / "g.grid", c.text);
+    std::string message = "(no error)";
+    try {
+      load_source(dir_ / "g.grid");
+    } catch (const Error& e) {
+      message = e.what();
+      const std::string d = dir_.string();
+      for (size_t at; (at = message.find(d)) != std::string::npos;) message.replace(at, d.size(), "DIR");
+    }
+    EXPECT_EQ(message, c.message) << c.name;
+  }
+}
+
 }  // namespace
 }  // namespace p3d::map

@@ -21,9 +21,11 @@ void compare_camera(const level::Level& level, const Camera& camera, int w, int 
   auto bsp = make_renderer("bsp");
   auto ref = make_renderer("reference");
   Frame a(w, h), b(w, h);
-  ColumnHits ha, hb;
-  const RenderStats sa = bsp->render(level, camera, a, &ha);
-  const RenderStats sb = ref->render(level, camera, b, &hb);
+  Probe pa, pb;
+  pa.want_columns = pb.want_columns = true;
+  const RenderStats sa = bsp->render(level, camera, a, &pa);
+  const RenderStats sb = ref->render(level, camera, b, &pb);
+  const ColumnHits &ha = pa.columns, &hb = pb.columns;
   ASSERT_EQ(ha.size(), size_t(w));
   // Front to back writes every pixel exactly once.
   EXPECT_EQ(sa.pixels_written, uint64_t(w) * h) << what;

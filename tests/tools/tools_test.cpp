@@ -96,11 +96,11 @@ TEST_F(Tools, DamagedLevelsAreRejected) {
   };
   std::vector<uint8_t> flipped = good, version = good;
   flipped[good.size() / 2] ^= 1;
-  version[8] = 2;
+  version[8] = 9;
   const std::vector<Case> cases = {
       {"truncated.bsp", std::vector<uint8_t>(good.begin(), good.begin() + good.size() - 100), "truncated or padded file"},
       {"corrupted.bsp", flipped, "checksum mismatch (the file is corrupted)"},
-      {"version.bsp", version, "compiled level version 2 is not supported"},
+      {"version.bsp", version, "compiled level version 9 is not supported"},
       {"text.bsp", std::vector<uint8_t>{'h', 'e', 'l', 'l', 'o'}, "not a compiled level"},
       {"empty.bsp", {}, "not a compiled level"},
   };
@@ -162,10 +162,67 @@ TEST_F(Tools, FormatExampleCompiles) {
       << o;
 }
 
+// compare on the bundled maps: its picture exists and decodes, its JSON lists every renderer.
+TEST_F(Tools, CompareDrawsEveryRendererOnTheBundledMaps) {
+  struct Case {
+    const char* map;
+    const char* pos;
+    size_t renderers;
+  };
+  for (const Case& c : {Case{"maps/outpost.map", "64,96", 5}, Case{"maps/bunker.grid", "352,720", 6},
+                        Case{"maps/soup.map", "0,0", 5}, Case{"maps/labyrinth.grid", "8416,7104", 6}}) {
+    std::string o;
+    ASSERT_EQ(run_in_source(tool("compare") + " " + c.map + " --pos " + c.pos + " --size 96x60 --frames 1 -o " +
+                                out("c.png") + " --json " + out("c.json") +
+                                (std::string(c.map).find("labyrinth") != std::string::npos ? " --renderers bsp,dda,sphere" : ""),
+                            o),
+              0)
+        << c.map << ": " << o;
+    const image::Image img = image::load_png(out("c.png"));
+    EXPECT_GE(img.width, 96 * 2) << c.map;
+    const std::string json = read_file_text(out("c.json"));
+    const size_t expected = std::string(c.map).find("labyrinth") != std::string::npos ? 4 : c.renderers;
+    size_t names = 0;
+    for (size_t at = 0; (at = json.find("\"name\"", at)) != std::string::npos; ++at) ++names;
+    EXPECT_EQ(names, expected) << c.map << "\n" << json;
+    EXPECT_NE(json.find("\"pixel_diff\": 0.000000"), std::string::npos) << c.map;
+  }
+  // Over a path, with medians.
+  std::string o;
+  ASSERT_EQ(run_in_source(tool("compare") + " maps/outpost.map --path maps/outpost.cameras --size 64x40 --frames 1 "
+                          "--renderers bsp,painter -o " + out("p.png"), o), 0) << o;
+  EXPECT_NE(o.find("7 cameras"), std::string::npos) << o;
+}
+
+TEST_F(Tools, MapcDrawsTheBspAsSvg) {
+  std::string o;
+  ASSERT_EQ(run_in_source(tool("mapc") + " maps/outpost.map -o " + out("o.bsp") + " --svg " + out("o.svg") +
+                              " --pos 64,96 --angle 30",
+                          o),
+            0)
+      << o;
+  const std::string svg = read_file_text(out("o.svg"));
+  EXPECT_EQ(svg.rfind("<svg ", 0), 0u);
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+  for (const char* group : {"leaves", "splitters", "walls", "split-points", "columns", "draw-order", "view-cone"})
+    EXPECT_NE(svg.find(std::string("id=\"") + group + "\""), std::string::npos) << group;
+  const level::Level level = level::read(out("o.bsp"));
+  EXPECT_EQ(size_t(std::count_if(svg.begin(), svg.end(), [](char ch) { return ch == '\n'; })) > level.leaves.size(), true);
+}
+
 TEST_F(Tools, GeneratedMapsCompile) {
   std::string o;
   ASSERT_EQ(run_in_source(tool("mapgen") + " rooms --walls 500 --seed 3 -o " + out("r.map"), o), 0) << o;
   ASSERT_EQ(run_in_source(tool("mapc") + " " + out("r.map") + " -o " + out("r.bsp") + " --check", o), 0) << o;
+  for (const char* kind : {"maze", "caves", "arena"}) {
+    ASSERT_EQ(run_in_source(tool("mapgen") + " " + kind + " --grid 40x30 -o " + out("g.grid"), o), 0) << o;
+    ASSERT_EQ(run_in_source(tool("mapc") + " " + out("g.grid") + " -o " + out("g.bsp") + " --check", o), 0) << kind << o;
+    ASSERT_EQ(test::run(tool("capture") + " " + out("g.bsp") + " --cameras " + test::source_dir().string() +
+                            "/tests/golden/outpost.cameras --renderer dda --size 32x20 -o " + dir_.string(),
+                        o),
+              0)
+        << o;
+  }
   ASSERT_EQ(run_in_source(tool("mapgen") + " soup --walls 500 -o " + out("s.map"), o), 0) << o;
   for (const char* strategy : {"first", "random", "freesplit", "greedy"})
     ASSERT_EQ(run_in_source(tool("mapc") + " " + out("s.map") + " -o " + out("s.bsp") + " --check --strategy " + strategy, o),

@@ -1,0 +1,296 @@
+// The .grid parser (Wolfenstein-style tile maps) and the conversion of a tile grid
+// into walls, so that the BSP renderer and the grid ray caster see the same level.
+#include <map>
+#include <unordered_map>
+
+#include "engine/map/statement.h"
+#include "engine/util/file.h"
+
+namespace p3d::map {
+
+using detail::Statement;
+
+namespace {
+
+constexpr int kMaxGridSide = 4096;
+constexpr int kFaceEast = 0, kFaceNorth = 1, kFaceWest = 2, kFaceSouth = 3;
+
+bool is_marker(char c) { return c == '>' || c == '^' || c == '<' || c == 'v'; }
+double marker_angle(char c) { return c == '>' ? 0 : c == '^' ? 90 : c == '<' ? 180 : 270; }
+bool is_empty_tile(char c) { return c == '.' || c == ' ' || is_marker(c); }
+
+class GridParser {
+ public:
+  explicit GridParser(const std::filesystem::path& path) { src_.path = path; }
+
+  Source run(const std::string& text) {
+    std::vector<std::string_view> lines;
+    for (size_t pos = 0; pos <= text.size();) {
+      size_t end = text.find('\n', pos);
+      if (end == std::string::npos) end = text.size();
+      std::string_view line(text.data() + pos, end - pos);
+      if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+      lines.push_back(line);
+      pos = end + 1;
+    }
+    size_t i = 0;
+    for (; i < lines.size(); ++i) {
+      const FileLoc loc{src_.path.string(), int(i) + 1};
+      if (lines[i].find('\0') != std::string_view::npos) throw Error(loc, "binary data in a text map");
+      auto words = detail::split_words(lines[i]);
+      if (words.empty()) continue;
+      if (words[0] == "map") {
+        if (words.size() != 1) throw Error(loc, "map: expected nothing after 'map'; the rows follow on the next lines");
+        map_line_ = int(i) + 1;
+        i = read_rows(lines, i + 1);
+        continue;
+      }
+      Statement s(loc, std::move(words));
+      statement(s);
+    }
+    finish();
+    return std::move(src_);
+  }
+
+ private:
+  void statement(Statement& s) {
+    const std::string_view k = s.keyword();
+    if (!tiles_.empty()) s.fail("statements must come before the map rows");
+    if (k == "title") {
+      std::string t;
+      for (size_t a = 0; a < s.arg_count(); ++a) {
+        if (a) t.push_back(' ');
+        t.append(s.arg(a));
+      }
+      src_.title = t;
+    } else if (k == "texture") {
+      s.expect_args(2, "texture NAME FILE.png");
+      const std::string name(s.arg(0));
+      if (name == "sky") s.fail("'sky' is reserved and cannot name a texture");
+      if (textures_.count(name)) s.fail("texture '" + name + "' is defined twice");
+      textures_[name] = int(src_.textures.size());
+      src_.textures.push_back(detail::load_texture(s, name, src_.path, s.arg(1)));
+    } else if (k == "sky") {
+      s.expect_args(1, "sky TEXTURE");
+      src_.sky_texture = texture_ref(s, s.arg(0));
+    } else if (k == "cell") {
+      s.expect_args(1, "cell SIZE");
+      cell_ = s.integer(s.arg(0), "cell size", 1, 4096);
+    } else if (k == "floor" || k == "ceiling") {
+      s.expect_args(2, k == "floor" ? "floor HEIGHT TEXTURE" : "ceiling HEIGHT TEXTURE|sky");
+      const double h = s.number(s.arg(0), std::string(k) + " height");
+      if (std::fabs(h) > geom::kMaxCoord) s.fail(std::string(k) + " height is out of range");
+      int tex;
+      if (k == "ceiling" && s.arg(1) == "sky") {
+        if (src_.sky_texture == kNone) s.fail("ceiling sky needs a 'sky TEXTURE' statement before it");
+        tex = kSkyTexture;
+      } else {
+        tex = texture_ref(s, s.arg(1));
+      }
+      (k == "floor" ? floor_ : ceiling_) = {h, tex, s.loc().line};
+    } else if (k == "light") {
+      s.expect_args(1, "light LEVEL");
+      light_ = s.integer(s.arg(0), "light", 0, 255);
+    } else if (k == "tile") {
+      s.expect_args(2, "tile CHARACTER TEXTURE");
+      if (s.arg(0).size() != 1 || is_empty_tile(s.arg(0)[0]) || s.arg(0)[0] == '#' || s.arg(0)[0] == '=')
+        s.fail("a tile is one character other than '.', space, '#', '=' and the player markers > ^ < v");
+      if (!legend_.emplace(s.arg(0)[0], texture_ref(s, s.arg(1))).second)
+        s.fail("tile '" + std::string(s.arg(0)) + "' is defined twice");
+    } else if (k == "thing") {
+      s.expect_args(4, "thing TYPE X Y ANGLE");
+      Thing t;
+      t.type = s.integer(s.arg(0), "thing type", 0, 1 << 30);
+      t.pos = geom::to_world({s.coordinate(s.arg(1), "x"), s.coordinate(s.arg(2), "y")});
+      t.angle = s.number(s.arg(3), "angle");
+      src_.things.push_back(t);
+    } else {
+      s.fail("unknown statement '" + std::string(k) + "'");
+    }
+    s.finish();
+  }
+
+  // Rows until "end"; the first row is the northernmost.
+  size_t read_rows(const std::vector<std::string_view>& lines, size_t i) {
+    std::vector<std::pair<std::string_view, int>> rows;
+    for (; i < lines.size(); ++i) {
+      std::string_view row = lines[i];
+      if (row == "end") break;
+      rows.push_back({row, int(i) + 1});
+    }
+    if (i == lines.size()) throw Error(FileLoc{src_.path.string(), map_line_}, "map rows are not closed by a line 'end'");
+    if (rows.empty()) throw Error(FileLoc{src_.path.string(), map_line_}, "the map has no rows");
+    cols_ = int(rows.front().first.size());
+    rows_ = int(rows.size());
+    if (cols_ == 0) throw Error(FileLoc{src_.path.string(), rows.front().second}, "the first row is empty");
+    if (cols_ > kMaxGridSide || rows_ > kMaxGridSide)
+      throw Error(FileLoc{src_.path.string(), map_line_}, "the grid is larger than " + std::to_string(kMaxGridSide) + "x" +
+                                                           std::to_string(kMaxGridSide));
+    if (double(std::max(cols_, rows_)) * cell_ > geom::kMaxCoord)
+      throw Error(FileLoc{src_.path.string(), map_line_}, "the grid does not fit in the coordinate range");
+    tiles_.assign(size_t(cols_) * rows_, '.');
+    row_lines_.resize(rows_);
+    for (int k = 0; k < rows_; ++k) {
+      const auto& [text, line] = rows[k];
+      const int r = rows_ - 1 - k;  // row 0 is the south
+      row_lines_[r] = line;
+      if (int(text.size()) != cols_)
+        throw Error(FileLoc{src_.path.string(), line}, "row has " + std::to_string(text.size()) + " tiles, expected " +
+                                                        std::to_string(cols_));
+      for (int c = 0; c < cols_; ++c) {
+        const char t = text[c];
+        if (!is_empty_tile(t) && !legend_.count(t))
+          throw Error(FileLoc{src_.path.string(), line},
+                      "unknown tile '" + std::string(1, t) + "' in column " + std::to_string(c + 1) +
+                          " (add 'tile " + std::string(1, t) + " TEXTURE')");
+        if (is_marker(t)) {
+          if (have_player_) throw Error(FileLoc{src_.path.string(), line}, "a second player marker");
+          have_player_ = true;
+          src_.player = {{(c + 0.5) * cell_, (r + 0.5) * cell_}, marker_angle(t), FileLoc{src_.path.string(), line}};
+        }
+        tiles_[size_t(r) * cols_ + c] = t;
+      }
+    }
+    return i;
+  }
+
+  void finish() {
+    const FileLoc file{src_.path.string(), 0};
+    if (tiles_.empty()) throw Error(file, "no map rows (add 'map', the rows, then 'end')");
+    if (!have_player_) throw Error(file, "no player marker (> ^ < or v) in the map rows");
+    if (floor_.texture == kNone) throw Error(file, "no floor (add 'floor HEIGHT TEXTURE')");
+    if (ceiling_.texture == kNone) throw Error(file, "no ceiling (add 'ceiling HEIGHT TEXTURE')");
+    if (legend_.empty()) throw Error(file, "no tiles (add 'tile CHARACTER TEXTURE')");
+    if (ceiling_.height < floor_.height) throw Error(FileLoc{src_.path.string(), ceiling_.line}, "ceiling is below the floor");
+
+    Sector sector;
+    sector.name = "floor";
+    sector.floor = floor_.height;
+    sector.ceiling = ceiling_.height;
+    sector.light = light_;
+    sector.floor_texture = floor_.texture;
+    sector.ceiling_texture = ceiling_.texture;
+    sector.loc = FileLoc{src_.path.string(), floor_.line};
+    src_.sectors.push_back(sector);
+
+    GridInfo grid;
+    grid.cols = cols_;
+    grid.rows = rows_;
+    grid.cell = cell_;
+    grid.solid.resize(tiles_.size());
+    std::vector<int> tile_texture(tiles_.size(), kNone);
+    for (size_t i = 0; i < tiles_.size(); ++i) {
+      grid.solid[i] = !is_empty_tile(tiles_[i]);
+      if (grid.solid[i]) tile_texture[i] = legend_.at(tiles_[i]);
+    }
+    grid_to_walls(src_, grid, tile_texture, legend_.begin()->second, 0);
+    for (Wall& w : src_.walls) w.loc = FileLoc{src_.path.string(), map_line_};
+  }
+
+  int texture_ref(const Statement& s, std::string_view name) const {
+    auto it = textures_.find(std::string(name));
+    if (it == textures_.end()) s.fail("unknown texture '" + std::string(name) + "'");
+    return it->second;
+  }
+
+  struct Plane {
+    double height = 0;
+    int texture = kNone;
+    int line = 0;
+  };
+
+  Source src_;
+  std::unordered_map<std::string, int> textures_;
+  std::map<char, int> legend_;  // ordered: the first tile textures the border
+  double cell_ = 64;
+  int light_ = 192;
+  Plane floor_, ceiling_;
+  int cols_ = 0, rows_ = 0, map_line_ = 0;
+  std::vector<char> tiles_;
+  std::vector<int> row_lines_;
+  bool have_player_ = false;
+};
+
+}  // namespace
+
+void grid_to_walls(Source& src, const GridInfo& g, const std::vector<int>& tile_texture, int border_texture, int sector) {
+  GridInfo grid = g;
+  grid.faces.assign(size_t(grid.cols) * grid.rows * 4, kNone);
+  std::unordered_map<int64_t, int> vertex_at;
+  auto vertex = [&](int gx, int gy) {
+    const int64_t key = int64_t(gx) * (grid.rows + 1) + gy;
+    auto [it, added] = vertex_at.try_emplace(key, int(src.vertices.size()));
+    if (added) {
+      int64_t x = 0, y = 0;
+      geom::to_fixed(gx * grid.cell, x);
+      geom::to_fixed(gy * grid.cell, y);
+      src.vertices.push_back({"g" + std::to_string(gx) + "_" + std::to_string(gy), {x, y}, {}});
+    }
+    return it->second;
+  };
+  auto texture_of = [&](int c, int r) {
+    return c < 0 || r < 0 || c >= grid.cols || r >= grid.rows ? border_texture : tile_texture[size_t(r) * grid.cols + c];
+  };
+  auto add_wall = [&](int v1, int v2, int texture) {
+    Wall w;
+    w.v1 = v1;
+    w.v2 = v2;
+    w.front.sector = sector;
+    w.front.middle = texture;
+    src.walls.push_back(w);
+    return int(src.walls.size() - 1);
+  };
+  auto set_face = [&](int c, int r, int face, int wall) { grid.faces[(size_t(r) * grid.cols + c) * 4 + face] = wall; };
+
+  // Horizontal grid lines y = r: the empty cell above (north) or below (south) gets a wall facing it.
+  for (int r = 0; r <= grid.rows; ++r)
+    for (int c = 0; c < grid.cols;) {
+      const bool above = !grid.is_solid(c, r), below = !grid.is_solid(c, r - 1);
+      if (above == below) {
+        ++c;
+        continue;
+      }
+      const int texture = above ? texture_of(c, r - 1) : texture_of(c, r);
+      int end = c + 1;
+      while (end < grid.cols && !grid.is_solid(end, r) == above && !grid.is_solid(end, r - 1) == below &&
+             (above ? texture_of(end, r - 1) : texture_of(end, r)) == texture)
+        ++end;
+      const int wall = above ? add_wall(vertex(end, r), vertex(c, r), texture)   // walking west: north on the right
+                             : add_wall(vertex(c, r), vertex(end, r), texture);  // walking east: south on the right
+      for (int k = c; k < end; ++k) above ? set_face(k, r, kFaceSouth, wall) : set_face(k, r - 1, kFaceNorth, wall);
+      c = end;
+    }
+  // Vertical grid lines x = c: the empty cell to the east or west.
+  for (int c = 0; c <= grid.cols; ++c)
+    for (int r = 0; r < grid.rows;) {
+      const bool east = !grid.is_solid(c, r), west = !grid.is_solid(c - 1, r);
+      if (east == west) {
+        ++r;
+        continue;
+      }
+      const int texture = east ? texture_of(c - 1, r) : texture_of(c, r);
+      int end = r + 1;
+      while (end < grid.rows && !grid.is_solid(c, end) == east && !grid.is_solid(c - 1, end) == west &&
+             (east ? texture_of(c - 1, end) : texture_of(c, end)) == texture)
+        ++end;
+      const int wall = east ? add_wall(vertex(c, r), vertex(c, end), texture)   // walking north: east on the right
+                            : add_wall(vertex(c, end), vertex(c, r), texture);  // walking south: west on the right
+      for (int k = r; k < end; ++k) east ? set_face(c, k, kFaceWest, wall) : set_face(c - 1, k, kFaceEast, wall);
+      r = end;
+    }
+  src.grid = std::move(grid);
+}
+
+Source parse_grid(const std::string& text, const std::filesystem::path& path) { return GridParser(path).run(text); }
+
+Source load_grid(const std::filesystem::path& path) {
+  Source source = parse_grid(read_file_text(path), path);
+  validate(source);
+  return source;
+}
+
+Source load_source(const std::filesystem::path& path) {
+  return path.extension() == ".grid" ? load_grid(path) : load_map(path);
+}
+
+}  // namespace p3d::map

@@ -1,0 +1,110 @@
+// Statement-level parsing shared by the .map and .grid parsers: words, positional
+// arguments, key=value options consumed exactly once, numbers with located errors.
+#pragma once
+
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "engine/map/source.h"
+
+namespace p3d::map::detail {
+
+class Statement {
+ public:
+  Statement(const FileLoc& loc, std::vector<std::string_view> words) : loc_(loc) {
+    keyword_ = words.front();
+    for (size_t i = 1; i < words.size(); ++i) {
+      const size_t eq = words[i].find('=');
+      if (eq == std::string_view::npos) {
+        if (!options_.empty()) fail("positional argument '" + std::string(words[i]) + "' after key=value options");
+        args_.push_back(words[i]);
+      } else {
+        const std::string key(words[i].substr(0, eq));
+        if (key.empty()) fail("missing key before '=' in '" + std::string(words[i]) + "'");
+        if (!options_.emplace(key, words[i].substr(eq + 1)).second) fail("option '" + key + "' given twice");
+      }
+    }
+  }
+
+  std::string_view keyword() const { return keyword_; }
+  const FileLoc& loc() const { return loc_; }
+  [[noreturn]] void fail(const std::string& message) const { throw Error(loc_, message); }
+
+  void expect_args(size_t n, const char* usage) const {
+    if (args_.size() != n) fail(std::string(keyword_) + ": expected " + usage);
+  }
+  std::string_view arg(size_t i) const { return args_[i]; }
+  size_t arg_count() const { return args_.size(); }
+
+  double number(std::string_view text, const std::string& what) const {
+    double v = 0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+    if (ec == std::errc::result_out_of_range) fail(what + " '" + std::string(text) + "' is out of range");
+    if (ec != std::errc() || ptr != end) fail(what + " '" + std::string(text) + "' is not a number");
+    if (!std::isfinite(v)) fail(what + " '" + std::string(text) + "' is not finite");
+    return v;
+  }
+  int integer(std::string_view text, const std::string& what, int lo, int hi) const {
+    const double v = number(text, what);
+    if (v != std::floor(v) || v < lo || v > hi)
+      fail(what + " '" + std::string(text) + "' must be an integer from " + std::to_string(lo) + " to " +
+           std::to_string(hi));
+    return static_cast<int>(v);
+  }
+  int64_t coordinate(std::string_view text, const char* axis) const {
+    int64_t fixed = 0;
+    if (!geom::to_fixed(number(text, std::string(axis) + " coordinate"), fixed))
+      fail(std::string(axis) + " coordinate '" + std::string(text) + "' is outside +-" +
+           std::to_string(static_cast<int64_t>(geom::kMaxCoord)));
+    return fixed;
+  }
+
+  // Options: each must be consumed exactly once; leftovers are reported as unknown.
+  std::optional<std::string_view> take(const std::string& key) {
+    auto it = options_.find(key);
+    if (it == options_.end()) return std::nullopt;
+    std::string_view v = it->second;
+    options_.erase(it);
+    return v;
+  }
+  std::string_view require(const std::string& key) {
+    auto v = take(key);
+    if (!v) fail(std::string(keyword_) + ": missing option " + key + "=");
+    return *v;
+  }
+  void finish() const {
+    if (!options_.empty()) fail(std::string(keyword_) + ": unknown option '" + options_.begin()->first + "'");
+  }
+
+ private:
+  FileLoc loc_;
+  std::string_view keyword_;
+  std::vector<std::string_view> args_;
+  std::map<std::string, std::string_view> options_;  // ordered: deterministic messages
+};
+
+inline std::vector<std::string_view> split_words(std::string_view line) {
+  std::vector<std::string_view> words;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    if (i >= line.size() || line[i] == '#') break;
+    const size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r' && line[i] != '#') ++i;
+    words.push_back(line.substr(start, i - start));
+  }
+  return words;
+}
+
+// Loads a texture statement's PNG (relative to the map's directory) and checks its size.
+Texture load_texture(const Statement& s, const std::string& name, const std::filesystem::path& map_path,
+                     std::string_view file);
+
+}  // namespace p3d::map::detail

@@ -1,0 +1,111 @@
+// The painter's algorithm on the BSP (de Berg's PaintersAlgorithm): walk the tree
+// far subtree first and paint every visible fragment over whatever is behind it.
+// No occlusion array, so everything in the view cone is drawn: its overdraw is
+// what the front-to-back renderer saves. Only boxes outside the view cone are skipped.
+#include <algorithm>
+
+#include "engine/render/draw.h"
+#include "engine/render/renderer.h"
+
+namespace p3d::render {
+
+namespace {
+
+class Painter final : public Renderer {
+ public:
+  std::string_view name() const override { return "painter"; }
+
+  RenderStats render(const level::Level& level, const Camera& camera, Frame& frame, Probe* probe) override {
+    const View view(camera, frame.width, frame.height);
+    const int camera_sector = level.sector_at(camera.pos);
+    canvas_.begin(level, view, frame, camera_sector, probe);
+    painted_.assign(view.width, false);
+    record_ = probe && probe->want_columns;
+    if (record_) column_hits_.assign(view.width, {});
+    order_ = probe && probe->want_order ? &probe->order : nullptr;
+    if (order_) order_->clear();
+    RenderStats stats;
+
+    stack_.assign(1, {0, false});
+    while (!stack_.empty()) {
+      const Item item = stack_.back();
+      stack_.pop_back();
+      if (level::is_leaf(item.child)) continue;
+      const level::Node& node = level.nodes[item.child];
+      if (item.draw_fragments) {
+        paint_fragments(level, view, node, stats);
+        continue;
+      }
+      if (columns_of_box(view, node.bbox).empty()) {  // outside the view cone: not occlusion
+        ++stats.subtrees_culled;
+        continue;
+      }
+      ++stats.nodes_visited;
+      const int near = level::splitter_side(node, camera.pos) > 0 ? 1 : 0;
+      stack_.push_back({node.child[near], false});  // last: nearest paints over everything
+      stack_.push_back({item.child, true});
+      stack_.push_back({node.child[1 - near], false});
+    }
+    for (int x = 0; x < view.width; ++x)
+      if (!painted_[x]) canvas_.paint_background(x, camera_sector);
+    if (record_) replay_front_to_back(view.width);
+
+    stats.pixels_written = canvas_.pixels_written();
+    stats.columns_closed = canvas_.columns_closed();
+    return stats;
+  }
+
+ private:
+  struct Item {
+    int32_t child;
+    bool draw_fragments;
+  };
+
+  void paint_fragments(const level::Level& level, const View& view, const level::Node& node, RenderStats& stats) {
+    for (uint32_t i = node.first_fragment; i < node.first_fragment + node.fragment_count; ++i) {
+      const level::Fragment& f = level.fragments[i];
+      const level::Wall& wall = level.walls[f.wall];
+      const int side = facing_side(wall, view.pos);
+      if (side < 0 || !visible_side(wall, side)) continue;
+      const ColumnRange range = columns_of_segment(view, f.p0, f.p1);
+      if (range.empty()) continue;
+      const WallProjector projector(view, wall.a, wall.b);
+      bool drew = false;
+      for (int x = range.x0; x <= range.x1; ++x) {
+        double depth, t;
+        if (!projector.hit(x, depth, t) || t < f.t0 || t > f.t1) continue;
+        const WallHit hit{f.wall, side, depth, t, int32_t(i)};
+        if (!painted_[x]) {  // the farthest hit of this column: first the view beyond it
+          painted_[x] = true;
+          if (wall.two_sided()) canvas_.paint_background(x, wall.sides[1 - side].sector);
+        }
+        canvas_.paint_wall(x, hit);
+        if (record_) column_hits_[x].push_back(hit);
+        drew = true;
+      }
+      stats.fragments_drawn += drew;
+      if (drew && order_) order_->push_back(i);
+    }
+  }
+
+  // The painter's hits arrive far to near; replaying them near to far through the
+  // canvas's clipping (no pixels) finds the wall that closes each column.
+  void replay_front_to_back(int width) {
+    for (int x = 0; x < width; ++x)
+      for (auto it = column_hits_[x].rbegin(); it != column_hits_[x].rend(); ++it)
+        if (canvas_.clip_wall(x, *it)) break;
+  }
+
+  Canvas canvas_;
+  std::vector<Item> stack_;
+  std::vector<bool> painted_;
+  bool record_ = false;
+  std::vector<std::vector<WallHit>> column_hits_;
+  std::vector<uint32_t>* order_ = nullptr;
+};
+
+}  // namespace
+
+std::unique_ptr<Renderer> make_painter() { return std::make_unique<Painter>(); }
+
+}  // namespace p3d::render
