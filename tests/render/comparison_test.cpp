@@ -135,7 +135,7 @@ TEST(SphereTracer, AgreesWithTheReferenceWhereWallsAreApart) {
   RendererOptions options;
   options.sphere_epsilon = 0.05;
   for (const char* mode : {"sphere", "sphere-naive"}) {
-    size_t checked = 0, skipped = 0;
+    size_t checked = 0, skipped = 0, pixels = 0, pixels_differ = 0;
     uint64_t max_steps = 0;
     for (const auto& [name, level] : levels) {
       Rng rng(17);
@@ -145,6 +145,8 @@ TEST(SphereTracer, AgreesWithTheReferenceWhereWallsAreApart) {
         const Rendered s = render_with(mode, level, c, w, h, options), ref = render_with("reference", level, c, w, h);
         const View view(c, w, h);
         max_steps = std::max(max_steps, s.stats.max_steps);
+        for (size_t p = 0; p < s.frame.pixels.size(); ++p) pixels_differ += s.frame.pixels[p] != ref.frame.pixels[p];
+        pixels += s.frame.pixels.size();
         EXPECT_EQ(s.stats.rays, uint64_t(w));
         for (int x = 0; x < w; ++x) {
           const ColumnHit& want = ref.probe.columns[x];
@@ -161,9 +163,11 @@ TEST(SphereTracer, AgreesWithTheReferenceWhereWallsAreApart) {
         }
       }
     }
-    std::printf("[ stats    ] %s: %zu columns checked, %zu skipped (walls within epsilon), max steps %llu\n", mode,
-                checked, skipped, (unsigned long long)max_steps);
+    std::printf("[ stats    ] %s: %zu columns checked, %zu skipped (walls within epsilon), max steps %llu, "
+                "%zu/%zu pixels differ\n",
+                mode, checked, skipped, (unsigned long long)max_steps, pixels_differ, pixels);
     EXPECT_GT(checked, 10 * skipped);
+    EXPECT_GE(1.0 - double(pixels_differ) / double(pixels), 0.995) << mode;
   }
 }
 
