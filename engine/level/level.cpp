@@ -122,6 +122,18 @@ int sector_at_brute_force(const Level& level, Vec2 p) {
   return level.default_sector;
 }
 
+std::vector<Vec2> cell_at(const Level& level, Vec2 p, const BBox& bounds) {
+  geom::Polygon poly = geom::box_polygon(bounds);
+  int32_t c = 0;
+  while (!is_leaf(c) && !poly.empty()) {
+    const Node& n = level.nodes[c];
+    const bool back = splitter_side(n, p) > 0;
+    poly = geom::clip_polygon(poly, n.origin, n.direction, back ? +1 : -1);
+    c = n.child[back ? 1 : 0];
+  }
+  return poly;
+}
+
 std::vector<Chord> node_chords(const Level& level, const BBox& bounds) {
   std::vector<Chord> chords(level.nodes.size());
   std::vector<std::pair<int32_t, geom::Polygon>> stack{{0, geom::box_polygon(bounds)}};

@@ -161,6 +161,10 @@ int sector_at_brute_force(const Level& level, Vec2 p);
 // The convex cell of every leaf, clipped to `bounds` (for drawing and checks).
 std::vector<std::vector<Vec2>> leaf_cells(const Level& level, const BBox& bounds);
 
+// The convex cell of the leaf containing p (clipped to `bounds`): point location
+// that keeps the polygon, for highlighting the player's leaf.
+std::vector<Vec2> cell_at(const Level& level, Vec2 p, const BBox& bounds);
+
 // For every node, the piece of its splitter line inside its cell (clipped to `bounds`).
 struct Chord {
   Vec2 a, b;

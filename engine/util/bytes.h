@@ -16,6 +16,7 @@ namespace p3d {
 class ByteWriter {
  public:
   void u8(uint8_t v) { out_.push_back(v); }
+  void u16(uint16_t v) { put(v); }
   void u32(uint32_t v) { put(v); }
   void i32(int32_t v) { put(static_cast<uint32_t>(v)); }
   void u64(uint64_t v) { put(v); }
@@ -46,6 +47,7 @@ class ByteReader {
   ByteReader(std::span<const uint8_t> bytes, std::string what) : bytes_(bytes), what_(std::move(what)) {}
 
   uint8_t u8() { return static_cast<uint8_t>(get<uint8_t>()); }
+  uint16_t u16() { return get<uint16_t>(); }
   uint32_t u32() { return get<uint32_t>(); }
   int32_t i32() { return static_cast<int32_t>(get<uint32_t>()); }
   uint64_t u64() { return get<uint64_t>(); }

@@ -6,6 +6,7 @@
 #include "engine/map/source.h"
 #include "engine/level/io.h"
 #include "engine/util/bytes.h"
+#include "engine/util/rng.h"
 #include "tests/support/support.h"
 
 namespace p3d::level {
@@ -141,6 +142,19 @@ TEST_F(LevelIo, GridRoundTripsAndIsValidated) {
   Level copy = grid;
   copy.grid->solid[size_t(copy.grid->rows / 2) * copy.grid->cols + copy.grid->cols / 2] ^= 1;
   EXPECT_EQ(decode_error(encode(copy)), "x.bsp: grid face wall does not match the tiles");
+}
+
+TEST_F(LevelIo, CellAtIsTheLeafCellOfThePoint) {
+  const geom::BBox box{level_->bounds.min - geom::Vec2(10), level_->bounds.max + geom::Vec2(10)};
+  const auto cells = leaf_cells(*level_, box);
+  Rng rng(2);
+  for (int i = 0; i < 200; ++i) {
+    const geom::Vec2 p{rng.uniform(box.min.x, box.max.x), rng.uniform(box.min.y, box.max.y)};
+    const auto cell = cell_at(*level_, p, box);
+    EXPECT_EQ(cell, cells[level_->leaf_at(p)]);
+    for (size_t k = 0; k < cell.size(); ++k)  // convex and counter-clockwise: p is left of every edge
+      EXPECT_GE(geom::cross(cell[(k + 1) % cell.size()] - cell[k], p - cell[k]), -1e-9);
+  }
 }
 
 TEST_F(LevelIo, TexturesAreColumnMajor) {

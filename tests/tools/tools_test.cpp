@@ -210,6 +210,44 @@ TEST_F(Tools, MapcDrawsTheBspAsSvg) {
   EXPECT_EQ(size_t(std::count_if(svg.begin(), svg.end(), [](char ch) { return ch == '\n'; })) > level.leaves.size(), true);
 }
 
+#ifdef P3D_GAME
+// The game under SDL's dummy video driver (no display, no GPU): it plays the
+// bundled demo through to the end and exits 0; headless replays are byte-identical;
+// bad demos are refused.
+TEST_F(Tools, GamePlaysTheBundledDemoWithoutADisplay) {
+  std::string o;
+  const std::string game = std::string("SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy ") + P3D_GAME;
+  ASSERT_EQ(run_in_source(game + " maps/outpost.map --play maps/outpost.demo --timedemo --window 320x200", o), 0) << o;
+  EXPECT_NE(o.find("661 tics, 66"), std::string::npos) << o << " (one frame per tic, plus the first)";
+  ASSERT_EQ(run_in_source(game + " maps/bunker.grid --renderer dda --resolution 160x100 --quit-after-tics 35 --no-vsync", o), 0)
+      << o;
+}
+
+TEST_F(Tools, HeadlessReplayWritesTheSameFramesEveryTime) {
+  std::string o;
+  for (const char* run : {"a", "b"})
+    ASSERT_EQ(run_in_source(std::string(P3D_GAME) + " maps/outpost.map --play maps/outpost.demo --headless "
+                            "--capture-every 150 --resolution 160x100 --out " + out(run), o), 0) << o;
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(out("a"))) {
+    EXPECT_EQ(read_file_bytes(entry.path()), read_file_bytes(out("b") + "/" + entry.path().filename().string()));
+    ++files;
+  }
+  EXPECT_EQ(files, 5 + 1) << "frames at tics 0, 150, 300, 450, 600 and stats.csv";
+
+  std::vector<uint8_t> demo = read_file_bytes(test::source_dir() / "maps/outpost.demo");
+  demo[demo.size() / 2] ^= 1;
+  write_file_atomically(out("bad.demo"), demo);
+  EXPECT_EQ(run_in_source(std::string(P3D_GAME) + " maps/outpost.map --play " + out("bad.demo") + " --headless --out " +
+                              out("c"), o), 1);
+  EXPECT_NE(o.find("checksum mismatch"), std::string::npos) << o;
+  EXPECT_EQ(run_in_source(std::string(P3D_GAME) + " maps/soup.map --play maps/outpost.demo --headless --out " + out("c"), o), 1);
+  EXPECT_NE(o.find("recorded on a different level"), std::string::npos) << o;
+  EXPECT_EQ(run_in_source(std::string(P3D_GAME) + " maps/outpost.map --headless", o), 2);
+  EXPECT_FALSE(std::filesystem::exists(out("c")));
+}
+#endif
+
 TEST_F(Tools, GeneratedMapsCompile) {
   std::string o;
   ASSERT_EQ(run_in_source(tool("mapgen") + " rooms --walls 500 --seed 3 -o " + out("r.map"), o), 0) << o;

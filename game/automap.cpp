@@ -1,0 +1,90 @@
+#include "game/automap.h"
+
+#include <cmath>
+
+#include "engine/image/draw2d.h"
+
+namespace p3d::game {
+
+namespace {
+
+// Red (first drawn) through yellow and green to violet (last).
+uint32_t order_colour(size_t k, size_t n) {
+  const double h = 280.0 * double(k) / double(std::max<size_t>(n, 2) - 1) / 60.0;
+  const double x = 1 - std::fabs(std::fmod(h, 2.0) - 1);
+  double r = 0, g = 0, b = 0;
+  switch (int(h)) {
+    case 0: r = 1, g = x; break;
+    case 1: r = x, g = 1; break;
+    case 2: g = 1, b = x; break;
+    case 3: g = x, b = 1; break;
+    default: r = x, b = 1; break;
+  }
+  return image::rgba(uint32_t(60 + 195 * r), uint32_t(60 + 195 * g), uint32_t(60 + 195 * b));
+}
+
+}  // namespace
+
+void Automap::set_level(const level::Level& level) {
+  bounds_ = level.bounds;
+  bounds_.min -= geom::Vec2(64);
+  bounds_.max += geom::Vec2(64);
+  chords_ = level::node_chords(level, bounds_);
+}
+
+void Automap::draw(render::Frame& frame, const level::Level& level, const render::Camera& camera,
+                   const std::vector<uint32_t>& draw_order, const AutomapSettings& settings) const {
+  const double scale = settings.scale * frame.width / 640.0;
+  const geom::Vec2 centre{frame.width / 2.0, frame.height / 2.0};
+  auto screen = [&](geom::Vec2 p) { return geom::Vec2{centre.x + (p.x - camera.pos.x) * scale, centre.y - (p.y - camera.pos.y) * scale}; };
+  // The part of the world on screen, to skip everything else cheaply on big maps.
+  const geom::Vec2 half{frame.width / (2 * scale), frame.height / (2 * scale)};
+  geom::BBox view;
+  view.add(camera.pos - half);
+  view.add(camera.pos + half);
+  auto visible = [&](geom::Vec2 a, geom::Vec2 b) {
+    return std::max(a.x, b.x) >= view.min.x && std::min(a.x, b.x) <= view.max.x && std::max(a.y, b.y) >= view.min.y &&
+           std::min(a.y, b.y) <= view.max.y;
+  };
+
+  image::fill_rect(frame, 0, 0, frame.width, frame.height, image::rgba(0, 0, 0), 190);
+  std::vector<geom::Vec2> leaf = level::cell_at(level, camera.pos, bounds_);
+  for (geom::Vec2& p : leaf) p = screen(p);
+  image::fill_convex(frame, leaf, image::rgba(230, 200, 60), 70);
+  if (settings.splitters)
+    for (const level::Chord& c : chords_)
+      if (!c.empty && visible(c.a, c.b)) image::draw_line(frame, screen(c.a), screen(c.b), image::rgba(70, 110, 220), 110);
+  for (const level::Wall& w : level.walls) {
+    if (!visible(w.a, w.b)) continue;
+    uint32_t colour = image::rgba(230, 230, 230);
+    if (w.segment()) colour = image::rgba(90, 200, 230);
+    else if (w.two_sided()) {
+      const level::Sector& f = level.sectors[w.sides[0].sector];
+      const level::Sector& b = level.sectors[w.sides[1].sector];
+      colour = f.floor != b.floor ? image::rgba(200, 150, 80) : f.ceiling != b.ceiling ? image::rgba(220, 220, 90)
+                                                                                       : image::rgba(110, 110, 110);
+    }
+    image::draw_line(frame, screen(w.a), screen(w.b), colour);
+  }
+  for (size_t k = 0; k < draw_order.size(); ++k) {  // the last frame's fragments, in the order drawn
+    if (draw_order[k] >= level.fragments.size()) continue;
+    const level::Fragment& f = level.fragments[draw_order[k]];
+    const geom::Vec2 a = screen(f.p0), b = screen(f.p1), n = glm::length(b - a) > 0 ? glm::normalize(b - a) : geom::Vec2(0);
+    for (int offset : {-1, 0, 1})
+      image::draw_line(frame, a + geom::Vec2(-n.y, n.x) * double(offset), b + geom::Vec2(-n.y, n.x) * double(offset),
+                       order_colour(k, draw_order.size()));
+  }
+  const double angle = camera.angle * M_PI / 180, half_fov = camera.fov * M_PI / 360;
+  const double reach = 2 * std::max(frame.width, frame.height);
+  for (double side : {-1.0, 1.0}) {
+    const double a = angle + side * half_fov;
+    image::draw_line(frame, centre, centre + geom::Vec2(std::cos(a), -std::sin(a)) * reach, image::rgba(120, 230, 120), 150);
+  }
+  const geom::Vec2 tip = centre + geom::Vec2(std::cos(angle), -std::sin(angle)) * 10.0;
+  for (double side : {-2.5, 2.5})
+    image::draw_line(frame, tip, centre + geom::Vec2(std::cos(angle + side), -std::sin(angle + side)) * 6.0,
+                     image::rgba(120, 255, 120));
+  image::draw_line(frame, centre, tip, image::rgba(120, 255, 120));
+}
+
+}  // namespace p3d::game

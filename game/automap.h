@@ -1,0 +1,30 @@
+// The automap overlay: walls from above around the player (north up), the BSP's
+// splitting lines, the player's leaf, the view cone, and the fragments the last
+// frame drew, coloured in draw order.
+#pragma once
+
+#include <vector>
+
+#include "engine/level/level.h"
+#include "engine/render/camera.h"
+
+namespace p3d::game {
+
+struct AutomapSettings {
+  double scale = 0.5;      // pixels per map unit (at a 640-pixel-wide frame)
+  bool splitters = true;   // draw the BSP's splitting lines
+};
+
+class Automap {
+ public:
+  // Caches what depends only on the level (the splitters' chords).
+  void set_level(const level::Level& level);
+  void draw(render::Frame& frame, const level::Level& level, const render::Camera& camera,
+            const std::vector<uint32_t>& draw_order, const AutomapSettings& settings) const;
+
+ private:
+  std::vector<level::Chord> chords_;
+  geom::BBox bounds_;
+};
+
+}  // namespace p3d::game

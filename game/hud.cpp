@@ -1,0 +1,59 @@
+#include "game/hud.h"
+
+#include <cstdio>
+
+#include "engine/image/draw2d.h"
+#include "engine/image/font.h"
+
+namespace p3d::game {
+
+namespace {
+
+std::string format(const char* fmt, auto... args) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, fmt, args...);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<std::string> hud_lines(std::string_view title, std::string_view renderer, const render::RenderStats& s,
+                                   const FrameTimes& t, const sim::Player& p) {
+  std::vector<std::string> lines;
+  lines.push_back(format("%.*s  %.0f fps  %.2f ms (sim %.2f, render %.2f, present %.2f)", int(title.size()), title.data(),
+                         t.fps, t.frame_ms, t.sim_ms, t.render_ms, t.present_ms));
+  std::string stats = format("%.*s: ", int(renderer.size()), renderer.data());
+  if (s.nodes_visited || s.subtrees_culled)
+    stats += format("nodes %llu  culled %llu  fragments %llu  ", (unsigned long long)s.nodes_visited,
+                    (unsigned long long)s.subtrees_culled, (unsigned long long)s.fragments_drawn);
+  if (s.rays) stats += format("rays %llu  steps/ray %.1f  ", (unsigned long long)s.rays, double(s.steps) / double(s.rays));
+  stats += format("columns closed %llu  pixels %llu%s", (unsigned long long)s.columns_closed,
+                  (unsigned long long)s.pixels_written, s.early_exit ? "  early exit" : "");
+  lines.push_back(stats);
+  lines.push_back(format("x %.1f  y %.1f  z %.1f  angle %.1f", p.pos.x, p.pos.y, p.z, p.angle));
+  return lines;
+}
+
+std::vector<std::string> help_lines() {
+  return {
+      "W/S or Up/Down   move          A/D or Q/E   strafe",
+      "Left/Right       turn          Alt+Left/Right  strafe",
+      "Shift            run           mouse        turn (Esc frees it)",
+      "1-5              renderer: bsp, painter, dda, sphere, reference",
+      "Tab              automap       B            BSP lines on the automap",
+      "+/-              automap zoom  F2           heads-up text",
+      "F11              fullscreen    F12          screenshot (PNG)",
+      "F1               this help     close the window to quit",
+  };
+}
+
+void draw_panel(render::Frame& frame, int x, int y, const std::vector<std::string>& lines, int scale) {
+  int width = 0;
+  for (const std::string& l : lines) width = std::max(width, image::text_width(l, scale));
+  const int line_h = image::kGlyphHeight * scale, pad = 3 * scale;
+  image::fill_rect(frame, x, y, width + 2 * pad, int(lines.size()) * line_h + 2 * pad, image::rgba(0, 0, 0), 150);
+  for (size_t i = 0; i < lines.size(); ++i)
+    image::draw_text(frame, x + pad, y + pad + int(i) * line_h, lines[i], image::rgba(235, 235, 220), scale);
+}
+
+}  // namespace p3d::game

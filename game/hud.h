@@ -1,0 +1,26 @@
+// The heads-up text: frame rate and time split, the renderer and its statistics,
+// where the player is; plus the key help and a translucent text panel to show them.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "engine/render/camera.h"
+#include "engine/sim/sim.h"
+
+namespace p3d::game {
+
+struct FrameTimes {
+  double fps = 0;
+  double frame_ms = 0, sim_ms = 0, render_ms = 0, present_ms = 0;
+};
+
+std::vector<std::string> hud_lines(std::string_view title, std::string_view renderer, const render::RenderStats& stats,
+                                   const FrameTimes& times, const sim::Player& player);
+std::vector<std::string> help_lines();
+
+// Lines of text on a dark translucent box with its top-left corner at (x, y).
+void draw_panel(render::Frame& frame, int x, int y, const std::vector<std::string>& lines, int scale);
+
+}  // namespace p3d::game

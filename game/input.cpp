@@ -1,0 +1,25 @@
+#include "game/input.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace p3d::game {
+
+sim::TicCommand make_command(const Controls& c, int turn_held_tics, const InputSettings& settings) {
+  sim::TicCommand cmd;
+  const int forward = c.run ? 50 : 25, side = c.run ? 40 : 24;
+  const int turn = turn_held_tics < 6 ? 320 : c.run ? 1280 : 640;
+  cmd.forward = int8_t((c.forward - c.back) * forward);
+  int strafe = c.strafe_right - c.strafe_left;
+  int turning = c.turn_left - c.turn_right;  // counter-clockwise is positive
+  if (c.strafe_modifier) {
+    strafe -= turning;  // Alt+Left strafes left
+    turning = 0;
+  }
+  cmd.side = int8_t(std::clamp(strafe, -1, 1) * side);
+  const double mouse = -c.mouse_dx * settings.mouse_sensitivity;
+  cmd.turn = int16_t(std::clamp(turning * turn + std::lround(mouse), -32767L, 32767L));
+  return cmd;
+}
+
+}  // namespace p3d::game

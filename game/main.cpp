@@ -1,0 +1,115 @@
+// game: walk a level in a window, record and replay demos, or replay a demo
+// headless into PNG frames and a stats CSV.
+#include <cstdio>
+
+#include "engine/bsp/load.h"
+#include "engine/render/camera_file.h"
+#include "engine/util/file.h"
+#include "game/autopilot.h"
+#include "game/headless.h"
+#include "game/sdl_platform.h"
+#include "tools/cli.h"
+
+using namespace p3d;
+
+namespace {
+
+std::vector<geom::Vec2> waypoints(const std::string& path) {
+  std::vector<geom::Vec2> points;
+  for (const auto& c : render::read_camera_list(path)) points.push_back(c.pos);
+  return points;
+}
+
+// Walks the waypoints with no window at all; returns the tics recorded.
+size_t autopilot_headless(game::Session& session, const std::vector<geom::Vec2>& points, uint64_t max_tics) {
+  game::Autopilot pilot(points);
+  while (!pilot.done() && (!max_tics || session.tics() < max_tics)) session.tic(pilot.next(session.player()));
+  return session.recording().tics.size();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"game: walk a level (.bsp, .map or .grid) with Doom's controls", "game"};
+  std::string map_path, record, play, out_dir, resolution, window = "960x600", renderer = "bsp", autopilot;
+  bool headless = false, fullscreen = false, no_vsync = false, map_reload = false, timedemo = false;
+  int capture_every = 35;
+  uint64_t quit_after = 0;
+  double fov = 90, sensitivity = 24;
+  app.add_option("map", map_path, "level: a compiled .bsp, or a .map/.grid compiled on the fly")
+      ->required()
+      ->check(CLI::ExistingFile);
+  app.add_option("--record", record, "record every tic's input to this demo file");
+  app.add_option("--play", play, "replay this demo, then quit")->check(CLI::ExistingFile);
+  app.add_flag("--timedemo", timedemo, "with --play: one tic per frame as fast as possible, then report the fps");
+  app.add_flag("--headless", headless, "no window: with --play, write frames and stats; with --autopilot, record");
+  app.add_option("--capture-every", capture_every, "--headless: tics between captured frames")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
+  app.add_option("--out", out_dir, "--headless: directory for the frames and stats.csv");
+  app.add_option("--resolution", resolution, "render at this fixed WxH (320x200 for the old look); "
+                 "default: the window's size (640x400 headless)");
+  app.add_option("--window", window, "window size WxH")->capture_default_str();
+  app.add_flag("--fullscreen", fullscreen, "start fullscreen (F11 toggles)");
+  app.add_flag("--no-vsync", no_vsync, "uncapped frame rate");
+  app.add_option("--renderer", renderer, "bsp, painter, dda, sphere, sphere-naive or reference")->capture_default_str();
+  app.add_option("--fov", fov, "horizontal field of view")->check(CLI::Range(30.0, 160.0))->capture_default_str();
+  app.add_flag("--map-reload", map_reload, "recompile and reload the map when its source changes on disk");
+  app.add_option("--autopilot", autopilot, "walk through these waypoints (a camera list) instead of reading input")
+      ->check(CLI::ExistingFile);
+  app.add_option("--sensitivity", sensitivity, "mouse turn per pixel, in 1/65536 of a turn")
+      ->check(CLI::Range(0.0, 10000.0))
+      ->capture_default_str();
+  app.add_option("--quit-after-tics", quit_after, "quit after this many tics (0: never)")->capture_default_str();
+
+  return cli::run(app, argc, argv, [&] {
+    if (!play.empty() && !autopilot.empty()) throw CLI::ValidationError("--play", "use either --play or --autopilot");
+    if (timedemo && play.empty()) throw CLI::ValidationError("--timedemo", "needs --play");
+    if (headless && play.empty() && autopilot.empty())
+      throw CLI::ValidationError("--headless", "needs --play (to capture frames) or --autopilot (to record)");
+    if (headless && !play.empty() && out_dir.empty()) throw CLI::ValidationError("--out", "--headless --play needs --out DIR");
+    if (map_reload && !bsp::is_source_path(map_path))
+      throw CLI::ValidationError("--map-reload", "needs a .map or .grid source, not a compiled level");
+    int rw = 0, rh = 0, ww = 0, wh = 0;
+    if (!resolution.empty()) cli::parse_size(resolution, rw, rh);
+    cli::parse_size(window, ww, wh);
+
+    game::Session session(map_path);
+    session.fov = fov;
+    if (!session.select_renderer(renderer)) throw Error("renderer '" + renderer + "' cannot draw " + map_path);
+    std::optional<sim::Demo> demo;
+    if (!play.empty()) {
+      demo = sim::decode_demo(read_file_bytes(play), play);
+      if (demo->level_fingerprint != sim::fingerprint(session.level()))
+        throw Error(play + ": the demo was recorded on a different level than " + map_path);
+    }
+
+    if (headless) {
+      if (demo) {
+        game::HeadlessOptions o{capture_every, out_dir, rw ? rw : 640, rh ? rh : 400};
+        const int frames = game::replay_headless(session, *demo, o);
+        std::printf("replayed %zu tics, wrote %d frames and stats.csv to %s\n", demo->tics.size(), frames, out_dir.c_str());
+        return 0;
+      }
+      session.start_recording();
+      const size_t tics = autopilot_headless(session, waypoints(autopilot), quit_after);
+      if (!record.empty()) write_file_atomically(record, sim::encode_demo(session.recording()));
+      std::printf("autopilot walked %zu tics%s\n", tics, record.empty() ? "" : (", recorded to " + record).c_str());
+      return 0;
+    }
+
+    game::WindowOptions o;
+    o.window_width = ww, o.window_height = wh, o.render_width = rw, o.render_height = rh;
+    o.fullscreen = fullscreen;
+    o.vsync = !no_vsync;
+    o.map_reload = map_reload;
+    o.record = record;
+    o.play = demo;
+    o.timedemo = timedemo;
+    if (timedemo) o.vsync = false;
+    if (!autopilot.empty()) o.autopilot = waypoints(autopilot);
+    o.input.mouse_sensitivity = sensitivity;
+    o.quit_after_tics = quit_after;
+    return game::run_window(session, o);
+  });
+}

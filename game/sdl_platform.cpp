@@ -1,0 +1,223 @@
+#include "game/sdl_platform.h"
+
+#include <SDL.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "engine/image/image.h"
+#include "engine/util/file.h"
+#include "game/autopilot.h"
+
+namespace p3d::game {
+
+namespace {
+
+constexpr double kTicSeconds = 1.0 / sim::kTicRate;
+
+double now_seconds() { return double(SDL_GetPerformanceCounter()) / double(SDL_GetPerformanceFrequency()); }
+
+Controls read_controls(int mouse_dx) {
+  const Uint8* k = SDL_GetKeyboardState(nullptr);
+  Controls c;
+  c.forward = k[SDL_SCANCODE_W] || k[SDL_SCANCODE_UP];
+  c.back = k[SDL_SCANCODE_S] || k[SDL_SCANCODE_DOWN];
+  c.turn_left = k[SDL_SCANCODE_LEFT];
+  c.turn_right = k[SDL_SCANCODE_RIGHT];
+  c.strafe_left = k[SDL_SCANCODE_A] || k[SDL_SCANCODE_Q];
+  c.strafe_right = k[SDL_SCANCODE_D] || k[SDL_SCANCODE_E];
+  c.strafe_modifier = k[SDL_SCANCODE_LALT] || k[SDL_SCANCODE_RALT];
+  c.run = k[SDL_SCANCODE_LSHIFT] || k[SDL_SCANCODE_RSHIFT];
+  c.mouse_dx = mouse_dx;
+  return c;
+}
+
+// The next free screenshotNNNN.png in the working directory.
+std::filesystem::path screenshot_path() {
+  for (int n = 0;; ++n) {
+    char name[32];
+    std::snprintf(name, sizeof name, "screenshot%04d.png", n);
+    if (!std::filesystem::exists(name)) return name;
+  }
+}
+
+class Window {
+ public:
+  Window(Session& session, const WindowOptions& options) : session_(session), o_(options) {}
+  ~Window() {
+    if (texture_) SDL_DestroyTexture(texture_);
+    if (renderer_) SDL_DestroyRenderer(renderer_);
+    if (window_) SDL_DestroyWindow(window_);
+    SDL_Quit();
+  }
+
+  int run() {
+    if (SDL_Init(SDL_INIT_VIDEO) != 0) return fail("cannot start SDL video");
+    SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "nearest");  // a fixed low resolution stays crisp
+    window_ = SDL_CreateWindow(("pseudo3d: " + session_.title()).c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
+                               o_.window_width, o_.window_height,
+                               SDL_WINDOW_RESIZABLE | (o_.fullscreen ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0));
+    if (!window_) return fail("cannot open a window");
+    renderer_ = SDL_CreateRenderer(window_, -1, SDL_RENDERER_ACCELERATED | (o_.vsync ? SDL_RENDERER_PRESENTVSYNC : 0));
+    if (!renderer_) renderer_ = SDL_CreateRenderer(window_, -1, SDL_RENDERER_SOFTWARE);
+    if (!renderer_) return fail("cannot create a renderer");
+    if (!resize()) return 1;
+    SDL_SetRelativeMouseMode(SDL_TRUE);
+    if (o_.autopilot) autopilot_.emplace(*o_.autopilot);
+    if (o_.play) session_.spawn(o_.play->start, o_.play->angle);
+    if (!o_.record.empty()) session_.start_recording();
+    mtime_ = modified_time();
+
+    double last = now_seconds(), accumulator = 0, reload_check = last;
+    const double start = last;
+    uint64_t frames = 0;
+    while (running_) {
+      poll_events();
+      const double t0 = now_seconds();
+      accumulator = std::min(accumulator + (t0 - last), 0.25);  // after a stall, do not race to catch up
+      if (o_.timedemo) accumulator = kTicSeconds;              // exactly one tic per frame
+      times_.frame_ms = (t0 - last) * 1000;
+      last = t0;
+      while (accumulator >= kTicSeconds && running_) {
+        run_tic();
+        accumulator -= kTicSeconds;
+      }
+      const double t1 = now_seconds();
+      if (o_.map_reload && t1 - reload_check > 0.5) {
+        reload_check = t1;
+        check_reload();
+      }
+      const double alpha = accumulator / kTicSeconds;
+      session_.render(frame_, alpha);
+      session_.draw_overlays(frame_, times_, alpha);
+      const double t2 = now_seconds();
+      SDL_UpdateTexture(texture_, nullptr, frame_.pixels.data(), frame_.width * 4);
+      SDL_RenderClear(renderer_);
+      SDL_RenderCopy(renderer_, texture_, nullptr, nullptr);
+      SDL_RenderPresent(renderer_);
+      const double t3 = now_seconds();
+      times_.sim_ms = (t1 - t0) * 1000;
+      times_.render_ms = (t2 - t1) * 1000;
+      times_.present_ms = (t3 - t2) * 1000;
+      times_.fps = times_.frame_ms > 0 ? 0.9 * times_.fps + 0.1 * (1000 / times_.frame_ms) : times_.fps;
+      ++frames;
+    }
+    if (o_.play)
+      std::printf("%llu tics, %llu frames in %.2f s: %.1f fps\n", (unsigned long long)session_.tics(),
+                  (unsigned long long)frames, now_seconds() - start, frames / std::max(1e-9, now_seconds() - start));
+    if (!o_.record.empty()) {
+      write_file_atomically(o_.record, sim::encode_demo(session_.recording()));
+      std::printf("recorded %zu tics to %s\n", session_.recording().tics.size(), o_.record.c_str());
+    }
+    return 0;
+  }
+
+ private:
+  int fail(const char* what) {
+    std::fprintf(stderr, "game: %s: %s\n", what, SDL_GetError());
+    return 1;
+  }
+
+  // Renders at the window's size unless a fixed resolution was asked for; only here
+  // are the frame and the streaming texture (re)allocated.
+  bool resize() {
+    int w = o_.render_width, h = o_.render_height;
+    if (w <= 0 || h <= 0) SDL_GetRendererOutputSize(renderer_, &w, &h);
+    w = std::max(w, 16), h = std::max(h, 16);
+    if (texture_ && w == frame_.width && h == frame_.height) return true;
+    if (texture_) SDL_DestroyTexture(texture_);
+    texture_ = SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_RGBA32, SDL_TEXTUREACCESS_STREAMING, w, h);
+    if (!texture_) {
+      fail("cannot create the frame texture");
+      return false;
+    }
+    frame_ = render::Frame(w, h);
+    return true;
+  }
+
+  void poll_events() {
+    SDL_Event e;
+    while (SDL_PollEvent(&e)) {
+      if (e.type == SDL_QUIT) running_ = false;
+      if (e.type == SDL_WINDOWEVENT && e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED && !resize()) running_ = false;
+      if (e.type == SDL_MOUSEMOTION && SDL_GetRelativeMouseMode()) mouse_dx_ += e.motion.xrel;
+      if (e.type == SDL_KEYDOWN && !e.key.repeat) key(e.key.keysym.sym);
+    }
+  }
+
+  void key(SDL_Keycode k) {
+    if (k == SDLK_ESCAPE) SDL_SetRelativeMouseMode(SDL_GetRelativeMouseMode() ? SDL_FALSE : SDL_TRUE);
+    if (k == SDLK_F1) session_.show_help = !session_.show_help;
+    if (k == SDLK_F2) session_.show_hud = !session_.show_hud;
+    if (k == SDLK_TAB) session_.show_automap = !session_.show_automap;
+    if (k == SDLK_b) session_.automap.splitters = !session_.automap.splitters;
+    if (k == SDLK_EQUALS || k == SDLK_PLUS || k == SDLK_KP_PLUS) session_.automap.scale = std::min(8.0, session_.automap.scale * 1.25);
+    if (k == SDLK_MINUS || k == SDLK_KP_MINUS) session_.automap.scale = std::max(0.01, session_.automap.scale / 1.25);
+    if (k == SDLK_F11) {
+      const bool full = SDL_GetWindowFlags(window_) & SDL_WINDOW_FULLSCREEN_DESKTOP;
+      SDL_SetWindowFullscreen(window_, full ? 0 : SDL_WINDOW_FULLSCREEN_DESKTOP);
+    }
+    if (k == SDLK_F12) {
+      const auto path = screenshot_path();
+      try {
+        image::save_png(frame_, path);
+        session_.say("saved " + path.string());
+      } catch (const std::exception& e) {
+        session_.say(e.what());
+      }
+    }
+    if (k >= SDLK_1 && k <= SDLK_5) session_.select_renderer(key_renderers()[size_t(k - SDLK_1)]);
+  }
+
+  void run_tic() {
+    sim::TicCommand cmd;
+    if (o_.play) {
+      if (played_ >= o_.play->tics.size()) {
+        running_ = false;
+        return;
+      }
+      cmd = o_.play->tics[played_++];
+    } else if (autopilot_) {
+      cmd = autopilot_->next(session_.player());
+      if (autopilot_->done()) running_ = false;
+    } else {
+      const Controls c = read_controls(mouse_dx_);
+      mouse_dx_ = 0;
+      turn_held_ = c.turn_left || c.turn_right ? turn_held_ + 1 : 0;
+      cmd = make_command(c, turn_held_, o_.input);
+    }
+    session_.tic(cmd);
+    if (o_.quit_after_tics && session_.tics() >= o_.quit_after_tics) running_ = false;
+  }
+
+  std::filesystem::file_time_type modified_time() const {
+    std::error_code ec;
+    return std::filesystem::last_write_time(session_.map_path(), ec);
+  }
+
+  void check_reload() {
+    const auto t = modified_time();
+    if (t == mtime_) return;
+    mtime_ = t;
+    session_.reload();
+  }
+
+  Session& session_;
+  const WindowOptions& o_;
+  SDL_Window* window_ = nullptr;
+  SDL_Renderer* renderer_ = nullptr;
+  SDL_Texture* texture_ = nullptr;
+  render::Frame frame_;
+  FrameTimes times_;
+  bool running_ = true;
+  int mouse_dx_ = 0, turn_held_ = 0;
+  size_t played_ = 0;
+  std::optional<Autopilot> autopilot_;
+  std::filesystem::file_time_type mtime_;
+};
+
+}  // namespace
+
+int run_window(Session& session, const WindowOptions& options) { return Window(session, options).run(); }
+
+}  // namespace p3d::game

@@ -1,0 +1,124 @@
+#include "game/session.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "engine/bsp/load.h"
+
+namespace p3d::game {
+
+const std::vector<std::string>& key_renderers() {
+  static const std::vector<std::string> names = {"bsp", "painter", "dda", "sphere", "reference"};
+  return names;
+}
+
+Session::Session(const std::filesystem::path& map_path) : map_path_(map_path) {
+  load();
+  player_ = previous_ = world_->spawn();
+  select_renderer("bsp");
+}
+
+void Session::load() {
+  level_ = std::make_unique<level::Level>(bsp::load_level(map_path_));
+  world_ = std::make_unique<sim::World>(*level_);
+  automap_view_.set_level(*level_);
+}
+
+std::string Session::title() const {
+  return level_->title.empty() ? map_path_.filename().string() : level_->title;
+}
+
+void Session::spawn(geom::Vec2 pos, double angle) {
+  player_ = previous_ = world_->spawn_at(pos, angle);
+  tics_ = 0;
+}
+
+void Session::tic(const sim::TicCommand& cmd) {
+  previous_ = player_;
+  world_->tick(player_, cmd);
+  ++tics_;
+  if (recording_on_) recording_.tics.push_back(cmd);
+  advance_message();
+}
+
+render::Camera Session::camera(double alpha) const {
+  alpha = std::clamp(alpha, 0.0, 1.0);
+  double turn = player_.angle - previous_.angle;  // the short way round
+  if (turn > 180) turn -= 360;
+  if (turn < -180) turn += 360;
+  return render::Camera{previous_.pos + (player_.pos - previous_.pos) * alpha,
+                        previous_.view_z() + (player_.view_z() - previous_.view_z()) * alpha,
+                        previous_.angle + turn * alpha, fov};
+}
+
+bool Session::select_renderer(const std::string& name) {
+  auto r = render::make_renderer(name);
+  if (!r) {
+    say("no renderer '" + name + "'");
+    return false;
+  }
+  if (!r->supports(*level_)) {
+    say(name + " cannot draw this level (it needs a grid map)");
+    return false;
+  }
+  r->prepare(*level_);
+  renderer_ = std::move(r);
+  renderer_name_ = name;
+  say("renderer: " + name);
+  return true;
+}
+
+const render::RenderStats& Session::render(render::Frame& frame, double alpha) {
+  probe_.want_order = show_automap;
+  stats_ = renderer_->render(*level_, camera(alpha), frame, &probe_);
+  if (!show_automap) probe_.order.clear();
+  return stats_;
+}
+
+void Session::draw_overlays(render::Frame& frame, const FrameTimes& times, double alpha) const {
+  const int scale = frame.width >= 1280 ? 2 : 1;
+  if (show_automap) automap_view_.draw(frame, *level_, camera(alpha), probe_.order, automap);
+  if (show_hud) draw_panel(frame, 4 * scale, 4 * scale, hud_lines(title(), renderer_name_, stats_, times, player_), scale);
+  if (show_help) {
+    const auto lines = help_lines();
+    draw_panel(frame, 4 * scale, frame.height / 2 - int(lines.size()) * 4 * scale, lines, scale);
+  }
+  if (message_tics_ > 0) draw_panel(frame, 4 * scale, frame.height - 18 * scale, {message_}, scale);
+}
+
+void Session::say(const std::string& text) {
+  message_ = text;
+  message_tics_ = 3 * sim::kTicRate;
+}
+
+void Session::advance_message() {
+  if (message_tics_ > 0) --message_tics_;
+}
+
+void Session::start_recording() {
+  recording_on_ = true;
+  recording_ = {sim::fingerprint(*level_), player_.pos, player_.angle, {}};
+}
+
+bool Session::reload() {
+  const sim::Player keep = player_;
+  std::unique_ptr<level::Level> old_level = std::move(level_);
+  std::unique_ptr<sim::World> old_world = std::move(world_);
+  try {
+    load();
+  } catch (const std::exception& e) {
+    level_ = std::move(old_level);
+    world_ = std::move(old_world);
+    automap_view_.set_level(*level_);
+    say(std::string("reload failed: ") + e.what());
+    std::fprintf(stderr, "%s\n", e.what());
+    return false;
+  }
+  player_ = previous_ = keep;
+  player_.z = previous_.z = std::max(keep.z, world_->heights_at(keep.pos).floor);
+  if (!select_renderer(renderer_name_)) select_renderer("bsp");
+  say("reloaded " + map_path_.filename().string());
+  return true;
+}
+
+}  // namespace p3d::game

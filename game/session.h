@@ -1,0 +1,80 @@
+// One game: the level (compiled on the fly from a source if need be), the
+// simulation, the player at this tic and the previous one (for interpolation), the
+// renderers, the overlays' state, and demo recording. Shared by the window and the
+// headless replay; no SDL here.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/level/level.h"
+#include "engine/render/renderer.h"
+#include "engine/sim/sim.h"
+#include "game/automap.h"
+#include "game/hud.h"
+
+namespace p3d::game {
+
+// The renderers on keys 1 to 5.
+const std::vector<std::string>& key_renderers();
+
+class Session {
+ public:
+  explicit Session(const std::filesystem::path& map_path);
+
+  const level::Level& level() const { return *level_; }
+  const sim::World& world() const { return *world_; }
+  const std::filesystem::path& map_path() const { return map_path_; }
+  std::string title() const;
+
+  // ---- simulation
+  void spawn(geom::Vec2 pos, double angle);
+  void tic(const sim::TicCommand& cmd);
+  const sim::Player& player() const { return player_; }
+  uint64_t tics() const { return tics_; }
+  // The camera between the previous tic (alpha 0) and this one (alpha 1).
+  render::Camera camera(double alpha) const;
+
+  // ---- rendering
+  // Switches renderer; false (with a message) if it cannot draw this level.
+  bool select_renderer(const std::string& name);
+  const std::string& renderer_name() const { return renderer_name_; }
+  const render::RenderStats& render(render::Frame& frame, double alpha);
+  void draw_overlays(render::Frame& frame, const FrameTimes& times, double alpha) const;
+
+  // ---- what the keys toggle
+  bool show_automap = false, show_hud = true, show_help = false;
+  AutomapSettings automap;
+  double fov = 90;
+  void say(const std::string& text);  // a message shown on screen for a few seconds
+  void advance_message();             // once per tic
+
+  // ---- demos and reloading
+  void start_recording();
+  const sim::Demo& recording() const { return recording_; }
+  // Recompiles the map from disk, keeping the player where it is. False (and a
+  // message, the old level kept) if the new map does not compile.
+  bool reload();
+
+ private:
+  void load();
+
+  std::filesystem::path map_path_;
+  std::unique_ptr<level::Level> level_;
+  std::unique_ptr<sim::World> world_;
+  sim::Player player_, previous_;
+  uint64_t tics_ = 0;
+  std::string renderer_name_;
+  std::unique_ptr<render::Renderer> renderer_;
+  render::Probe probe_;
+  render::RenderStats stats_;
+  Automap automap_view_;
+  std::string message_;
+  int message_tics_ = 0;
+  bool recording_on_ = false;
+  sim::Demo recording_;
+};
+
+}  // namespace p3d::game

@@ -1,0 +1,142 @@
+// The game's SDL-free core: input mapping, the HUD's text, the session's
+// interpolation, renderer switching and reloading, and headless replay.
+#include <gtest/gtest.h>
+
+#include "engine/map/generate.h"
+#include "engine/util/file.h"
+#include "game/autopilot.h"
+#include "game/headless.h"
+#include "game/hud.h"
+#include "game/input.h"
+#include "game/session.h"
+#include "tests/support/support.h"
+
+namespace p3d::game {
+namespace {
+
+TEST(Input, DoomKeysMakeDoomCommands) {
+  Controls c;
+  EXPECT_EQ(make_command(c, 0), sim::TicCommand{});
+  c.forward = true;
+  EXPECT_EQ(make_command(c, 0).forward, 25);
+  c.run = true;
+  EXPECT_EQ(make_command(c, 0).forward, 50);
+  c.back = true;  // both cancel
+  EXPECT_EQ(make_command(c, 0).forward, 0);
+  c = {};
+  c.strafe_right = true;
+  EXPECT_EQ(make_command(c, 0).side, 24);
+  c.strafe_left = true;
+  EXPECT_EQ(make_command(c, 0).side, 0);
+  c = {};
+  c.turn_left = true;
+  EXPECT_EQ(make_command(c, 0).turn, 320) << "slow for the first tics";
+  EXPECT_EQ(make_command(c, 6).turn, 640);
+  c.run = true;
+  EXPECT_EQ(make_command(c, 6).turn, 1280);
+  c.strafe_modifier = true;  // Alt+Left strafes left instead
+  EXPECT_EQ(make_command(c, 6).turn, 0);
+  EXPECT_EQ(make_command(c, 6).side, -40);
+  c = {};
+  c.mouse_dx = 10;  // right turns clockwise
+  EXPECT_EQ(make_command(c, 0, {24}).turn, -240);
+  c.mouse_dx = 100000;
+  EXPECT_EQ(make_command(c, 0, {24}).turn, -32767) << "clamped, not wrapped";
+}
+
+TEST(Hud, LinesNameTheRendererTheWorkAndThePlace) {
+  render::RenderStats s;
+  s.nodes_visited = 31;
+  s.subtrees_culled = 8;
+  s.fragments_drawn = 26;
+  s.columns_closed = 640;
+  s.pixels_written = 256000;
+  s.early_exit = true;
+  FrameTimes t{512, 1.95, 0.01, 0.52, 1.42};
+  sim::Player p;
+  p.pos = {64, 96};
+  p.angle = 30;
+  const auto lines = hud_lines("Outpost", "bsp", s, t, p);
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0], "Outpost  512 fps  1.95 ms (sim 0.01, render 0.52, present 1.42)");
+  EXPECT_EQ(lines[1], "bsp: nodes 31  culled 8  fragments 26  columns closed 640  pixels 256000  early exit");
+  EXPECT_EQ(lines[2], "x 64.0  y 96.0  z 0.0  angle 30.0");
+  render::RenderStats rays;
+  rays.rays = 640;
+  rays.steps = 6400;
+  rays.columns_closed = 640;
+  EXPECT_EQ(hud_lines("m", "sphere", rays, t, p)[1], "sphere: rays 640  steps/ray 10.0  columns closed 640  pixels 0");
+  EXPECT_GE(help_lines().size(), 6u);
+}
+
+TEST(Session, InterpolatesBetweenTicsAndSwitchesRenderers) {
+  Session s(test::source_dir() / "maps/outpost.map");
+  EXPECT_EQ(s.title(), "Outpost");
+  s.tic({50, 0, 0});
+  s.tic({50, 0, 0});
+  const render::Camera before = s.camera(0), after = s.camera(1), half = s.camera(0.5);
+  EXPECT_EQ(after.pos, s.player().pos);
+  EXPECT_NEAR(half.pos.x, (before.pos.x + after.pos.x) / 2, 1e-9);
+  EXPECT_LT(before.pos.x, after.pos.x);
+  EXPECT_FALSE(s.select_renderer("dda")) << "outpost is not a grid map";
+  EXPECT_EQ(s.renderer_name(), "bsp");
+  for (const std::string& name : key_renderers()) {
+    if (name == "dda") continue;
+    EXPECT_TRUE(s.select_renderer(name)) << name;
+  }
+  render::Frame frame(64, 40);
+  s.show_automap = true;
+  s.render(frame, 0.5);
+  s.draw_overlays(frame, {}, 0.5);  // HUD and automap draw without trouble on a small frame
+}
+
+TEST(Session, ReloadKeepsThePlayerAndSurvivesABrokenMap) {
+  const auto dir = test::temp_dir("reload");
+  std::filesystem::create_directory_symlink(test::source_dir() / "maps/textures", dir / "textures");
+  std::string text = read_file_text(test::source_dir() / "maps/outpost.map");
+  write_file_atomically(dir / "m.map", text);
+  Session s(dir / "m.map");
+  for (int i = 0; i < 10; ++i) s.tic({50, 0, 0});
+  const geom::Vec2 where = s.player().pos;
+  const size_t walls = s.level().walls.size();
+  write_file_atomically(dir / "m.map", text + "vertex extra1 100 20\nvertex extra2 120 40\nsegment extra1 extra2 texture=metal\n");
+  EXPECT_TRUE(s.reload());
+  EXPECT_EQ(s.level().walls.size(), walls + 1);
+  EXPECT_EQ(s.player().pos, where);
+  write_file_atomically(dir / "m.map", text + "nonsense\n");
+  EXPECT_FALSE(s.reload());
+  EXPECT_EQ(s.level().walls.size(), walls + 1) << "the old level stays";
+  s.tic({});
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Headless, ReplayIsByteForByteReproducible) {
+  const auto dir = test::temp_dir("headless");
+  Session recorder(test::source_dir() / "maps/outpost.map");
+  recorder.start_recording();
+  Autopilot pilot({{300, 110}, {440, 192}, {700, 192}});
+  for (int t = 0; t < 150 && !pilot.done(); ++t) recorder.tic(pilot.next(recorder.player()));
+  const sim::Demo demo = sim::decode_demo(sim::encode_demo(recorder.recording()), "d");
+  EXPECT_GT(demo.tics.size(), 60u);
+  EXPECT_EQ(recorder.player().z, 96) << "the autopilot climbed the stairs";
+
+  for (const char* run : {"a", "b"}) {
+    Session s(test::source_dir() / "maps/outpost.map");
+    const int frames = replay_headless(s, demo, {20, dir / run, 96, 60});
+    EXPECT_EQ(frames, int(demo.tics.size() / 20 + 1));
+    EXPECT_EQ(s.player().pos, recorder.player().pos) << "replay ends where the recording did";
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(dir / "a"))
+    EXPECT_EQ(read_file_bytes(entry.path()), read_file_bytes(dir / "b" / entry.path().filename())) << entry.path();
+  const std::string csv = read_file_text(dir / "a/stats.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "frame,tic,x,y,z,angle,renderer,nodes_visited,subtrees_culled,fragments_drawn,columns_closed,pixels_written,"
+            "early_exit");
+
+  Session other(test::source_dir() / "maps/soup.map");
+  EXPECT_THROW(replay_headless(other, demo, {20, dir / "c", 96, 60}), Error);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace p3d::game
