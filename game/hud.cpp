@@ -36,18 +36,37 @@ std::vector<std::string> hud_lines(std::string_view title, std::string_view rend
 
 std::vector<std::string> help_lines() {
   return {
-      "W/S or Up/Down   move          A/D or Q/E   strafe",
-      "Left/Right       turn          Alt+Left/Right  strafe",
-      "Shift            run           mouse        turn (Esc frees it)",
-      "1-5              renderer: bsp, painter, dda, sphere, reference",
-      "Tab              automap       B            BSP lines on the automap",
-      "+/-              automap zoom  F2           heads-up text",
-      "F11              fullscreen    F12          screenshot (PNG)",
-      "F1               this help     close the window to quit",
+      "W/S, Up/Down    move",
+      "A/D, Q/E        strafe",
+      "Left/Right      turn (Alt: strafe)",
+      "mouse           turn (Esc frees it)",
+      "Shift           run",
+      "1-5             bsp painter dda sphere reference",
+      "Tab             automap (B: BSP lines, +/-: zoom)",
+      "F2              heads-up text",
+      "F11             fullscreen",
+      "F12             screenshot (PNG)",
+      "F1              this help; close the window to quit",
   };
 }
 
-void draw_panel(render::Frame& frame, int x, int y, const std::vector<std::string>& lines, int scale) {
+std::vector<std::string> wrap_lines(const std::vector<std::string>& lines, size_t columns) {
+  columns = std::max<size_t>(columns, 1);
+  std::vector<std::string> out;
+  for (std::string line : lines) {
+    while (line.size() > columns) {
+      size_t cut = line.rfind(' ', columns);
+      if (cut == std::string::npos || cut == 0) cut = columns;
+      out.push_back(line.substr(0, cut));
+      line.erase(0, line.find_first_not_of(' ', cut) == std::string::npos ? line.size() : line.find_first_not_of(' ', cut));
+    }
+    out.push_back(line);
+  }
+  return out;
+}
+
+void draw_panel(render::Frame& frame, int x, int y, const std::vector<std::string>& unwrapped, int scale) {
+  const auto lines = wrap_lines(unwrapped, size_t(std::max(1, (frame.width - x - 8 * scale) / (image::kGlyphWidth * scale))));
   int width = 0;
   for (const std::string& l : lines) width = std::max(width, image::text_width(l, scale));
   const int line_h = image::kGlyphHeight * scale, pad = 3 * scale;

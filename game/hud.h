@@ -20,7 +20,11 @@ std::vector<std::string> hud_lines(std::string_view title, std::string_view rend
                                    const FrameTimes& times, const sim::Player& player);
 std::vector<std::string> help_lines();
 
-// Lines of text on a dark translucent box with its top-left corner at (x, y).
+// Lines of text on a dark translucent box with its top-left corner at (x, y); lines
+// wider than the frame wrap at spaces.
 void draw_panel(render::Frame& frame, int x, int y, const std::vector<std::string>& lines, int scale);
+
+// Breaks lines longer than `columns` characters at spaces (a word longer than that is cut).
+std::vector<std::string> wrap_lines(const std::vector<std::string>& lines, size_t columns);
 
 }  // namespace p3d::game

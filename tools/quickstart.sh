@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The README's first command: install what is missing, build (Release), compile the
-# default map and capture its showcase views into out/.
+# default map, capture its showcase views into out/, and start the game when a
+# display is present.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/install-deps.sh
@@ -10,3 +11,7 @@ mkdir -p out
 build/tools/mapc maps/outpost.map -o out/outpost.bsp --stats
 build/tools/capture out/outpost.bsp --cameras maps/outpost.cameras -o out --stats
 echo "wrote out/outpost.bsp and the captures out/*.png"
+if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+  echo "starting the game: W/S/A/D and the mouse to move, F1 for the keys, close the window to quit"
+  build/game/game out/outpost.bsp
+fi

@@ -69,6 +69,12 @@ TEST(Hud, LinesNameTheRendererTheWorkAndThePlace) {
   EXPECT_GE(help_lines().size(), 6u);
 }
 
+TEST(Hud, LongLinesWrapAtSpaces) {
+  EXPECT_EQ(wrap_lines({"one two three four"}, 9), (std::vector<std::string>{"one two", "three", "four"}));
+  EXPECT_EQ(wrap_lines({"abcdefghij"}, 4), (std::vector<std::string>{"abcd", "efgh", "ij"}));
+  EXPECT_EQ(wrap_lines({"short", ""}, 40), (std::vector<std::string>{"short", ""}));
+}
+
 TEST(Session, InterpolatesBetweenTicsAndSwitchesRenderers) {
   Session s(test::source_dir() / "maps/outpost.map");
   EXPECT_EQ(s.title(), "Outpost");
