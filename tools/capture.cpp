@@ -48,15 +48,7 @@ int main(int argc, char** argv) {
   app.add_option("--columns", columns, "CSV of x,wall,dist per column (a directory with --cameras)");
   app.add_option("--cameras", cameras, "file of cameras: NAME X Y ANGLE [EYE [FOV]] per line")->check(CLI::ExistingFile);
   app.add_flag("--stats", stats, "print per-frame statistics and time per frame");
-  app.add_option("--epsilon", ropt.sphere_epsilon, "sphere: distance at which walls are tested exactly")
-      ->check(CLI::Range(1e-6, 1e6))
-      ->capture_default_str();
-  app.add_option("--relaxation", ropt.sphere_relaxation, "sphere: over-relaxation factor (1 = plain)")
-      ->check(CLI::Range(1.0, 1.99))
-      ->capture_default_str();
-  app.add_option("--max-steps", ropt.sphere_max_steps, "sphere: steps before a ray gives up")
-      ->check(CLI::Range(1, 1000000))
-      ->capture_default_str();
+  cli::add_renderer_options(app, ropt);
 
   return cli::run(app, argc, argv, [&] {
     int width = 0, height = 0;
@@ -70,7 +62,8 @@ int main(int argc, char** argv) {
       shots = render::read_camera_list(cameras);
     } else {
       if (pos_text.empty()) throw CLI::ValidationError("--pos", "a camera position is required (or --cameras)");
-      if (!std::isfinite(angle) || !std::isfinite(eye)) throw CLI::ValidationError("--angle", "must be finite");
+      if (!std::isfinite(angle)) throw CLI::ValidationError("--angle", "must be finite");
+      cli::check_eye(eye);
       shots.push_back({"", cli::parse_point(pos_text, "--pos"), angle, eye, fov});
     }
 

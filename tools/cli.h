@@ -11,17 +11,26 @@
 #include <string>
 
 #include "engine/geom/geom.h"
+#include "engine/render/renderer.h"
 #include "engine/util/error.h"
 
 namespace p3d::cli {
 
-// "X,Y" -> point; throws CLI::ValidationError.
+// "X,Y" -> point within the camera range; throws CLI::ValidationError.
 inline geom::Vec2 parse_point(const std::string& text, const char* option) {
   double x = 0, y = 0;
   char extra = 0;
   if (std::sscanf(text.c_str(), "%lf,%lf%c", &x, &y, &extra) != 2 || !std::isfinite(x) || !std::isfinite(y))
     throw CLI::ValidationError(option, "expected X,Y with finite numbers, got '" + text + "'");
+  if (std::fabs(x) > render::kMaxCameraCoord || std::fabs(y) > render::kMaxCameraCoord)
+    throw CLI::ValidationError(option, "X,Y must lie within +-" + std::to_string(int64_t(render::kMaxCameraCoord)));
   return {x, y};
+}
+
+// An eye height within the camera range; throws CLI::ValidationError.
+inline void check_eye(double eye) {
+  if (!std::isfinite(eye) || std::fabs(eye) > render::kMaxCameraCoord)
+    throw CLI::ValidationError("--eye", "must be finite and within +-" + std::to_string(int64_t(render::kMaxCameraCoord)));
 }
 
 // "WxH" -> size; throws CLI::ValidationError.
@@ -33,6 +42,19 @@ inline void parse_size(const std::string& text, int& w, int& h) {
 
 inline double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The sphere tracers' settings, shared by capture and compare.
+inline void add_renderer_options(CLI::App& app, render::RendererOptions& o) {
+  app.add_option("--epsilon", o.sphere_epsilon, "sphere: distance at which walls are tested exactly")
+      ->check(CLI::Range(1e-6, 1e6))
+      ->capture_default_str();
+  app.add_option("--relaxation", o.sphere_relaxation, "sphere: over-relaxation factor (1 = plain)")
+      ->check(CLI::Range(1.0, 1.99))
+      ->capture_default_str();
+  app.add_option("--max-steps", o.sphere_max_steps, "sphere: steps before a ray gives up")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
 }
 
 // Runs a tool's body: CLI errors exit 2 with usage; p3d::Error and I/O errors exit 1.

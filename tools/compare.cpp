@@ -121,15 +121,7 @@ int main(int argc, char** argv) {
   app.add_option("--renderers", names, "renderers to compare (default: every one that can draw the level)")
       ->delimiter(',');
   app.add_option("--frames", frames, "timed frames per camera (median)")->check(CLI::Range(1, 1000))->capture_default_str();
-  app.add_option("--epsilon", ropt.sphere_epsilon, "sphere: distance at which walls are tested exactly")
-      ->check(CLI::Range(1e-6, 1e6))
-      ->capture_default_str();
-  app.add_option("--relaxation", ropt.sphere_relaxation, "sphere: over-relaxation factor (1 = plain)")
-      ->check(CLI::Range(1.0, 1.99))
-      ->capture_default_str();
-  app.add_option("--max-steps", ropt.sphere_max_steps, "sphere: steps before a ray gives up")
-      ->check(CLI::Range(1, 1000000))
-      ->capture_default_str();
+  cli::add_renderer_options(app, ropt);
   app.add_option("-o,--output", output, "PNG to write")->required();
   app.add_option("--json", json, "also write the table as JSON");
 
@@ -142,7 +134,8 @@ int main(int argc, char** argv) {
       specs = render::read_camera_list(path_file);
     } else {
       if (pos_text.empty()) throw CLI::ValidationError("--pos", "a camera position is required (or --path)");
-      if (!std::isfinite(angle) || !std::isfinite(eye)) throw CLI::ValidationError("--angle", "must be finite");
+      if (!std::isfinite(angle)) throw CLI::ValidationError("--angle", "must be finite");
+      cli::check_eye(eye);
       specs.push_back({"camera", cli::parse_point(pos_text, "--pos"), angle, eye, fov});
     }
     if (names.empty()) names = render::renderer_names();

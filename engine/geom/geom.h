@@ -80,6 +80,14 @@ inline double crossing_param(const Line& s, const Line& c) {
   return static_cast<double>(N) / static_cast<double>(D);
 }
 
+// The point of segment a-b nearest to p, and its distance.
+inline Vec2 closest_point(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double t = std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0, 1.0);
+  return a + ab * t;
+}
+inline double segment_distance(Vec2 p, Vec2 a, Vec2 b) { return glm::length(p - closest_point(p, a, b)); }
+
 inline bool parallel(const Line& a, const Line& b) { return cross(a.d, b.d) == 0; }
 inline bool same_line(const Line& a, const Line& b) { return parallel(a, b) && side_of(a, b.a) == 0; }
 

@@ -49,8 +49,7 @@ class BspFrontToBack final : public Renderer {
       stack_.push_back({node.child[near], false});
     }
     canvas_.finish();
-    stats.columns_closed = canvas_.columns_closed();
-    stats.pixels_written = canvas_.pixels_written();
+    canvas_.count_into(stats);
     return stats;
   }
 

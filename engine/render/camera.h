@@ -2,6 +2,7 @@
 // flows into and out of every renderer.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -15,6 +16,9 @@ using geom::Vec2;
 using Frame = image::Image;
 
 constexpr double kEyeHeight = 41;  // Doom's view height above the floor
+// Cameras must stay within this many map units of the origin (4x the map range), and
+// so must eye heights: the texture arithmetic is sized for it. Tools check it.
+constexpr double kMaxCameraCoord = 4 * geom::kMaxCoord;
 
 struct Camera {
   Vec2 pos{0, 0};
@@ -37,6 +41,12 @@ struct RenderStats {
   uint64_t rays = 0;
   uint64_t steps = 0;            // cells (DDA) or marching steps (sphere) over all rays
   uint64_t max_steps = 0;        // most steps of one ray
+
+  void add_ray(uint64_t ray_steps) {
+    ++rays;
+    steps += ray_steps;
+    max_steps = std::max(max_steps, ray_steps);
+  }
 };
 
 // Per screen column: the wall that closes it (source order), its perpendicular

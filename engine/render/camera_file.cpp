@@ -30,6 +30,9 @@ std::vector<CameraSpec> parse_camera_list(const std::string& text, const std::st
     if (words >> extra) throw Error(loc, "unexpected '" + extra + "'");
     if (!std::isfinite(s.pos.x) || !std::isfinite(s.pos.y) || !std::isfinite(s.angle) || !std::isfinite(s.eye))
       throw Error(loc, "numbers must be finite");
+    for (double v : {s.pos.x, s.pos.y, s.eye})
+      if (std::fabs(v) > kMaxCameraCoord)
+        throw Error(loc, "positions and eye heights must lie within +-" + std::to_string(int64_t(kMaxCameraCoord)));
     if (!(s.fov >= 1 && s.fov <= 179)) throw Error(loc, "field of view must be between 1 and 179 degrees");
     if (s.name.find('/') != std::string::npos) throw Error(loc, "camera names cannot contain '/'");
     specs.push_back(s);

@@ -46,8 +46,11 @@ class Canvas {
   bool closed(int x) const { return columns_[x].top >= columns_[x].bottom; }
   int column_sector(int x) const { return columns_[x].sector; }
 
-  uint64_t pixels_written() const { return pixels_; }
-  uint64_t columns_closed() const { return closed_count_; }
+  // Copies the canvas's counts (columns closed, pixels written) into the frame's statistics.
+  void count_into(RenderStats& stats) const {
+    stats.columns_closed = closed_count_;
+    stats.pixels_written = pixels_;
+  }
 
  private:
   struct Column {

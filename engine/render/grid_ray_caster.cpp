@@ -26,15 +26,9 @@ class GridRayCaster final : public Renderer {
     canvas_.begin(level, view, frame, level.sector_at(camera.pos), probe);
     RenderStats stats;
     if (level.grid)
-      for (int x = 0; x < view.width; ++x) {
-        const uint64_t steps = cast(level, *level.grid, view, x);
-        stats.steps += steps;
-        stats.max_steps = std::max(stats.max_steps, steps);
-      }
+      for (int x = 0; x < view.width; ++x) stats.add_ray(cast(level, *level.grid, view, x));
     canvas_.finish();
-    stats.rays = uint64_t(view.width);
-    stats.columns_closed = canvas_.columns_closed();
-    stats.pixels_written = canvas_.pixels_written();
+    canvas_.count_into(stats);
     return stats;
   }
 

@@ -50,8 +50,7 @@ class Painter final : public Renderer {
       if (!painted_[x]) canvas_.paint_background(x, camera_sector);
     if (record_) replay_front_to_back(view.width);
 
-    stats.pixels_written = canvas_.pixels_written();
-    stats.columns_closed = canvas_.columns_closed();
+    canvas_.count_into(stats);
     return stats;
   }
 

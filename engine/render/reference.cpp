@@ -39,9 +39,8 @@ class Reference final : public Renderer {
     canvas_.finish();
 
     RenderStats stats;
-    stats.columns_closed = canvas_.columns_closed();
-    stats.pixels_written = canvas_.pixels_written();
-    stats.rays = static_cast<uint64_t>(view.width);
+    canvas_.count_into(stats);
+    stats.rays = static_cast<uint64_t>(view.width);  // one per column, hitting every wall
     return stats;
   }
 

@@ -24,11 +24,7 @@ namespace p3d::render {
 
 namespace {
 
-double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double t = std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0, 1.0);
-  return glm::length(p - (a + ab * t));
-}
+using geom::segment_distance;
 
 double box_distance(Vec2 p, const geom::BBox& b) {
   const double dx = std::max({b.min.x - p.x, 0.0, p.x - b.max.x});
@@ -145,15 +141,9 @@ class SphereTracer final : public Renderer {
     const View view(camera, frame.width, frame.height);
     canvas_.begin(level, view, frame, level::sector_at_brute_force(level, camera.pos), probe);
     RenderStats stats;
-    for (int x = 0; x < view.width; ++x) {
-      const uint64_t steps = trace(level, view, x);
-      stats.steps += steps;
-      stats.max_steps = std::max(stats.max_steps, steps);
-    }
+    for (int x = 0; x < view.width; ++x) stats.add_ray(trace(level, view, x));
     canvas_.finish();
-    stats.rays = uint64_t(view.width);
-    stats.columns_closed = canvas_.columns_closed();
-    stats.pixels_written = canvas_.pixels_written();
+    canvas_.count_into(stats);
     return stats;
   }
 

@@ -23,7 +23,7 @@ struct View {
   Vec2 ray0;              // ray of column 0; ray(x) = ray0 + right * x
 
   View(const Camera& camera, int w, int h) : width(w), height(h), pos(camera.pos), eye(camera.z) {
-    angle = camera.angle * (M_PI / 180);
+    angle = std::fmod(camera.angle, 360.0) * (M_PI / 180);  // any angle: the sky's texture column stays in range
     forward = {std::cos(angle), std::sin(angle)};
     right = {forward.y, -forward.x};
     half_w = w * 0.5;

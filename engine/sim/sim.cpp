@@ -25,11 +25,7 @@ constexpr double kMaxMove = 30;   // units per tic on each axis, as Doom's MAXMO
 constexpr double kSubstep = 8;    // at most half the radius per substep
 constexpr double kTouch = 1e-6;   // slack when testing "at least the radius away"
 
-Vec2 closest_point(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double t = std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0, 1.0);
-  return a + ab * t;
-}
+using geom::closest_point;
 
 // Whether the path p -> q crosses the segment a-b (strictly changes side within it).
 bool crosses(Vec2 p, Vec2 q, Vec2 a, Vec2 b) {

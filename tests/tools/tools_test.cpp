@@ -131,6 +131,8 @@ TEST_F(Tools, BadArgumentsAreRefused) {
       {"-o " + out("x.png"), "a camera position is required"},
       {"--cameras " + out("bad.cams") + " -o " + dir_.string(), "bad.cams:1: expected NAME X Y ANGLE"},
       {"--pos 1,1 --angle inf -o " + out("x.png"), "finite"},
+      {"--pos 1e15,0 -o " + out("x.png"), "X,Y must lie within"},
+      {"--pos 1,1 --eye 1e300 -o " + out("x.png"), "--eye"},
   };
   for (const Case& c : cases) {
     const int status = test::run(cap + c.args, o);
