@@ -76,7 +76,7 @@ class Window {
       const double t0 = now_seconds();
       accumulator = std::min(accumulator + (t0 - last), 0.25);  // after a stall, do not race to catch up
       if (o_.timedemo) accumulator = kTicSeconds;              // exactly one tic per frame
-      times_.frame_ms = (t0 - last) * 1000;
+      summed_.frame_ms += (t0 - last) * 1000;
       last = t0;
       while (accumulator >= kTicSeconds && running_) {
         run_tic();
@@ -96,10 +96,11 @@ class Window {
       SDL_RenderCopy(renderer_, texture_, nullptr, nullptr);
       SDL_RenderPresent(renderer_);
       const double t3 = now_seconds();
-      times_.sim_ms = (t1 - t0) * 1000;
-      times_.render_ms = (t2 - t1) * 1000;
-      times_.present_ms = (t3 - t2) * 1000;
-      times_.fps = times_.frame_ms > 0 ? 0.9 * times_.fps + 0.1 * (1000 / times_.frame_ms) : times_.fps;
+      summed_.sim_ms += (t1 - t0) * 1000;
+      summed_.render_ms += (t2 - t1) * 1000;
+      summed_.present_ms += (t3 - t2) * 1000;
+      ++summed_frames_;
+      if (t3 - summed_start_ >= 0.5) show_averages(t3);
       ++frames;
     }
     if (o_.play)
@@ -120,6 +121,16 @@ class Window {
 
   // Renders at the window's size unless a fixed resolution was asked for; only here
   // are the frame and the streaming texture (re)allocated.
+  // The heads-up times: averages over the last half second.
+  void show_averages(double now) {
+    const double n = double(summed_frames_);
+    times_ = {n / (now - summed_start_), summed_.frame_ms / n, summed_.sim_ms / n, summed_.render_ms / n,
+              summed_.present_ms / n};
+    summed_ = {};
+    summed_frames_ = 0;
+    summed_start_ = now;
+  }
+
   bool resize() {
     int w = o_.render_width, h = o_.render_height;
     if (w <= 0 || h <= 0) SDL_GetRendererOutputSize(renderer_, &w, &h);
@@ -208,7 +219,9 @@ class Window {
   SDL_Renderer* renderer_ = nullptr;
   SDL_Texture* texture_ = nullptr;
   render::Frame frame_;
-  FrameTimes times_;
+  FrameTimes times_, summed_;  // shown, and being summed
+  uint64_t summed_frames_ = 0;
+  double summed_start_ = now_seconds();
   bool running_ = true;
   int mouse_dx_ = 0, turn_held_ = 0;
   size_t played_ = 0;
