@@ -134,8 +134,17 @@ void Canvas::draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom
     if (both_sky) r.ceiling = std::max(r.ceiling, r.back_ceiling);  // Doom's sky hack: no upper part
   }
 
-  if (eye < s.ceiling) plane_span(x, top, std::min(r.ceiling, bottom), near, true);
-  if (eye > s.floor) plane_span(x, std::max(r.floor, top), bottom, near, false);
+  // A plane is seen only from its open side. An eye below the near floor (or above
+  // the near ceiling) looks into solid matter there: fill it, so no row is left
+  // unwritten (Doom would leave a hall of mirrors).
+  if (eye < s.ceiling)
+    plane_span(x, top, std::min(r.ceiling, bottom), near, true);
+  else
+    fill_span(x, top, std::min(r.ceiling, bottom), kVoidColor);
+  if (eye > s.floor)
+    plane_span(x, std::max(r.floor, top), bottom, near, false);
+  else
+    fill_span(x, std::max(r.floor, top), bottom, kVoidColor);
   const int wall_top = std::max(top, r.ceiling), wall_bottom = std::min(bottom, r.floor);
 
   if (!b) {
