@@ -97,16 +97,18 @@ TEST(GridRayCaster, AgreesFromInsideSolidTilesAndOutsideTheGrid) {
   const double size_x = level.grid->cols * level.grid->cell, size_y = level.grid->rows * level.grid->cell;
   Rng rng(3);
   size_t columns = 0;
-  for (int i = 0; i < 60; ++i) {
-    const Vec2 p = i % 2 ? Vec2{rng.uniform(-600, size_x + 600), rng.uniform(-600, size_y + 600)}
-                         : Vec2{rng.uniform(0, size_x), rng.uniform(0, size_y)};
+  for (int i = 0; i < 90; ++i) {
+    // Anywhere inside or around the grid, a third of them on grid lines and corners.
+    Vec2 p = i % 2 ? Vec2{rng.uniform(-600, size_x + 600), rng.uniform(-600, size_y + 600)}
+                   : Vec2{rng.uniform(0, size_x), rng.uniform(0, size_y)};
+    if (i % 3 == 0) p = glm::round(p / 32.0) * 32.0;
     const Camera c{p, 41, rng.uniform(0, 360), 90};
     const Rendered dda = render_with("dda", level, c, 80, 50), bsp = render_with("bsp", level, c, 80, 50);
     for (int x = 0; x < 80; ++x, ++columns)
       EXPECT_TRUE(same_or_tie(dda.probe.columns[x], bsp.probe.columns[x]))
           << "camera " << p.x << "," << p.y << " angle " << c.angle << " column " << x;
   }
-  EXPECT_EQ(columns, 60u * 80u);
+  EXPECT_EQ(columns, 90u * 80u);
 }
 
 TEST(GridRayCaster, OnlyDrawsGridLevels) {
