@@ -144,9 +144,4 @@ int text_width(std::string_view text, int scale) {
   }
   return widest * kGlyphWidth * scale;
 }
-
-int text_height(std::string_view text, int scale) {
-  return int(1 + std::count(text.begin(), text.end(), '\n')) * kGlyphHeight * scale;
-}
-
 }  // namespace p3d::image

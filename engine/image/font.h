@@ -14,8 +14,7 @@ constexpr int kGlyphWidth = 6, kGlyphHeight = 8;  // cell size, including one pi
 // outside printable ASCII draw as '?'. Clipped to the image.
 void draw_text(Image& img, int x, int y, std::string_view text, uint32_t color, int scale = 1);
 
-// Width and height in pixels of text drawn at `scale`.
+// Width in pixels of the widest line of text drawn at `scale`.
 int text_width(std::string_view text, int scale = 1);
-int text_height(std::string_view text, int scale = 1);
 
 }  // namespace p3d::image

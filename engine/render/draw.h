@@ -43,8 +43,6 @@ class Canvas {
   // Fills the rows still open in every column with the planes of the column's sector, out to the horizon.
   void finish();
 
-  bool closed(int x) const { return columns_[x].top >= columns_[x].bottom; }
-  int column_sector(int x) const { return columns_[x].sector; }
 
   // Copies the canvas's counts (columns closed, pixels written) into the frame's statistics.
   void count_into(RenderStats& stats) const {
