@@ -144,4 +144,5 @@ int text_width(std::string_view text, int scale) {
   }
   return widest * kGlyphWidth * scale;
 }
+
 }  // namespace p3d::image
