@@ -7,21 +7,12 @@
 
 namespace p3d::test {
 
-map::Source random_soup(size_t walls, uint64_t seed) {
-  map::GenerateOptions o;
-  o.walls = walls;
-  o.seed = seed;
-  o.textures = map::builtin_textures();
-  return map::generate_soup(o);
-}
+namespace {
+map::GenerateOptions options(size_t walls, uint64_t seed) { return {walls, seed, map::builtin_textures()}; }
+}  // namespace
 
-map::Source random_rooms(size_t walls, uint64_t seed) {
-  map::GenerateOptions o;
-  o.walls = walls;
-  o.seed = seed;
-  o.textures = map::builtin_textures();
-  return map::generate_rooms(o);
-}
+map::Source random_soup(size_t walls, uint64_t seed) { return map::generate_soup(options(walls, seed)); }
+map::Source random_rooms(size_t walls, uint64_t seed) { return map::generate_rooms(options(walls, seed)); }
 
 level::Level compile(const map::Source& source, bsp::Strategy strategy, uint64_t seed) {
   map::validate(source);
