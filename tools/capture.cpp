@@ -13,11 +13,13 @@ using namespace p3d;
 
 namespace {
 
-std::string columns_csv(const render::ColumnHits& hits) {
+// The wall column is the wall's source number: its statement in a .map, its LINEDEF in a WAD.
+std::string columns_csv(const level::Level& level, const render::ColumnHits& hits) {
   std::string out = "x,wall,dist\n";
   char line[96];
   for (size_t x = 0; x < hits.size(); ++x) {
-    std::snprintf(line, sizeof line, "%zu,%d,%.9g\n", x, hits[x].wall, hits[x].wall < 0 ? 0.0 : hits[x].dist);
+    const int wall = hits[x].wall < 0 ? -1 : level.walls[size_t(hits[x].wall)].source;
+    std::snprintf(line, sizeof line, "%zu,%d,%.9g\n", x, wall, wall < 0 ? 0.0 : hits[x].dist);
     out += line;
   }
   return out;
@@ -27,15 +29,15 @@ std::string columns_csv(const render::ColumnHits& hits) {
 
 int main(int argc, char** argv) {
   CLI::App app{"capture: render frames of a compiled level (.bsp) to PNG files", "capture"};
-  std::string map_path, output, pos_text, size_text = "640x400", renderer_name = "bsp", columns, cameras;
-  double angle = 0, eye = render::kEyeHeight, fov = 90;
-  bool stats = false;
+  cli::LevelArgs level_args;
+  std::string output, pos_text, size_text = "640x400", renderer_name = "bsp", columns, cameras;
+  std::optional<double> angle;
+  double eye = render::kEyeHeight, fov = 90;
+  bool stats = false, all_warnings = false;
   render::RendererOptions ropt;
-  app.add_option("map", map_path, "compiled level (.bsp), or a .map/.grid compiled on the fly")
-      ->required()
-      ->check(CLI::ExistingFile);
-  app.add_option("--pos", pos_text, "camera position X,Y (map units)");
-  app.add_option("--angle", angle, "view angle, degrees counter-clockwise from east")->capture_default_str();
+  cli::add_level_options(app, level_args);
+  app.add_option("--pos", pos_text, "camera position X,Y (map units; default: the player start)");
+  app.add_option("--angle", angle, "view angle, degrees counter-clockwise from east (default: the player's)");
   app.add_option("--eye", eye, "eye height above the floor")->capture_default_str();
   app.add_option("--fov", fov, "horizontal field of view, degrees")->check(CLI::Range(1.0, 179.0))->capture_default_str();
   app.add_option("--size", size_text, "resolution WxH")->capture_default_str();
@@ -48,6 +50,7 @@ int main(int argc, char** argv) {
   app.add_option("--columns", columns, "CSV of x,wall,dist per column (a directory with --cameras)");
   app.add_option("--cameras", cameras, "file of cameras: NAME X Y ANGLE [EYE [FOV]] per line")->check(CLI::ExistingFile);
   app.add_flag("--stats", stats, "print per-frame statistics and time per frame");
+  app.add_flag("--all-warnings", all_warnings, "list every warning about a WAD map's quirks");
   cli::add_renderer_options(app, ropt);
 
   return cli::run(app, argc, argv, [&] {
@@ -56,20 +59,25 @@ int main(int argc, char** argv) {
     auto renderer = render::make_renderer(renderer_name, ropt);
     if (!renderer) throw CLI::ValidationError("--renderer", "unknown renderer '" + renderer_name + "'");
 
+    const bsp::LevelSource source = cli::level_source(level_args);
     std::vector<render::CameraSpec> shots;
     if (!cameras.empty()) {
       if (!pos_text.empty()) throw CLI::ValidationError("--pos", "use either --pos or --cameras");
       shots = render::read_camera_list(cameras);
     } else {
-      if (pos_text.empty()) throw CLI::ValidationError("--pos", "a camera position is required (or --cameras)");
-      if (!std::isfinite(angle)) throw CLI::ValidationError("--angle", "must be finite");
+      if (angle && !std::isfinite(*angle)) throw CLI::ValidationError("--angle", "must be finite");
       cli::check_eye(eye);
-      shots.push_back({"", cli::parse_point(pos_text, "--pos"), angle, eye, fov});
     }
 
-    const level::Level level = bsp::load_level(map_path);
+    const bsp::OpenedLevel opened = bsp::open_level(source);
+    cli::report_warnings(opened, all_warnings);
+    const level::Level& level = opened.level;
+    if (cameras.empty()) {  // one camera: where asked, else at the player start
+      const geom::Vec2 pos = pos_text.empty() ? level.player_start : cli::parse_point(pos_text, "--pos");
+      shots.push_back({"", pos, angle.value_or(pos_text.empty() ? level.player_angle : 0.0), eye, fov});
+    }
     if (!renderer->supports(level))
-      throw Error(map_path + ": the " + renderer_name + " renderer cannot draw this level");
+      throw Error(opened.name + ": the " + renderer_name + " renderer cannot draw this level");
     renderer->prepare(level);
     render::Frame frame(width, height);
     render::Probe probe;
@@ -84,7 +92,7 @@ int main(int argc, char** argv) {
       image::save_png(frame, many ? std::filesystem::path(output) / (shot.name + ".png") : std::filesystem::path(output));
       if (!columns.empty())
         write_file_atomically(many ? std::filesystem::path(columns) / (shot.name + ".csv") : std::filesystem::path(columns),
-                              columns_csv(probe.columns));
+                              columns_csv(level, probe.columns));
       if (stats) {
         std::vector<double> times{ms};  // median of a few more frames: one frame is too noisy to report
         for (int i = 0; i < 4; ++i) {

@@ -10,9 +10,11 @@
 #include <filesystem>
 #include <string>
 
+#include "engine/bsp/load.h"
 #include "engine/geom/geom.h"
 #include "engine/render/renderer.h"
 #include "engine/util/error.h"
+#include "engine/util/file.h"
 
 namespace p3d::cli {
 
@@ -55,6 +57,69 @@ inline void add_renderer_options(CLI::App& app, render::RendererOptions& o) {
   app.add_option("--max-steps", o.sphere_max_steps, "sphere: steps before a ray gives up")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
+}
+
+// The level a tool works on: a file (.bsp, .map, .grid, or a WAD), or a map in WADs
+// named Doom's way (--iwad, --file, --map).
+struct LevelArgs {
+  std::string path;                // positional
+  std::string iwad;
+  std::vector<std::string> files;  // PWADs
+  std::string map;
+};
+
+inline void add_level_options(CLI::App& app, LevelArgs& a) {
+  app.add_option("level", a.path, "level: a compiled .bsp, a .map or .grid (compiled on the fly), or a WAD")
+      ->check(CLI::ExistingFile);
+  app.add_option("--iwad", a.iwad, "the IWAD whose maps and art to use, as Doom's -iwad")->check(CLI::ExistingFile);
+  app.add_option("--file", a.files, "PWADs loaded after the IWAD, later ones overriding (Doom's -file)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--map", a.map, "the WAD's map: MAP01, E1M1 (default: the first map of the last WAD holding maps)");
+}
+
+// Whether a file starts like a WAD (IWAD or PWAD).
+inline bool is_wad_file(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return false;
+  char magic[4] = {};
+  const bool wad = std::fread(magic, 1, 4, f) == 4 && (std::string_view(magic, 4) == "IWAD" || std::string_view(magic, 4) == "PWAD");
+  std::fclose(f);
+  return wad;
+}
+
+// Throws CLI::ValidationError for a contradictory or missing choice.
+inline bsp::LevelSource level_source(const LevelArgs& a) {
+  bsp::LevelSource s;
+  s.map = a.map;
+  if (!a.iwad.empty()) {
+    if (!a.path.empty())
+      throw CLI::ValidationError("--iwad", "name either a level file or --iwad, not both ('" + a.path + "')");
+    s.wads.push_back(a.iwad);
+  } else if (!a.path.empty() && is_wad_file(a.path)) {
+    s.wads.push_back(a.path);  // a WAD named alone: its own maps and art
+  } else if (!a.files.empty()) {
+    throw CLI::ValidationError("--file", "PWADs need the IWAD they build on: add --iwad");
+  } else if (a.path.empty()) {
+    throw CLI::ValidationError("level", "name a level file, or a WAD map with --iwad [--file ...] [--map ...]");
+  } else {
+    if (!a.map.empty()) throw CLI::ValidationError("--map", "names a map in WADs: use it with --iwad");
+    s.file = a.path;
+    return s;
+  }
+  for (const std::string& f : a.files) s.wads.push_back(f);
+  return s;
+}
+
+// Prints importer warnings: all of them, or a one-line count that says where to see them.
+inline void report_warnings(const bsp::OpenedLevel& opened, bool all) {
+  const auto& warnings = opened.warnings;
+  if (warnings.empty()) return;
+  if (all) {
+    for (const std::string& w : warnings) std::fprintf(stderr, "%s\n", w.c_str());
+    return;
+  }
+  std::fprintf(stderr, "%s: %zu warning%s about quirks Doom tolerates (mapc lists them)\n", opened.name.c_str(),
+               warnings.size(), warnings.size() == 1 ? "" : "s");
 }
 
 // Runs a tool's body: CLI errors exit 2 with usage; p3d::Error and I/O errors exit 1.

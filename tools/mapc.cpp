@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "engine/bsp/build.h"
+#include "engine/bsp/load.h"
 #include "engine/bsp/check.h"
 #include "engine/level/io.h"
 #include "engine/render/renderer.h"
@@ -19,11 +20,12 @@ using namespace p3d;
 namespace {
 
 struct Args {
-  std::string input, output, strategy = "greedy", svg, pos;
+  cli::LevelArgs level;
+  std::string output, strategy = "greedy", svg, pos;
   double angle = 0, fov = 90;
   int columns = 160;
   uint64_t seed = 1;
-  bool stats = false, check = false;
+  bool stats = false, check = false, all_maps = false, all_warnings = false;
   bsp::Options options;
 };
 
@@ -92,13 +94,118 @@ class Progress {
   std::thread thread_;
 };
 
+// Prints one line per violated invariant; false if there were any.
+bool check(const level::Level& level, const std::string& name) {
+  const auto problems = bsp::check_invariants(level);
+  for (const std::string& p : problems) std::fprintf(stderr, "%s: invariant violated: %s\n", name.c_str(), p.c_str());
+  return problems.empty();
+}
+
+wad::ImportOptions import_options(const Args& a) {
+  wad::ImportOptions o;
+  if (!a.all_warnings) o.max_warnings_per_kind = 5;
+  return o;
+}
+
+// One level: compile, check, write the .bsp (and the SVG), print statistics.
+int compile_one(Args& a, const bsp::LevelSource& source, Progress& progress) {
+  progress.phase(source.is_wad() ? "reading the WADs" : "parsing and validating");
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<map::Source> parsed;
+  std::optional<wad::Stack> wads;
+  std::string map_name;
+  if (source.is_wad()) {
+    wads = bsp::read_wads(source.wads);
+    map_name = bsp::resolve_map_name(*wads, source.map);
+  } else if (bsp::is_source_path(source.file)) {
+    parsed = map::load_source(source.file);
+  } else {
+    throw Error(source.file.string() + ": not a map source (.map, .grid) or a WAD; a .bsp is already compiled");
+  }
+  const double parse_seconds = cli::seconds_since(start);
+
+  progress.phase("building the BSP");
+  const auto build_start = std::chrono::steady_clock::now();
+  a.options.progress = [&](double done) { progress.fraction(done); };
+  bsp::Stats stats;
+  std::vector<std::string> warnings;
+  const level::Level level = parsed ? bsp::build(*parsed, a.options, &stats)
+                                    : bsp::build_wad_map(*wads, map_name, a.options, &warnings, &stats, import_options(a));
+  const double build_seconds = cli::seconds_since(build_start);
+  for (const std::string& w : warnings) std::fprintf(stderr, "%s\n", w.c_str());
+
+  const std::string name = parsed ? source.file.string() : source.wads.back().filename().string() + ":" + map_name;
+  if (a.check) {
+    progress.phase("checking invariants");
+    if (!check(level, name)) return 1;
+  }
+  // Everything that can fail is decided before anything is written.
+  std::optional<tools::ViewTrace> view;
+  if (!a.svg.empty() && !a.pos.empty()) {
+    const auto camera = render::camera_at(level, cli::parse_point(a.pos, "--pos"), a.angle, render::kEyeHeight, a.fov);
+    view = tools::trace_view(level, camera, a.columns, std::max(1, a.columns * 5 / 8));
+  }
+  progress.phase("writing");
+  level::write(level, a.output);
+  if (!a.svg.empty()) write_file_atomically(a.svg, tools::overview_svg(level, view));
+  if (a.stats) print_stats(stats, parse_seconds, build_seconds, a.options);
+  return 0;
+}
+
+// Every map of the WADs into a directory, with a progress line and a summary table.
+int compile_all(Args& a, const bsp::LevelSource& source) {
+  if (!source.is_wad()) throw CLI::ValidationError("--all", "compiles every map of WADs: use it with --iwad (or a WAD)");
+  if (!a.svg.empty()) throw CLI::ValidationError("--svg", "draws one level: leave out --all");
+  const wad::Stack wads = bsp::read_wads(source.wads);
+  const std::vector<std::string> maps = wads.map_names();
+  if (maps.empty()) throw Error(source.wads.back().string() + ": the WADs hold no maps");
+  std::filesystem::create_directories(a.output);
+  const bool terminal = ::isatty(2);
+  std::printf("%-6s %-28s %7s %9s %7s %9s %8s %9s\n", "map", "title", "walls", "fragments", "nodes", "depth", "warnings",
+              "ms");
+  size_t failed = 0, total_warnings = 0;
+  double total_ms = 0;
+  for (size_t i = 0; i < maps.size(); ++i) {
+    if (terminal) std::fprintf(stderr, "\r[%zu/%zu] %s...   ", i + 1, maps.size(), maps[i].c_str());
+    try {
+      const auto start = std::chrono::steady_clock::now();
+      bsp::Stats stats;
+      std::vector<std::string> warnings;
+      const level::Level level = bsp::build_wad_map(wads, maps[i], a.options, &warnings, &stats, import_options(a));
+      if (a.check && !check(level, maps[i])) throw Error(maps[i] + ": the BSP breaks its invariants");
+      level::write(level, std::filesystem::path(a.output) / (maps[i] + ".bsp"));
+      const double ms = cli::seconds_since(start) * 1000;
+      total_ms += ms;
+      total_warnings += warnings.size();
+      if (terminal) std::fprintf(stderr, "\r%40s\r", "");
+      if (a.all_warnings)
+        for (const std::string& w : warnings) std::fprintf(stderr, "%s\n", w.c_str());
+      std::string title = level.title.substr(std::min(level.title.size(), maps[i].size() + 2));
+      if (title.size() > 28) title = title.substr(0, 27) + "~";
+      char depth[32];
+      std::snprintf(depth, sizeof depth, "%zu/%.1f", stats.max_depth, stats.mean_depth);
+      std::printf("%-6s %-28s %7zu %9zu %7zu %9s %8zu %9.1f\n", maps[i].c_str(), title.c_str(), stats.walls,
+                  stats.fragments, stats.nodes, depth, warnings.size(), ms);
+    } catch (const std::exception& e) {
+      if (terminal) std::fprintf(stderr, "\r%40s\r", "");
+      std::fprintf(stderr, "%s\n", e.what());
+      ++failed;
+    }
+  }
+  std::printf("%zu maps compiled into %s, %zu failed, %zu warnings%s, %.0f ms\n", maps.size() - failed,
+              a.output.c_str(), failed, total_warnings, a.all_warnings ? "" : " (--all-warnings lists them)", total_ms);
+  return failed ? 1 : 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"mapc: compile a .map level into a self-contained BSP (.bsp)", "mapc"};
+  CLI::App app{"mapc: compile a level (.map, .grid, or a WAD map) into a self-contained BSP (.bsp)", "mapc"};
   Args a;
-  app.add_option("input", a.input, "map source (.map or .grid)")->required()->check(CLI::ExistingFile);
-  app.add_option("-o,--output", a.output, "compiled level to write (.bsp)")->required();
+  cli::add_level_options(app, a.level);
+  app.add_option("-o,--output", a.output, "compiled level to write (.bsp); with --all, a directory")->required();
+  app.add_flag("--all", a.all_maps, "compile every map of the WADs into the -o directory, with a summary table");
+  app.add_flag("--all-warnings", a.all_warnings, "list every warning about a WAD map's quirks (default: 5 of a kind)");
   app.add_option("--strategy", a.strategy, "splitter choice: first, random, freesplit or greedy")
       ->check(CLI::IsMember({"first", "random", "freesplit", "greedy"}))
       ->capture_default_str();
@@ -129,37 +236,12 @@ int main(int argc, char** argv) {
   return cli::run(app, argc, argv, [&] {
     a.options.strategy = *bsp::parse_strategy(a.strategy);
     a.options.seed = a.seed;
-
+    const bsp::LevelSource source = cli::level_source(a.level);
+    if (a.all_maps) {
+      if (!a.level.map.empty()) throw CLI::ValidationError("--all", "compiles every map: leave out --map");
+      return compile_all(a, source);
+    }
     Progress progress;
-    progress.phase("parsing and validating");
-    const auto start = std::chrono::steady_clock::now();
-    const map::Source source = map::load_source(a.input);
-    const double parse_seconds = cli::seconds_since(start);
-
-    progress.phase("building the BSP");
-    const auto build_start = std::chrono::steady_clock::now();
-    a.options.progress = [&](double done) { progress.fraction(done); };
-    bsp::Stats stats;
-    const level::Level level = bsp::build(source, a.options, &stats);
-    const double build_seconds = cli::seconds_since(build_start);
-
-    if (a.check) {
-      progress.phase("checking invariants");
-      const auto problems = bsp::check_invariants(level);
-      for (const std::string& p : problems) std::fprintf(stderr, "%s: invariant violated: %s\n", a.input.c_str(), p.c_str());
-      if (!problems.empty()) return 1;
-    }
-    progress.phase("writing");
-    level::write(level, a.output);
-    if (!a.svg.empty()) {
-      std::optional<tools::ViewTrace> view;
-      if (!a.pos.empty()) {
-        const auto camera = render::camera_at(level, cli::parse_point(a.pos, "--pos"), a.angle, render::kEyeHeight, a.fov);
-        view = tools::trace_view(level, camera, a.columns, std::max(1, a.columns * 5 / 8));
-      }
-      write_file_atomically(a.svg, tools::overview_svg(level, view));
-    }
-    if (a.stats) print_stats(stats, parse_seconds, build_seconds, a.options);
-    return 0;
+    return compile_one(a, source, progress);
   });
 }

@@ -99,23 +99,29 @@ class Builder {
   // ---- source -> level records -------------------------------------------
   void copy_source() {
     out_.title = src_.title;
+    out_.palette = src_.palette;
+    out_.light_maps = src_.light_maps;
     for (const map::Texture& t : src_.textures)
-      out_.textures.push_back(level::make_texture(t.name, t.image.width, t.image.height, t.image.pixels.data()));
+      out_.textures.push_back(level::make_texture(t.name, t.image.width, t.image.height, t.image.pixels.data(),
+                                                  t.indices.empty() ? nullptr : t.indices.data()));
+    auto flat = [](int texture) { return texture == map::kSkyTexture ? level::kSky : texture; };
     for (const map::Sector& s : src_.sectors)
-      out_.sectors.push_back({s.name, s.floor, s.ceiling, s.light, s.floor_texture,
-                              s.ceiling_texture == map::kSkyTexture ? level::kSky : s.ceiling_texture});
-    for (const map::Wall& w : src_.walls) {
+      out_.sectors.push_back(
+          {s.name, s.floor, s.ceiling, s.light, flat(s.floor_texture), flat(s.ceiling_texture), s.special, s.tag});
+    for (size_t i = 0; i < src_.walls.size(); ++i) {
+      const map::Wall& w = src_.walls[i];
       level::Wall lw;
       lw.p1 = src_.point(w.v1);
       lw.p2 = src_.point(w.v2);
-      lw.flags = (w.segment ? uint32_t{level::kSegment} : 0u) |
-                 (w.flags & map::kUnpegUpper ? uint32_t{level::kUnpegUpper} : 0u) |
-                 (w.flags & map::kUnpegLower ? uint32_t{level::kUnpegLower} : 0u);
+      lw.flags = wall_flags(w);
+      lw.source = w.source == map::kNone ? int32_t(i) : w.source;
+      lw.special = w.special;
+      lw.tag = w.tag;
       lw.sides[0] = side(w.front);
       lw.sides[1] = side(w.back);
       out_.walls.push_back(lw);
     }
-    for (const map::Thing& t : src_.things) out_.things.push_back({t.type, t.pos, t.angle});
+    for (const map::Thing& t : src_.things) out_.things.push_back({t.type, t.pos, t.angle, t.flags});
     out_.player_start = src_.player.pos;
     out_.player_angle = src_.player.angle;
     out_.default_sector = src_.default_sector;
@@ -124,7 +130,20 @@ class Builder {
   }
 
   static level::Side side(const map::Side& s) {
-    return {s.sector, s.upper, s.middle, s.lower, s.x_offset, s.y_offset};
+    level::Side out{s.sector, s.upper, s.middle, s.lower, s.x_offset, s.y_offset, {}, {}, s.light};
+    std::copy(std::begin(s.part_x), std::end(s.part_x), out.part_x);
+    std::copy(std::begin(s.part_y), std::end(s.part_y), out.part_y);
+    return out;
+  }
+
+  static uint32_t wall_flags(const map::Wall& w) {
+    const std::pair<unsigned, uint32_t> pairs[] = {{map::kUnpegUpper, level::kUnpegUpper}, {map::kUnpegLower, level::kUnpegLower},
+                                                   {map::kImpassable, level::kImpassable}, {map::kSecret, level::kSecret},
+                                                   {map::kHidden, level::kHidden},         {map::kMapped, level::kMapped}};
+    uint32_t flags = w.segment ? uint32_t{level::kSegment} : 0u;
+    for (const auto& [from, to] : pairs)
+      if (w.flags & from) flags |= to;
+    return flags;
   }
 
   // ---- the tree ------------------------------------------------------------
@@ -408,7 +427,7 @@ class Builder {
   }
 
   void check_player_start() const {
-    if (out_.sectors.empty() || out_.sector_at(out_.player_start) != level::kNone) return;
+    if (!opt_.player_must_be_inside || out_.sectors.empty() || out_.sector_at(out_.player_start) != level::kNone) return;
     throw Error(src_.player.loc, "player start is outside every sector");
   }
 

@@ -31,6 +31,7 @@ struct Options {
   double balance_weight = 1;     // cost of one fragment of imbalance between the sides
   double sliver_weight = 64;     // cost of a split leaving a piece shorter than kSliverLength
   std::function<void(double fraction_done)> progress;  // called now and then during the build
+  bool player_must_be_inside = true;  // a hand-written map's start must lie in a sector (imports only warn)
 };
 
 constexpr double kSliverLength = 1.0 / 16;  // map units
@@ -47,7 +48,8 @@ struct Stats {
   double random_bound() const;
 };
 
-// Throws Error (located at the player statement) if the player starts outside every sector.
+// Throws Error (located at the player statement) if the player starts outside every
+// sector and options.player_must_be_inside.
 level::Level build(const map::Source& source, const Options& options, Stats* stats = nullptr);
 
 }  // namespace p3d::bsp

@@ -1,6 +1,10 @@
 #include "engine/bsp/load.h"
 
+#include <algorithm>
+
 #include "engine/level/io.h"
+#include "engine/util/error.h"
+#include "engine/util/file.h"
 
 namespace p3d::bsp {
 
@@ -11,6 +15,75 @@ bool is_source_path(const std::filesystem::path& path) {
 level::Level load_level(const std::filesystem::path& path, const Options& options) {
   if (!is_source_path(path)) return level::read(path);
   return build(map::load_source(path), options);
+}
+
+wad::Stack read_wads(const std::vector<std::filesystem::path>& paths) {
+  wad::Stack stack;
+  for (const auto& path : paths) stack.add(wad::Wad(read_file_bytes(path), path.filename().string()));
+  return stack;
+}
+
+std::string resolve_map_name(const wad::Stack& wads, const std::string& name) {
+  if (!name.empty()) return wad::normalize_name(name);
+  for (auto w = wads.wads().rbegin(); w != wads.wads().rend(); ++w) {
+    const auto& lumps = w->lumps();
+    for (size_t i = 0; i + 1 < lumps.size(); ++i)
+      if (lumps[i + 1].name == "THINGS" || lumps[i + 1].name == "TEXTMAP") return lumps[i].name;
+  }
+  throw Error(wads.wads().back().name() + ": the WADs hold no maps");
+}
+
+// BEX strings in DEHACKED: HUSTR_E1M1 for ExMy maps, HUSTR_<n> for MAPnn.
+std::string map_title(const wad::Stack& wads, const std::string& map) {
+  const wad::Lump* dehacked = wads.find("DEHACKED");
+  if (!dehacked) return map;
+  std::string key = "HUSTR_" + map;
+  if (map.size() > 3 && map.compare(0, 3, "MAP") == 0) key = "HUSTR_" + std::to_string(std::atoi(map.c_str() + 3));
+  const std::string_view text(reinterpret_cast<const char*>(dehacked->bytes.data()), dehacked->bytes.size());
+  for (size_t pos = 0; pos < text.size();) {
+    size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(pos, end - pos);
+    pos = end + 1;
+    if (line.substr(0, key.size()) != key) continue;
+    const size_t eq = line.find('=');
+    if (eq == std::string_view::npos || line.substr(key.size(), eq - key.size()).find_first_not_of(" \t") != std::string_view::npos)
+      continue;
+    std::string_view value = line.substr(eq + 1);
+    while (!value.empty() && (value.front() == ' ' || value.front() == '\t')) value.remove_prefix(1);
+    while (!value.empty() && (value.back() == '\r' || value.back() == ' ')) value.remove_suffix(1);
+    if (value.empty() || value.size() > 120) return map;
+    std::string title = wad::printable(value);
+    // Freedoom's titles carry their own code ("C1M1: Outer Prison"): keep the map's name in front.
+    const size_t colon = title.find(": ");
+    return map + ": " + (colon != std::string::npos && colon < 8 ? title.substr(colon + 2) : title);
+  }
+  return map;
+}
+
+level::Level build_wad_map(const wad::Stack& wads, const std::string& map, const Options& options,
+                           std::vector<std::string>* warnings, Stats* stats, const wad::ImportOptions& import) {
+  wad::ImportResult imported = wad::import_map(wads, map, import);
+  imported.source.title = map_title(wads, wad::normalize_name(map));
+  Options o = options;
+  o.player_must_be_inside = false;
+  level::Level level = build(imported.source, o, stats);
+  if (warnings) {
+    warnings->insert(warnings->end(), imported.warnings.begin(), imported.warnings.end());
+    if (!level.sectors.empty() && level.sector_at(level.player_start) == level::kNone)
+      warnings->push_back(imported.source.player.loc.str() + ": warning: the player start lies outside every sector");
+  }
+  return level;
+}
+
+OpenedLevel open_level(const LevelSource& source, const Options& options, const wad::ImportOptions& import) {
+  if (!source.is_wad()) return {load_level(source.file, options), source.file.string(), {}};
+  const wad::Stack wads = read_wads(source.wads);
+  const std::string map = resolve_map_name(wads, source.map);
+  OpenedLevel out;
+  out.level = build_wad_map(wads, map, options, &out.warnings, nullptr, import);
+  out.name = source.wads.back().filename().string() + ":" + map;
+  return out;
 }
 
 }  // namespace p3d::bsp

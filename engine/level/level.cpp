@@ -11,17 +11,23 @@
 
 namespace p3d::level {
 
-Texture make_texture(const std::string& name, int width, int height, const uint32_t* rgba_rows) {
+Texture make_texture(const std::string& name, int width, int height, const uint32_t* rgba_rows,
+                     const uint8_t* index_rows) {
   Texture t;
   t.name = name;
   t.width = width;
   t.height = height;
-  t.width_mask = width - 1;
-  t.height_mask = height - 1;
-  t.height_shift = std::countr_zero(static_cast<unsigned>(height));
+  t.pow2_width = std::has_single_bit(static_cast<unsigned>(width));
+  t.pow2_height = std::has_single_bit(static_cast<unsigned>(height));
   t.texels.resize(size_t(width) * height);
+  if (index_rows) t.indices.resize(t.texels.size());
   for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) t.texels[size_t(x) * height + y] = rgba_rows[size_t(y) * width + x];
+    for (int x = 0; x < width; ++x) {
+      const size_t from = size_t(y) * width + x, to = size_t(x) * height + y;
+      t.texels[to] = rgba_rows[from];
+      t.holes |= (rgba_rows[from] >> 24) == 0;
+      if (index_rows) t.indices[to] = index_rows[from];
+    }
   return t;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/geom/geom.h"
+#include "engine/util/limits.h"
 
 namespace p3d::level {
 
@@ -19,40 +20,66 @@ using geom::Vec2;
 constexpr int kNone = -1;
 constexpr int kSky = -2;  // ceiling texture index meaning "draw the sky"
 
+// x mod n in [0, n), for any sign of x (n > 0).
+inline int64_t floor_mod(int64_t x, int64_t n) {
+  const int64_t r = x % n;
+  return r < 0 ? r + n : r;
+}
+
+// A texture of any size. Sides that are powers of two wrap by mask, others by
+// modulo (Doom's 72- and 96-high textures repeat like any other).
 struct Texture {
   std::string name;
-  int width = 0, height = 0;           // powers of two
-  std::vector<uint32_t> texels;        // column-major: texels[u * height + v], RGBA8
-  uint32_t width_mask = 0, height_mask = 0;
-  int height_shift = 0;                // log2(height)
+  int width = 0, height = 0;
+  std::vector<uint32_t> texels;   // column-major: texels[u * height + v], RGBA8; alpha 0 = transparent
+  std::vector<uint8_t> indices;   // paletted levels: palette indices, laid out as texels; else empty
+  // Derived by make_texture:
+  bool holes = false;             // some texel is transparent
+  bool pow2_width = false, pow2_height = false;
 
-  const uint32_t* column(int u) const { return texels.data() + (size_t(u & width_mask) << height_shift); }
-  uint32_t at(int u, int v) const { return column(u)[v & height_mask]; }
+  int wrap_u(int64_t u) const { return int(pow2_width ? u & (width - 1) : floor_mod(u, width)); }
+  int wrap_v(int64_t v) const { return int(pow2_height ? v & (height - 1) : floor_mod(v, height)); }
+  const uint32_t* column(int64_t u) const { return texels.data() + size_t(wrap_u(u)) * height; }
+  const uint8_t* index_column(int64_t u) const { return indices.data() + size_t(wrap_u(u)) * height; }
+  uint32_t at(int64_t u, int64_t v) const { return column(u)[wrap_v(v)]; }
 };
 
 struct Sector {
   std::string name;
-  double floor = 0, ceiling = 0;
+  double floor = 0, ceiling = 0;  // a ceiling below the floor is drawn as Doom draws it
   int light = 0;  // 0..255
-  int floor_texture = kNone, ceiling_texture = kNone;  // ceiling may be kSky
+  int floor_texture = kNone, ceiling_texture = kNone;  // either may be kSky
+  int special = 0, tag = 0;  // Doom's sector special and tag
 };
+
+// Per wall part, as in Side::part_x.
+enum Part { kUpperPart = 0, kMiddlePart = 1, kLowerPart = 2 };
 
 struct Side {
   int sector = kNone;
   int upper = kNone, middle = kNone, lower = kNone;
   double x_offset = 0, y_offset = 0;
+  double part_x[3] = {0, 0, 0}, part_y[3] = {0, 0, 0};  // added to the offsets per Part
+  int light = kNone;  // the wall's own light level, or kNone for its sector's
 };
 
 enum WallFlag : uint32_t {
   kSegment = 1,     // a plain solid segment with no sector, visible from both sides
   kUnpegUpper = 2,
   kUnpegLower = 4,
+  kImpassable = 8,  // a two-sided wall that blocks movement
+  kSecret = 16,     // automap: drawn as one-sided
+  kHidden = 32,     // automap: never drawn
+  kMapped = 64,     // automap: known from the start
 };
+constexpr uint32_t kWallFlags = kSegment | kUnpegUpper | kUnpegLower | kImpassable | kSecret | kHidden | kMapped;
 
 struct Wall {
   geom::IPoint p1, p2;  // exact fixed-point ends; the front side is on the right of p1 -> p2
   Side sides[2];        // [0] front (right), [1] back (left); one-sided walls have sides[1].sector == kNone
   uint32_t flags = 0;
+  int32_t source = 0;   // the number users know it by: its statement (.map) or LINEDEF (WAD); --columns reports it
+  int32_t special = 0, tag = 0;  // Doom's line special and tag
   // Derived on load:
   Vec2 a, b;            // p1, p2 in map units
   double length = 0;
@@ -99,6 +126,7 @@ struct Thing {
   int type = 0;
   Vec2 pos;
   double angle = 0;
+  uint32_t flags = 0;  // Doom's thing flags (map::ThingFlags)
 };
 
 // The tile grid of a level compiled from a .grid map, for the grid ray caster.
@@ -128,6 +156,11 @@ struct Level {
   double player_angle = 0;
   int default_sector = kNone;
   int sky_texture = kNone;
+  // Paletted levels (WAD art): the palette, and limits::kLightMaps maps of its colours
+  // shaded (map m of index i at [m * kPaletteSize + i], map 0 full bright). Both empty:
+  // textures are RGBA, shaded by multiplying.
+  std::vector<uint32_t> palette, light_maps;
+  bool paletted() const { return !light_maps.empty(); }
   std::optional<Grid> grid;  // levels compiled from .grid maps
   // Derived on load:
   BBox bounds;              // of all walls
@@ -145,8 +178,9 @@ void finalize(Level& level);
 // Side of p relative to a node's splitter: > 0 back (left), < 0 front (right).
 inline double splitter_side(const Node& n, Vec2 p) { return geom::cross(n.direction, p - n.origin); }
 
-// Texture from an RGBA8 row-major image.
-Texture make_texture(const std::string& name, int width, int height, const uint32_t* rgba_rows);
+// Texture from an RGBA8 row-major image, with its palette indices (row-major) when the level is paletted.
+Texture make_texture(const std::string& name, int width, int height, const uint32_t* rgba_rows,
+                     const uint8_t* index_rows = nullptr);
 
 // Walks the walls hit by the ray origin + s * dir (s > 0) in order of distance,
 // using the BSP. visit(wall, s, t) returns false to stop. Hits at a fragment's

@@ -9,6 +9,7 @@
 #include "engine/level/io.h"
 #include "engine/util/bytes.h"
 #include "engine/util/file.h"
+#include "engine/util/limits.h"
 
 namespace p3d::level {
 
@@ -20,12 +21,13 @@ class Reader {
 
   Level run() {
     section(format::kMeta, "META");
-    level_.title = in_.str(format::kMaxNameLength * 4);
+    level_.title = in_.str(limits::kMaxTitleLength);
     level_.player_start = {finite("player x"), finite("player y")};
     level_.player_angle = finite("player angle");
     level_.default_sector = in_.i32();
     level_.sky_texture = in_.i32();
 
+    read_palette();
     read_textures();
     read_sectors();
     read_walls();
@@ -52,26 +54,55 @@ class Reader {
     if (!std::isfinite(v)) in_.fail(std::string(what) + " is not finite");
     return v;
   }
+  // Heights are bounded like coordinates: the renderer's arithmetic is sized for them.
+  double height(const char* what) {
+    const double v = finite(what);
+    if (std::fabs(v) > geom::kMaxCoord) in_.fail(std::string(what) + " is out of range");
+    return v;
+  }
   void index(int32_t v, int32_t lo, size_t count, const std::string& what) const {
     if (v < lo || v >= static_cast<int64_t>(count)) in_.fail(what + " index " + std::to_string(v) + " is out of range");
   }
 
+  void read_palette() {
+    section(format::kPalette, "PALT");
+    const uint32_t paletted = in_.u32();
+    if (paletted > 1) in_.fail("bad palette flag");
+    if (!paletted) return;
+    const size_t colors = limits::kPaletteSize, maps = size_t(limits::kLightMaps) * limits::kPaletteSize;
+    if (in_.remaining() < 4 * (colors + maps)) in_.fail("truncated palette");
+    level_.palette.resize(colors);
+    for (uint32_t& c : level_.palette) c = in_.u32();
+    level_.light_maps.resize(maps);
+    for (uint32_t& c : level_.light_maps) c = in_.u32();
+  }
+
   void read_textures() {
     section(format::kTextures, "TEXS");
-    const uint32_t n = in_.count(12, "textures");
+    const uint32_t n = in_.count(format::kTextureHeader, "textures");
     level_.textures.reserve(n);
     for (uint32_t i = 0; i < n; ++i) {
-      const std::string name = in_.str(format::kMaxNameLength);
+      const std::string name = in_.str(limits::kMaxNameLength);
       const uint32_t w = in_.u32(), h = in_.u32();
-      auto pow2 = [](uint32_t v) { return v > 0 && v <= uint32_t(format::kMaxTextureSize) && std::has_single_bit(v); };
-      if (!pow2(w) || !pow2(h))
-        in_.fail("texture '" + name + "' has a bad size " + std::to_string(w) + "x" + std::to_string(h));
-      const auto bytes = in_.raw(size_t(w) * h * 4);
-      std::vector<uint32_t> rows(size_t(w) * h);
-      for (size_t p = 0; p < rows.size(); ++p)
-        rows[p] = uint32_t(bytes[4 * p]) | uint32_t(bytes[4 * p + 1]) << 8 | uint32_t(bytes[4 * p + 2]) << 16 |
-                  uint32_t(bytes[4 * p + 3]) << 24;
-      level_.textures.push_back(make_texture(name, int(w), int(h), rows.data()));
+      const auto fits = [](uint32_t v) { return v > 0 && v <= uint32_t(limits::kMaxTextureSize); };
+      if (!fits(w) || !fits(h))
+        in_.fail("texture " + std::to_string(i) + " '" + name + "' has a bad size " + std::to_string(w) + "x" +
+                 std::to_string(h));
+      const size_t texels = size_t(w) * h;
+      std::vector<uint32_t> rows(texels);
+      if (!level_.paletted()) {
+        const auto bytes = in_.raw(texels * 4);
+        for (size_t p = 0; p < texels; ++p)
+          rows[p] = uint32_t(bytes[4 * p]) | uint32_t(bytes[4 * p + 1]) << 8 | uint32_t(bytes[4 * p + 2]) << 16 |
+                    uint32_t(bytes[4 * p + 3]) << 24;
+        level_.textures.push_back(make_texture(name, int(w), int(h), rows.data()));
+        continue;
+      }
+      const auto indices = in_.raw(texels);
+      const auto opacity = in_.raw((texels + 7) / 8);
+      for (size_t p = 0; p < texels; ++p)
+        rows[p] = opacity[p / 8] >> (p % 8) & 1 ? level_.palette[indices[p]] : 0u;
+      level_.textures.push_back(make_texture(name, int(w), int(h), rows.data(), indices.data()));
     }
   }
 
@@ -80,14 +111,15 @@ class Reader {
     const uint32_t n = in_.count(format::kSectorRecord, "sectors");
     level_.sectors.resize(n);
     for (Sector& s : level_.sectors) {
-      s.name = in_.str(format::kMaxNameLength);
-      s.floor = finite("sector floor");
-      s.ceiling = finite("sector ceiling");
-      if (s.ceiling < s.floor) in_.fail("sector '" + s.name + "' has its ceiling below its floor");
+      s.name = in_.str(limits::kMaxNameLength);
+      s.floor = height("sector floor");
+      s.ceiling = height("sector ceiling");
       s.light = in_.i32();
       if (s.light < 0 || s.light > 255) in_.fail("sector '" + s.name + "' has light out of range");
       s.floor_texture = in_.i32();
       s.ceiling_texture = in_.i32();
+      s.special = in_.i32();
+      s.tag = in_.i32();
     }
   }
 
@@ -99,6 +131,10 @@ class Reader {
     s.lower = in_.i32();
     s.x_offset = finite("side x offset");
     s.y_offset = finite("side y offset");
+    for (double& v : s.part_x) v = finite("side part x offset");
+    for (double& v : s.part_y) v = finite("side part y offset");
+    s.light = in_.i32();
+    if (s.light != kNone && (s.light < 0 || s.light > 255)) in_.fail("side light out of range");
     return s;
   }
 
@@ -113,7 +149,11 @@ class Reader {
         if (c < -geom::kMaxFixed || c > geom::kMaxFixed) in_.fail("wall coordinate out of range");
       if (w.p1 == w.p2) in_.fail("zero-length wall");
       w.flags = in_.u32();
-      if (w.flags & ~uint32_t(kSegment | kUnpegUpper | kUnpegLower)) in_.fail("unknown wall flags");
+      if (w.flags & ~kWallFlags) in_.fail("unknown wall flags");
+      w.source = in_.i32();
+      if (w.source < 0) in_.fail("wall source number is negative");
+      w.special = in_.i32();
+      w.tag = in_.i32();
       w.sides[0] = read_side();
       w.sides[1] = read_side();
     }
@@ -149,19 +189,20 @@ class Reader {
 
   void read_leaves() {
     section(format::kLeaves, "LEAF");
-    const uint32_t n = in_.count(4, "leaves");
+    const uint32_t n = in_.count(format::kLeafRecord, "leaves");
     level_.leaves.resize(n);
     for (Leaf& l : level_.leaves) l.sector = in_.i32();
   }
 
   void read_things() {
     section(format::kThings, "THNG");
-    const uint32_t n = in_.count(28, "things");
+    const uint32_t n = in_.count(format::kThingRecord, "things");
     level_.things.resize(n);
     for (Thing& t : level_.things) {
       t.type = in_.i32();
       t.pos = {finite("thing x"), finite("thing y")};
       t.angle = finite("thing angle");
+      t.flags = in_.u32();
     }
   }
 
@@ -172,14 +213,14 @@ class Reader {
     if (!present) return;
     Grid g;
     const uint32_t cols = in_.u32(), rows = in_.u32();
-    if (cols < 1 || rows < 1 || cols > uint32_t(format::kMaxGridSide) || rows > uint32_t(format::kMaxGridSide))
+    if (cols < 1 || rows < 1 || cols > uint32_t(limits::kMaxGridSide) || rows > uint32_t(limits::kMaxGridSide))
       in_.fail("grid size out of range");
     g.cols = int(cols);
     g.rows = int(rows);
     g.cell = finite("grid cell");
     if (!(g.cell > 0) || g.cell * std::max(cols, rows) > geom::kMaxCoord) in_.fail("grid cell size out of range");
     const size_t cells = size_t(cols) * rows;
-    if (in_.remaining() < cells * 17) in_.fail("truncated grid");
+    if (in_.remaining() < cells * format::kGridCellBytes) in_.fail("truncated grid");
     const auto solid = in_.raw(cells);
     g.solid.assign(solid.begin(), solid.end());
     g.faces.resize(cells * 4);
@@ -225,8 +266,8 @@ class Reader {
     index(level_.default_sector, kNone, sectors, "default sector");
     index(level_.sky_texture, kNone, textures, "sky texture");
     for (const Sector& s : level_.sectors) {
-      index(s.floor_texture, 0, textures, "floor texture");
-      if (s.ceiling_texture != kSky || level_.sky_texture == kNone) index(s.ceiling_texture, 0, textures, "ceiling texture");
+      if (s.floor_texture != kSky) index(s.floor_texture, 0, textures, "floor texture");
+      if (s.ceiling_texture != kSky) index(s.ceiling_texture, 0, textures, "ceiling texture");
     }
     for (const Wall& w : level_.walls) {
       for (const Side& s : w.sides) {
@@ -237,8 +278,6 @@ class Reader {
         if (w.sides[0].middle == kNone || w.sides[1].middle == kNone) in_.fail("segment without a texture");
       } else if (w.sides[0].sector == kNone) {
         in_.fail("wall without a front sector");
-      } else if (w.sides[1].sector == kNone && w.sides[0].middle == kNone) {
-        in_.fail("one-sided wall without a middle texture");
       }
     }
     for (const Fragment& f : level_.fragments) {

@@ -17,6 +17,28 @@ void write_side(ByteWriter& out, const Side& s) {
   out.i32(s.lower);
   out.f64(s.x_offset);
   out.f64(s.y_offset);
+  for (double v : s.part_x) out.f64(v);
+  for (double v : s.part_y) out.f64(v);
+  out.i32(s.light);
+}
+
+// Rows of palette indices, then one opacity bit per texel; or rows of RGBA8.
+void write_texels(ByteWriter& out, const Texture& t, bool paletted) {
+  if (!paletted) {
+    for (int y = 0; y < t.height; ++y)
+      for (int x = 0; x < t.width; ++x) out.u32(t.at(x, y));  // R,G,B,A byte order
+    return;
+  }
+  for (int y = 0; y < t.height; ++y)
+    for (int x = 0; x < t.width; ++x) out.u8(t.index_column(x)[y]);
+  uint8_t bits = 0;
+  size_t p = 0;
+  for (int y = 0; y < t.height; ++y)
+    for (int x = 0; x < t.width; ++x, ++p) {
+      if (t.at(x, y) >> 24) bits |= uint8_t(1u << (p % 8));
+      if (p % 8 == 7) out.u8(bits), bits = 0;
+    }
+  if (p % 8) out.u8(bits);
 }
 
 void write_payload(ByteWriter& out, const Level& level) {
@@ -28,14 +50,20 @@ void write_payload(ByteWriter& out, const Level& level) {
   out.i32(level.default_sector);
   out.i32(level.sky_texture);
 
+  out.u32(format::kPalette);
+  out.u32(level.paletted() ? 1 : 0);
+  if (level.paletted()) {
+    for (uint32_t c : level.palette) out.u32(c);
+    for (uint32_t c : level.light_maps) out.u32(c);
+  }
+
   out.u32(format::kTextures);
   out.u32(static_cast<uint32_t>(level.textures.size()));
   for (const Texture& t : level.textures) {
     out.str(t.name);
     out.u32(t.width);
     out.u32(t.height);
-    for (int y = 0; y < t.height; ++y)
-      for (int x = 0; x < t.width; ++x) out.u32(t.at(x, y));  // rows, R,G,B,A byte order
+    write_texels(out, t, level.paletted());
   }
 
   out.u32(format::kSectors);
@@ -47,6 +75,8 @@ void write_payload(ByteWriter& out, const Level& level) {
     out.i32(s.light);
     out.i32(s.floor_texture);
     out.i32(s.ceiling_texture);
+    out.i32(s.special);
+    out.i32(s.tag);
   }
 
   out.u32(format::kWalls);
@@ -57,6 +87,9 @@ void write_payload(ByteWriter& out, const Level& level) {
     out.i64(w.p2.x);
     out.i64(w.p2.y);
     out.u32(w.flags);
+    out.i32(w.source);
+    out.i32(w.special);
+    out.i32(w.tag);
     write_side(out, w.sides[0]);
     write_side(out, w.sides[1]);
   }
@@ -96,6 +129,7 @@ void write_payload(ByteWriter& out, const Level& level) {
     out.f64(t.pos.x);
     out.f64(t.pos.y);
     out.f64(t.angle);
+    out.u32(t.flags);
   }
 
   out.u32(format::kGrid);

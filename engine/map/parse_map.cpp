@@ -137,8 +137,6 @@ class Parser {
       // Upper and lower textures default to the same on both sides.
       if (w.back.upper == kNone) w.back.upper = w.front.upper;
       if (w.back.lower == kNone) w.back.lower = w.front.lower;
-      if (w.front.middle != kNone || w.back.middle != kNone)
-        s.fail("two-sided walls take upper= and lower= textures; masked middle textures are not supported");
     } else {
       if (w.front.middle == kNone) s.fail("one-sided wall needs a middle= texture");
     }

@@ -10,6 +10,7 @@
 #include "engine/geom/geom.h"
 #include "engine/image/image.h"
 #include "engine/util/error.h"
+#include "engine/util/limits.h"
 
 namespace p3d::map {
 
@@ -18,10 +19,11 @@ constexpr int kSkyTexture = -2;  // the ceiling texture name "sky": draw the sky
 
 struct Texture {
   std::string name;
-  image::Image image;  // power-of-two sides, at most kMaxTextureSize
+  image::Image image;             // RGBA; alpha 0 where transparent. Any size up to kMaxTextureSize
+  std::vector<uint8_t> indices;   // paletted art (WAD levels): each pixel's palette index, row-major; else empty
   FileLoc loc;
 };
-constexpr int kMaxTextureSize = 1024;
+using limits::kMaxTextureSize;
 
 struct Vertex {
   std::string name;
@@ -34,6 +36,7 @@ struct Sector {
   double floor = 0, ceiling = 128;
   int light = 160;  // 0..255
   int floor_texture = kNone, ceiling_texture = kNone;  // index, or kSkyTexture for the ceiling
+  int special = 0, tag = 0;  // Doom's sector special and tag (WAD levels)
   FileLoc loc;
 };
 
@@ -42,11 +45,17 @@ struct Side {
   int sector = kNone;
   int upper = kNone, middle = kNone, lower = kNone;  // texture indices
   double x_offset = 0, y_offset = 0;
+  double part_x[3] = {0, 0, 0}, part_y[3] = {0, 0, 0};  // added per part: upper, middle, lower (UDMF)
+  int light = kNone;  // the wall's own light level, or kNone for its sector's
 };
 
 enum WallFlags : unsigned {
   kUnpegUpper = 1,  // upper texture hangs from the ceiling instead of resting on the back ceiling
   kUnpegLower = 2,  // lower (and one-sided middle) texture is aligned from the bottom
+  kImpassable = 4,  // a two-sided wall nothing walks through (Doom's ML_BLOCKING)
+  kSecret = 8,      // shown as one-sided on the automap
+  kHidden = 16,     // never shown on the automap
+  kMapped = 32,     // on the automap from the start
 };
 
 struct Wall {
@@ -54,15 +63,28 @@ struct Wall {
   Side front, back;    // back.sector == kNone: one-sided or a plain segment
   bool segment = false;  // a plain solid segment with no sector, visible from both sides
   unsigned flags = 0;
+  int source = kNone;  // the number users know the wall by (WAD levels: its LINEDEF); kNone: its index
+  int special = 0, tag = 0;  // Doom's line special and tag (WAD levels)
   FileLoc loc;
 
   bool two_sided() const { return back.sector != kNone; }
+};
+
+// Doom's thing flags (the WAD's bits): the skills a thing appears at, and more.
+enum ThingFlags : uint32_t {
+  kThingEasy = 1,        // skills 1 and 2
+  kThingMedium = 2,      // skill 3
+  kThingHard = 4,        // skills 4 and 5
+  kThingAmbush = 8,
+  kThingNotSingle = 16,  // multiplayer only
+  kThingAllSkills = kThingEasy | kThingMedium | kThingHard,
 };
 
 struct Thing {
   int type = 0;
   geom::Vec2 pos;
   double angle = 0;  // degrees, counter-clockwise from east
+  uint32_t flags = kThingAllSkills;
 };
 
 struct PlayerStart {
@@ -93,6 +115,9 @@ struct Source {
   PlayerStart player;
   int default_sector = kNone;  // used where no sector bounds a point (segment-only maps always have one)
   int sky_texture = kNone;
+  // Paletted art (WAD levels): the palette and its limits::kLightMaps light maps (Doom's
+  // COLORMAP through PLAYPAL; map m of index i at [m * kPaletteSize + i], map 0 full bright).
+  std::vector<uint32_t> palette, light_maps;
   std::optional<GridInfo> grid;  // for .grid maps
 
   geom::IPoint point(int vertex) const { return vertices[vertex].pos; }
@@ -117,6 +142,23 @@ void grid_to_walls(Source& source, const GridInfo& grid, const std::vector<int>&
 
 // Geometry and consistency checks shared by every source format: zero-length,
 // crossing and overlapping walls, sector closure, heights, required textures.
+// Throws Error at the first problem (hand-written maps must be clean).
 void validate(const Source& source);
+
+// The checks behind validate, as lists (WAD imports report them as warnings).
+struct Contact {
+  uint32_t a, b;  // walls, a < b
+  geom::SegmentContact kind;  // kCross or kOverlap
+};
+// Pairs of walls that cross or overlap: the max_count with the smallest (b, a), in that order.
+std::vector<Contact> find_contacts(const Source& source, size_t max_count);
+struct OpenSector {
+  int sector;
+  geom::IPoint at;  // the open point at the smallest coordinates
+};
+// Sectors whose boundary does not close, in sector order.
+std::vector<OpenSector> find_open_sectors(const Source& source);
+// Sectors no wall bounds (the default sector excepted).
+std::vector<int> unused_sectors(const Source& source);
 
 }  // namespace p3d::map

@@ -3,6 +3,7 @@
 // make sense. Messages point at the line of the offending statement.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <unordered_map>
 
 #include "engine/map/source.h"
@@ -15,10 +16,10 @@ using geom::IPoint;
 
 // Candidate pairs come from a uniform grid: each wall is entered in the cells its
 // segment passes through, and walls sharing a cell are tested exactly.
-void check_crossings(const Source& src) {
+std::vector<Contact> find_contacts_impl(const Source& src, size_t max_count) {
   const auto& walls = src.walls;
   const size_t n = walls.size();
-  if (n < 2) return;
+  if (n < 2 || max_count == 0) return {};
 
   int64_t min_x = INT64_MAX, min_y = INT64_MAX, max_x = INT64_MIN, max_y = INT64_MIN;
   double total_length = 0;
@@ -56,35 +57,47 @@ void check_crossings(const Source& src) {
   }
   std::sort(entries.begin(), entries.end());
 
-  std::pair<uint32_t, uint32_t> worst{UINT32_MAX, UINT32_MAX};  // the conflict with the smallest later wall
-  geom::SegmentContact worst_kind = geom::SegmentContact::kNone;
+  // The max_count contacts with the smallest (later, earlier) walls: a max-heap on that key.
+  auto later_first = [](const Contact& x, const Contact& y) { return std::tie(x.b, x.a) < std::tie(y.b, y.a); };
+  std::vector<Contact> best;
   for (size_t begin = 0; begin < entries.size();) {
     size_t end = begin;
     while (end < entries.size() && entries[end].first == entries[begin].first) ++end;
     for (size_t p = begin; p < end; ++p)
       for (size_t q = p + 1; q < end; ++q) {
         const uint32_t i = entries[p].second, j = entries[q].second;  // i < j (sorted)
-        if (std::make_pair(j, i) >= std::make_pair(worst.second, worst.first)) continue;
+        const Contact c{i, j, geom::SegmentContact::kNone};
+        if (best.size() == max_count && !later_first(c, best.front())) continue;
         const auto kind = geom::segment_contact(src.point(walls[i].v1), src.point(walls[i].v2),
                                                 src.point(walls[j].v1), src.point(walls[j].v2));
-        if (kind == geom::SegmentContact::kCross || kind == geom::SegmentContact::kOverlap) {
-          worst = {i, j};
-          worst_kind = kind;
+        if (kind != geom::SegmentContact::kCross && kind != geom::SegmentContact::kOverlap) continue;
+        if (std::any_of(best.begin(), best.end(), [&](const Contact& o) { return o.a == i && o.b == j; })) continue;
+        best.push_back({i, j, kind});
+        std::push_heap(best.begin(), best.end(), later_first);
+        if (best.size() > max_count) {
+          std::pop_heap(best.begin(), best.end(), later_first);
+          best.pop_back();
         }
       }
     begin = end;
   }
-  if (worst.first == UINT32_MAX) return;
-  const Wall& later = walls[worst.second];
-  const std::string other = walls[worst.first].loc.str();
-  if (worst_kind == geom::SegmentContact::kCross)
-    throw Error(later.loc, "wall crosses the wall at " + other);
+  std::sort(best.begin(), best.end(), later_first);
+  return best;
+}
+
+void check_crossings(const Source& src) {
+  const std::vector<Contact> contacts = find_contacts_impl(src, 1);
+  if (contacts.empty()) return;
+  const Contact& c = contacts.front();
+  const Wall& later = src.walls[c.b];
+  const std::string other = src.walls[c.a].loc.str();
+  if (c.kind == geom::SegmentContact::kCross) throw Error(later.loc, "wall crosses the wall at " + other);
   throw Error(later.loc, "wall overlaps the collinear wall at " + other);
 }
 
 // Walking a sector's boundary with the sector on the right, every point is
 // entered as often as it is left; otherwise the sector leaks.
-void check_sector_closure(const Source& src) {
+std::vector<OpenSector> find_open_sectors_impl(const Source& src) {
   struct Key {
     int sector;
     IPoint p;
@@ -96,9 +109,7 @@ void check_sector_closure(const Source& src) {
     }
   };
   std::unordered_map<Key, int, KeyHash> balance;
-  std::vector<bool> used(src.sectors.size(), false);
   auto edge = [&](int sector, int from, int to) {
-    used[sector] = true;
     balance[{sector, src.point(from)}] += 1;
     balance[{sector, src.point(to)}] -= 1;
   };
@@ -107,23 +118,27 @@ void check_sector_closure(const Source& src) {
     edge(w.front.sector, w.v1, w.v2);
     if (w.two_sided()) edge(w.back.sector, w.v2, w.v1);
   }
-  for (size_t s = 0; s < src.sectors.size(); ++s)
-    if (!used[s] && int(s) != src.default_sector)
-      throw Error(src.sectors[s].loc, "sector '" + src.sectors[s].name + "' is not bounded by any wall");
-
-  // Report the open point of the earliest sector, at the smallest coordinates.
-  const Key* worst = nullptr;
+  // Per sector, its open point at the smallest coordinates.
+  std::map<int, IPoint> open;
   for (const auto& [key, count] : balance) {
     if (count == 0) continue;
-    if (!worst || std::tie(key.sector, key.p.x, key.p.y) < std::tie(worst->sector, worst->p.x, worst->p.y))
-      worst = &key;
+    auto [it, fresh] = open.emplace(key.sector, key.p);
+    if (!fresh && std::tie(key.p.x, key.p.y) < std::tie(it->second.x, it->second.y)) it->second = key.p;
   }
-  if (worst) {
-    const geom::Vec2 p = geom::to_world(worst->p);
-    const Sector& s = src.sectors[worst->sector];
-    throw Error(s.loc, "sector '" + s.name + "' is not closed: its boundary has an open end at (" +
-                           std::to_string(p.x) + ", " + std::to_string(p.y) + ")");
-  }
+  std::vector<OpenSector> out;
+  for (const auto& [sector, p] : open) out.push_back({sector, p});
+  return out;
+}
+
+void check_sector_closure(const Source& src) {
+  for (int s : unused_sectors(src))
+    throw Error(src.sectors[s].loc, "sector '" + src.sectors[s].name + "' is not bounded by any wall");
+  const std::vector<OpenSector> open = find_open_sectors_impl(src);
+  if (open.empty()) return;
+  const geom::Vec2 p = geom::to_world(open.front().at);
+  const Sector& s = src.sectors[open.front().sector];
+  throw Error(s.loc, "sector '" + s.name + "' is not closed: its boundary has an open end at (" + std::to_string(p.x) +
+                         ", " + std::to_string(p.y) + ")");
 }
 
 // A two-sided wall shows an upper part where the far ceiling is lower than the
@@ -148,6 +163,25 @@ void check_wall_textures(const Source& src) {
 }
 
 }  // namespace
+
+std::vector<Contact> find_contacts(const Source& source, size_t max_count) {
+  return find_contacts_impl(source, max_count);
+}
+
+std::vector<OpenSector> find_open_sectors(const Source& source) { return find_open_sectors_impl(source); }
+
+std::vector<int> unused_sectors(const Source& src) {
+  std::vector<bool> used(src.sectors.size(), false);
+  for (const Wall& w : src.walls) {
+    if (w.segment) continue;
+    used[w.front.sector] = true;
+    if (w.two_sided()) used[w.back.sector] = true;
+  }
+  std::vector<int> out;
+  for (size_t s = 0; s < src.sectors.size(); ++s)
+    if (!used[s] && int(s) != src.default_sector) out.push_back(int(s));
+  return out;
+}
 
 void validate(const Source& src) {
   if (src.walls.empty()) throw Error(FileLoc{src.path.string(), 0}, "the map has no walls");

@@ -71,7 +71,7 @@ class BspFrontToBack final : public Renderer {
       bool drew = false;
       mask_.for_each_open(range.x0, range.x1, [&](int x) {
         double depth, t;
-        if (!projector.hit(x, depth, t) || t < f.t0 || t > f.t1) return;
+        if (!projector.hit(x, depth, t) || !in_fragment(f, t)) return;
         drew = true;
         if (canvas_.draw_wall(x, {f.wall, side, depth, t, int32_t(i)})) mask_.close(x);
       });

@@ -35,7 +35,8 @@ struct RenderStats {
   uint64_t subtrees_culled = 0;  // subtrees skipped because their box projects onto closed (or no) columns
   uint64_t fragments_drawn = 0;  // fragments that drew at least one column
   uint64_t columns_closed = 0;
-  uint64_t pixels_written = 0;
+  uint64_t pixels_written = 0;   // by walls, floors, ceilings and sky: each pixel once, front to back
+  uint64_t masked_pixels = 0;    // by masked middle textures, over what is behind them
   bool early_exit = false;       // the traversal stopped because every column was closed
   // Ray-based renderers:
   uint64_t rays = 0;
@@ -49,8 +50,9 @@ struct RenderStats {
   }
 };
 
-// Per screen column: the wall that closes it (source order), its perpendicular
-// distance, and the BSP fragment it was drawn from (-1 for non-BSP renderers).
+// Per screen column: the wall that closes it (its index in the level; the wall's
+// `source` is the number users know), its perpendicular distance, and the BSP
+// fragment it was drawn from (-1 for non-BSP renderers).
 struct ColumnHit {
   int32_t wall = -1;
   double dist = 0;

@@ -1,7 +1,12 @@
 // Column drawing: walls (perspective-correct texture columns), floors and
-// ceilings (exact per-pixel plane intersection), sky, and Doom's light diminishing.
-// Every pixel is a pure function of (surface, x, y), whatever order the
-// renderer visits surfaces in, so all renderers can agree to the bit.
+// ceilings (exact per-pixel plane intersection), sky, masked middle textures, and
+// Doom's light (its light levels and distance diminishing, through the level's own
+// light maps when its art is paletted). Every pixel is a pure function of (surface,
+// x, y), whatever order the renderer visits surfaces in, so all renderers can
+// agree to the bit.
+//
+// Index: lighting, texel sources, Canvas::begin/draw_wall/paint_wall/finish,
+// draw_hit (the rows of one hit), wall_span, draw_masked, plane_span, sky_span.
 #include "engine/render/draw.h"
 
 #include <cmath>
@@ -15,18 +20,35 @@ using level::kSky;
 
 constexpr uint32_t kVoidColor = image::rgba(18, 18, 26);
 constexpr uint32_t kMissingTexture = image::rgba(255, 0, 255);
+constexpr double kFix = 65536;  // 16.16 fixed point for texture coordinates
 
-// Doom's light: a sector's light picks a starting colormap (16 levels, 4 maps
-// apart); nearness brightens it by 1280 / distance maps, at most 23; 32 maps.
-constexpr double kLightK = 1280;
-constexpr double kLightCap = 23;
+// ---- lighting ------------------------------------------------------------------
+// Doom's light: a sector's light picks a starting light map (16 levels, 4 maps
+// apart, one level brighter or darker for walls along y or x); nearness brightens
+// walls by 1280 / depth maps (at most 23) and flats by 80 / (depth / 16 + 1)
+// (Doom's scalelight and zlight tables). 32 maps, 0 the brightest.
+constexpr int kLightLevels = 16;
+constexpr int kMapsPerLevel = 4;
+constexpr int kDarkest = limits::kLightMaps - 1;
 
-int light_start(int light, int contrast) { return (15 - std::clamp((light >> 4) + contrast, 0, 15)) * 4; }
-
-uint32_t light_multiplier(int start, double gain) {
-  const int map = std::clamp(start - static_cast<int>(std::min(kLightCap, gain)), 0, 31);
-  return static_cast<uint32_t>(32 - map) * 8;  // 256 = full bright
+int light_start(int light, int contrast) {
+  return (kLightLevels - 1 - std::clamp((light >> 4) + contrast, 0, kLightLevels - 1)) * kMapsPerLevel;
 }
+
+int wall_light_map(int start, double depth) {
+  constexpr double kWallLightK = 1280, kWallLightCap = 23;
+  const double gain = std::min(kWallLightCap, kWallLightK / depth);
+  return std::clamp(start - static_cast<int>(gain), 0, kDarkest);
+}
+
+int flat_light_map(int start, double depth) {
+  constexpr int kZLightSteps = 127;
+  const int step = depth >= 16.0 * kZLightSteps ? kZLightSteps : static_cast<int>(depth / 16);
+  return std::clamp(start - 80 / (step + 1), 0, kDarkest);
+}
+
+// RGBA art is shaded by multiplying with 256 / 32 per map: 256 is full bright.
+uint32_t multiplier(int map) { return static_cast<uint32_t>(limits::kLightMaps - map) * 8; }
 
 inline uint32_t shade(uint32_t c, uint32_t m) {
   const uint32_t rb = ((c & 0xFF00FFu) * m >> 8) & 0xFF00FFu;
@@ -34,7 +56,37 @@ inline uint32_t shade(uint32_t c, uint32_t m) {
   return rb | g | 0xFF000000u;
 }
 
-constexpr double kFix = 65536;  // 16.16 fixed point for texture coordinates
+// ---- texel sources -----------------------------------------------------------------
+// One texture column under one light map: paletted levels look the texel's index up
+// in the light map (Doom's colormap, in 32-bit), RGBA levels multiply.
+struct PalettedColumn {
+  const uint8_t* indices;
+  const uint32_t* light_map;
+  uint32_t operator()(size_t v) const { return light_map[indices[v]]; }
+};
+struct RgbaColumn {
+  const uint32_t* texels;
+  uint32_t multiplier;
+  uint32_t operator()(size_t v) const { return shade(texels[v], multiplier); }
+};
+
+// Rows y0..y1 of a column whose texel row is (v >> 16) mod period, v stepping by step.
+// v and step are already reduced modulo period, so one subtraction keeps v in range.
+template <typename Source>
+void wrapped_column(uint32_t* out, size_t pitch, int count, int64_t v, int64_t step, int64_t period, const Source& texel) {
+  for (int i = 0; i < count; ++i, out += pitch) {
+    *out = texel(size_t(v >> 16));
+    v += step;
+    if (v >= period) v -= period;
+  }
+}
+
+// Doubles that become texel coordinates are bounded first (offsets are, by the loaders):
+// this keeps the conversion defined whatever the camera.
+int64_t to_int(double v) {
+  constexpr double kLimit = 0x1p62;
+  return static_cast<int64_t>(std::clamp(std::floor(v), -kLimit, kLimit));
+}
 
 }  // namespace
 
@@ -45,6 +97,7 @@ void Canvas::begin(const level::Level& level, const View& view, Frame& frame, in
   hits_ = probe && probe->want_columns ? &probe->columns : nullptr;
   writes_ = probe && probe->want_writes ? &probe->writes : nullptr;
   columns_.assign(view.width, Column{0, view.height, camera_sector});
+  masked_.clear();
   if (row_dy_.size() != size_t(view.height) || (!row_dy_.empty() && row_dy_[0] != 0.5 - view.half_h)) {
     row_dy_.resize(view.height);
     row_inv_.resize(view.height);
@@ -55,7 +108,7 @@ void Canvas::begin(const level::Level& level, const View& view, Frame& frame, in
   }
   if (hits_) hits_->assign(view.width, ColumnHit{});
   if (writes_) writes_->assign(size_t(view.width) * view.height, 0);
-  pixels_ = closed_count_ = 0;
+  pixels_ = closed_count_ = masked_pixels_ = 0;
 }
 
 // The sector whose heights frame the hit: the facing side's; for a plain segment
@@ -66,12 +119,6 @@ int Canvas::near_sector(const level::Wall& w, const WallHit& hit, int x) const {
   const int column = x >= 0 ? columns_[x].sector : kNone;
   return column != kNone ? column : level_->default_sector;
 }
-
-// Where a hit's parts fall on screen, in rows; see draw_hit.
-struct Canvas::Rows {
-  int ceiling, floor;            // the near sector's ceiling and floor lines
-  int back_ceiling, back_floor;  // the far sector's, for two-sided walls
-};
 
 bool Canvas::draw_wall(int x, const WallHit& hit) {
   Column& c = columns_[x];
@@ -89,16 +136,19 @@ bool Canvas::draw_wall(int x, const WallHit& hit) {
 
 bool Canvas::clip_wall(int x, const WallHit& hit) {
   dry_ = true;
-  const uint64_t pixels = pixels_;
   const bool closed = draw_wall(x, hit);
-  pixels_ = pixels;
   dry_ = false;
   return closed;
 }
 
 void Canvas::paint_wall(int x, const WallHit& hit) {
   int top = 0, bottom = view_->height;
+  const size_t masked = masked_.size();
   draw_hit(x, hit, near_sector(level_->walls[hit.wall], hit, -1), top, bottom);
+  if (masked_.size() > masked) {  // back to front already: its masked texture goes on now
+    draw_masked(masked_.back());
+    masked_.pop_back();
+  }
 }
 
 void Canvas::paint_background(int x, int sector) { planes_to_horizon(x, 0, view_->height, sector); }
@@ -109,68 +159,88 @@ void Canvas::close(int x, const WallHit& hit) {
   if (hits_) (*hits_)[x] = {static_cast<int32_t>(hit.wall), hit.depth, hit.fragment};
 }
 
+void Canvas::finish() {
+  for (int x = 0; x < view_->width; ++x) {
+    Column& c = columns_[x];
+    planes_to_horizon(x, c.top, c.bottom, c.sector);
+  }
+  // Recorded per column nearest first: in reverse, every column gets them farthest first.
+  for (auto it = masked_.rbegin(); it != masked_.rend(); ++it) draw_masked(*it);
+}
+
 // Draws, within rows [top, bottom), the near sector's ceiling above the wall, its
-// floor below, and the wall's middle (solid) or upper and lower parts (two-sided).
-// On return [top, bottom) is what stays open behind the wall (empty when solid).
+// floor below, and the wall's middle (one-sided) or upper and lower parts
+// (two-sided). On return [top, bottom) is what stays open behind the wall.
+//
+// The rows stack from the top: near ceiling, upper part, opening, lower part, near
+// floor; each begins where the one above ends. So a sector whose ceiling lies below
+// its floor shows its ceiling over its floor, and a far one's upper part covers its
+// lower part, as Doom draws them, and no pixel is written twice. A part without a
+// texture shows the plane that would continue there (the far ceiling or floor, or
+// for a one-sided wall its own sector's planes), as Doom ports show a missing texture.
 void Canvas::draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom) {
   const level::Wall& w = level_->walls[hit.wall];
   const level::Side& side = w.sides[hit.side];
   if (near == kNone) {  // no sector to measure heights from: a wall over every open row
-    wall_span(x, top, bottom, side.middle, hit, 0, 255);
+    wall_span(x, top, bottom, {side.middle, level::kMiddlePart, 0, 255}, hit);
     top = bottom;
     return;
   }
   const level::Sector& s = level_->sectors[near];
-  const double eye = view_->eye, scale = view_->d / hit.depth;
-  auto row = [&](double z) { return view_->row_at(view_->half_h - (z - eye) * scale); };
-  Rows r{row(s.ceiling), row(s.floor), 0, 0};
-  const level::Sector* b = nullptr;
-  bool both_sky = false;
-  if (w.two_sided()) {
-    b = &level_->sectors[w.sides[1 - hit.side].sector];
-    r.back_ceiling = row(b->ceiling);
-    r.back_floor = row(b->floor);
-    both_sky = s.ceiling_texture == kSky && b->ceiling_texture == kSky;
-    if (both_sky) r.ceiling = std::max(r.ceiling, r.back_ceiling);  // Doom's sky hack: no upper part
-  }
+  const double scale = view_->d / hit.depth;
+  auto row = [&](double z) { return view_->row_at(view_->half_h - (z - view_->eye) * scale); };
+  const int far = w.two_sided() ? w.sides[1 - hit.side].sector : kNone;
+  const level::Sector* b = far != kNone ? &level_->sectors[far] : nullptr;
+  const bool both_sky = b && s.ceiling_texture == kSky && b->ceiling_texture == kSky;
+  const int light = side.light != kNone ? side.light : s.light;
+  auto height_of = [&](int texture) { return texture >= 0 ? double(level_->textures[texture].height) : 0.0; };
 
-  // A plane is seen only from its open side. An eye below the near floor (or above
-  // the near ceiling) looks into solid matter there: fill it, so no row is left
-  // unwritten (Doom would leave a hall of mirrors).
-  if (eye < s.ceiling)
-    plane_span(x, top, std::min(r.ceiling, bottom), near, true);
-  else
-    fill_span(x, top, std::min(r.ceiling, bottom), kVoidColor);
-  if (eye > s.floor)
-    plane_span(x, std::max(r.floor, top), bottom, near, false);
-  else
-    fill_span(x, std::max(r.floor, top), bottom, kVoidColor);
-  const int wall_top = std::max(top, r.ceiling), wall_bottom = std::min(bottom, r.floor);
+  int ceiling_row = row(s.ceiling);
+  if (both_sky) ceiling_row = std::max(ceiling_row, row(b->ceiling));  // Doom's sky hack: no upper part
+  const int wall_top = std::clamp(ceiling_row, top, bottom);
+  const int wall_bottom = std::clamp(row(s.floor), wall_top, bottom);
+  near_plane(x, top, wall_top, near, true);
+  near_plane(x, wall_bottom, bottom, near, false);
 
   if (!b) {
-    const int tex = side.middle;
-    const double h = tex >= 0 ? level_->textures[tex].height : 0;
-    wall_span(x, wall_top, wall_bottom, tex, hit, (w.flags & level::kUnpegLower) ? s.floor + h : s.ceiling, s.light);
+    if (side.middle == kNone) {
+      planes_to_horizon(x, wall_top, wall_bottom, near);
+    } else {
+      const double anchor = (w.flags & level::kUnpegLower) ? s.floor + height_of(side.middle) : s.ceiling;
+      wall_span(x, wall_top, wall_bottom, {side.middle, level::kMiddlePart, anchor, light}, hit);
+    }
     top = bottom;
     return;
   }
-  if (b->ceiling < s.ceiling && !both_sky) {
-    const double h = side.upper >= 0 ? level_->textures[side.upper].height : 0;
-    wall_span(x, wall_top, std::min(wall_bottom, r.back_ceiling), side.upper, hit,
-              (w.flags & level::kUnpegUpper) ? s.ceiling : b->ceiling + h, s.light);
+  const int upper_end = std::clamp(row(b->ceiling), wall_top, wall_bottom);
+  const int lower_start = std::clamp(row(b->floor), upper_end, wall_bottom);
+  if (side.upper == kNone) {
+    plane_span(x, wall_top, upper_end, far, true);
+  } else {
+    const double anchor = (w.flags & level::kUnpegUpper) ? s.ceiling : b->ceiling + height_of(side.upper);
+    wall_span(x, wall_top, upper_end, {side.upper, level::kUpperPart, anchor, light}, hit);
   }
-  if (b->floor > s.floor)
-    wall_span(x, std::max(wall_top, r.back_floor), wall_bottom, side.lower, hit,
-              (w.flags & level::kUnpegLower) ? s.ceiling : b->floor, s.light);
-  top = std::max(wall_top, r.back_ceiling);
-  bottom = std::min(wall_bottom, r.back_floor);
+  if (side.lower == kNone) {
+    plane_span(x, lower_start, wall_bottom, far, false);
+  } else {
+    const double anchor = (w.flags & level::kUnpegLower) ? s.ceiling : b->floor;  // Doom's rule for unpegged lowers
+    wall_span(x, lower_start, wall_bottom, {side.lower, level::kLowerPart, anchor, light}, hit);
+  }
+  if (side.middle != kNone && upper_end < lower_start && !dry_)
+    masked_.push_back({x, hit, near, far, upper_end, lower_start});
+  top = upper_end;
+  bottom = lower_start;
 }
 
 void Canvas::count(int x, int y0, int y1) {
-  if (dry_) return;
   pixels_ += static_cast<uint64_t>(y1 - y0);
   if (writes_)
     for (int y = y0; y < y1; ++y) ++(*writes_)[size_t(y) * view_->width + x];
+}
+
+void Canvas::count_one(int x, int y) {
+  ++masked_pixels_;
+  if (writes_) ++(*writes_)[size_t(y) * view_->width + x];
 }
 
 void Canvas::fill_span(int x, int y0, int y1, uint32_t color) {
@@ -180,29 +250,87 @@ void Canvas::fill_span(int x, int y0, int y1, uint32_t color) {
   for (int y = y0; y < y1; ++y, out += view_->width) *out = color;
 }
 
-// Texture row v at screen row y is v0 + y * step (anchor - height + y offset):
-// computed from row 0 so a pixel does not depend on where its span starts.
-void Canvas::wall_span(int x, int y0, int y1, int texture, const WallHit& hit, double anchor, int light) {
+// The near sector's ceiling (or floor) in front of a wall: seen only from its open
+// side. An eye above the ceiling (or below the floor) looks into solid matter: fill it.
+void Canvas::near_plane(int x, int y0, int y1, int sector, bool ceiling) {
+  const level::Sector& s = level_->sectors[sector];
+  const bool open_side = ceiling ? view_->eye < s.ceiling : view_->eye > s.floor;
+  if (open_side)
+    plane_span(x, y0, y1, sector, ceiling);
+  else
+    fill_span(x, y0, y1, kVoidColor);
+}
+
+// Texture column u of the hit's facing side: the distance from the side's start
+// along the wall, plus its offsets.
+double Canvas::texture_u(const WallHit& hit, int part) const {
+  const level::Wall& w = level_->walls[hit.wall];
+  const level::Side& side = w.sides[hit.side];
+  return (hit.side == 0 ? hit.t : 1 - hit.t) * w.length + side.x_offset + side.part_x[part];
+}
+
+// Texture row v at screen row y is v0 + y * step, v0 = anchor - eye + offsets at row
+// 0: computed from row 0 so a pixel does not depend on where its span starts.
+void Canvas::wall_span(int x, int y0, int y1, const Part& part, const WallHit& hit) {
   if (y0 >= y1 || dry_) return;
-  if (texture == kNone) return fill_span(x, y0, y1, kMissingTexture);
+  if (part.texture == kNone) return fill_span(x, y0, y1, kMissingTexture);
   count(x, y0, y1);
   const level::Wall& w = level_->walls[hit.wall];
   const level::Side& side = w.sides[hit.side];
-  const level::Texture& tex = level_->textures[texture];
-  const double u = (hit.side == 0 ? hit.t : 1 - hit.t) * w.length + side.x_offset;
-  const uint32_t* column = tex.column(static_cast<int>(static_cast<int64_t>(std::floor(u)) & tex.width_mask));
+  const level::Texture& tex = level_->textures[part.texture];
+  const int64_t u = to_int(texture_u(hit, part.part));
   const double inv_scale = hit.depth / view_->d;
-  const double v0 = anchor - view_->eye + side.y_offset + (0.5 - view_->half_h) * inv_scale;
-  const int64_t step = std::llround(inv_scale * kFix);
-  int64_t v = std::llround(v0 * kFix) + y0 * step;
-  const uint32_t mult = light_multiplier(light_start(light, w.contrast), kLightK / hit.depth);
-  const uint32_t mask = tex.height_mask;
+  const double v0 = std::fmod(part.anchor - view_->eye + side.y_offset + side.part_y[part.part] +
+                                  (0.5 - view_->half_h) * inv_scale,
+                              double(tex.height));
+  const int64_t period = int64_t(tex.height) << 16;
+  const int64_t step = level::floor_mod(std::llround(inv_scale * kFix), period);
+  const int64_t v = level::floor_mod(std::llround(v0 * kFix) + level::floor_mod(int64_t(y0) * step, period), period);
+  const int map = wall_light_map(light_start(part.light, w.contrast), hit.depth);
   uint32_t* out = pixel(x, y0);
-  for (int y = y0; y < y1; ++y, out += view_->width, v += step) *out = shade(column[(v >> 16) & mask], mult);
+  if (level_->paletted())
+    wrapped_column(out, view_->width, y1 - y0, v, step, period,
+                   PalettedColumn{tex.index_column(u), level_->light_maps.data() + size_t(map) * limits::kPaletteSize});
+  else
+    wrapped_column(out, view_->width, y1 - y0, v, step, period, RgbaColumn{tex.column(u), multiplier(map)});
+}
+
+// A masked middle texture (Doom's R_RenderMaskedSegRange): hung from the lower of the
+// two ceilings, or stood on the higher floor when lower-unpegged; drawn once, not
+// tiled; its transparent texels leave what is behind.
+void Canvas::draw_masked(const Masked& m) {
+  const level::Wall& w = level_->walls[m.hit.wall];
+  const level::Side& side = w.sides[m.hit.side];
+  const level::Sector& s = level_->sectors[m.near];
+  const level::Sector& b = level_->sectors[m.far];
+  const level::Texture& tex = level_->textures[side.middle];
+  const double anchor = (w.flags & level::kUnpegLower) ? std::max(s.floor, b.floor) + tex.height
+                                                       : std::min(s.ceiling, b.ceiling);
+  const int64_t u = to_int(texture_u(m.hit, level::kMiddlePart));
+  const double inv_scale = m.hit.depth / view_->d;
+  const double v0 = anchor - view_->eye + side.y_offset + side.part_y[level::kMiddlePart] +
+                    (0.5 - view_->half_h) * inv_scale;
+  const int64_t step = std::llround(inv_scale * kFix);
+  int64_t v = std::llround(v0 * kFix) + int64_t(m.top) * step;
+  const int light = side.light != kNone ? side.light : s.light;
+  const int map = wall_light_map(light_start(light, w.contrast), m.hit.depth);
+  const uint32_t* texels = tex.column(u);
+  const uint8_t* indices = level_->paletted() ? tex.index_column(u) : nullptr;
+  const uint32_t* light_map = level_->paletted() ? level_->light_maps.data() + size_t(map) * limits::kPaletteSize : nullptr;
+  const uint32_t mult = multiplier(map);
+  uint32_t* out = pixel(m.x, m.top);
+  for (int y = m.top; y < m.bottom; ++y, out += view_->width, v += step) {
+    const int64_t row = v >> 16;
+    if (row < 0 || row >= tex.height || !(texels[row] >> 24)) continue;
+    *out = indices ? light_map[indices[row]] : shade(texels[row], mult);
+    count_one(m.x, y);
+  }
 }
 
 // Floor or ceiling at height h: row y's ray meets the plane at k = (eye - h) / dy
-// ray lengths, i.e. at pos + ray(x) * k, depth k * d. Exact per pixel.
+// ray lengths, i.e. at pos + ray(x) * k, depth k * d. Exact per pixel. (Camera
+// positions, heights and the projection are bounded, so the 16.16 texture
+// coordinates fit in 64 bits.)
 void Canvas::plane_span(int x, int y0, int y1, int sector, bool ceiling) {
   if (y0 >= y1 || dry_) return;
   const level::Sector& s = level_->sectors[sector];
@@ -215,59 +343,56 @@ void Canvas::plane_span(int x, int y0, int y1, int sector, bool ceiling) {
   const double px = view_->pos.x * kFix, py = -view_->pos.y * kFix;  // texture v runs south: north is up
   const double rx = ray.x * kFix, ry = -ray.y * kFix;
   const int start = light_start(s.light, 0);
-  const double gain_per_dy = kLightK / (std::fabs(h_rel) * view_->d);  // 1280 / depth = 1280 |dy| / (|h| d)
-  const uint32_t wmask = tex.width_mask, hmask = tex.height_mask;
-  const int shift = tex.height_shift;
-  const uint32_t* texels = tex.texels.data();
-  uint32_t* out = pixel(x, y0);
-  for (int y = y0; y < y1; ++y, out += view_->width) {
-    const double k = h_rel * row_inv_[y];
-    const int64_t u = static_cast<int64_t>(px + rx * k) >> 16;
-    const int64_t v = static_cast<int64_t>(py + ry * k) >> 16;
-    const uint32_t texel = texels[((u & wmask) << shift) | (v & hmask)];
-    *out = shade(texel, light_multiplier(start, gain_per_dy * std::fabs(row_dy_[y])));
-  }
+  const double depth_per_dy = std::fabs(h_rel) * view_->d;  // depth = |h| d / |dy|
+  auto draw = [&](auto lit) {
+    uint32_t* out = pixel(x, y0);
+    for (int y = y0; y < y1; ++y, out += view_->width) {
+      const double k = h_rel * row_inv_[y];
+      const int64_t u = static_cast<int64_t>(px + rx * k) >> 16, v = static_cast<int64_t>(py + ry * k) >> 16;
+      const size_t texel = size_t(tex.wrap_u(u)) * tex.height + tex.wrap_v(v);
+      *out = lit(texel, flat_light_map(start, depth_per_dy * std::fabs(row_inv_[y])));
+    }
+  };
+  if (level_->paletted())
+    draw([&](size_t texel, int map) {
+      return level_->light_maps[size_t(map) * limits::kPaletteSize + tex.indices[texel]];
+    });
+  else
+    draw([&](size_t texel, int map) { return shade(tex.texels[texel], multiplier(map)); });
 }
 
-// The sky wraps four times around the horizon and hangs from the top of the screen.
+// Doom's sky: 1024 texture columns around the horizon (a 256-wide sky repeats four
+// times), the column at the ray's angle; texture row 100 at the horizon and one row
+// per pixel at Doom's projection (d = 160), so the sky keeps its angular size at any
+// resolution. Full bright.
 void Canvas::sky_span(int x, int y0, int y1) {
   if (dry_) return;
   if (level_->sky_texture == kNone) return fill_span(x, y0, y1, kVoidColor);
   count(x, y0, y1);
+  constexpr double kSkyColumns = 1024, kSkyMidRow = 100, kDoomProjection = 160;
   const level::Texture& tex = level_->textures[level_->sky_texture];
   const double angle = view_->angle + std::atan2(view_->half_w - (x + 0.5), view_->d);
-  const int64_t u = static_cast<int64_t>(std::floor(-angle / (2 * M_PI) * 4 * tex.width));
-  const uint32_t* column = tex.column(static_cast<int>(u & tex.width_mask));
-  const double rows_per_texel = 0.6 * view_->height / tex.height;
+  const int64_t u = to_int(angle / (2 * M_PI) * kSkyColumns);
+  const uint32_t* texels = tex.column(u);
+  const uint8_t* indices = level_->paletted() ? tex.index_column(u) : nullptr;
+  const double rows_per_pixel = kDoomProjection / view_->d;
   uint32_t* out = pixel(x, y0);
-  for (int y = y0; y < y1; ++y, out += view_->width)
-    *out = column[std::min<int>(tex.height - 1, static_cast<int>((y + 0.5) / rows_per_texel))];
+  for (int y = y0; y < y1; ++y, out += view_->width) {
+    const int v = tex.wrap_v(to_int(kSkyMidRow + row_dy_[y] * rows_per_pixel));
+    *out = indices ? level_->light_maps[indices[v]] : texels[v] | 0xFF000000u;
+  }
 }
 
 // What a column shows past its last wall: its sector's planes out to the horizon.
 void Canvas::planes_to_horizon(int x, int y0, int y1, int sector) {
   if (y0 >= y1) return;
   if (sector == kNone) return fill_span(x, y0, y1, kVoidColor);
-  const level::Sector& s = level_->sectors[sector];
   const int horizon = view_->row_at(view_->half_h);  // first row whose centre is not above the horizon
   const int below = horizon < view_->height && row_dy_[horizon] == 0 ? horizon + 1 : horizon;
   const int ceiling_end = std::min(y1, horizon), floor_start = std::max(y0, below);
-  if (view_->eye < s.ceiling)
-    plane_span(x, y0, ceiling_end, sector, true);
-  else
-    fill_span(x, y0, ceiling_end, kVoidColor);
+  near_plane(x, y0, ceiling_end, sector, true);
   fill_span(x, std::max(y0, horizon), std::min(y1, below), kVoidColor);
-  if (view_->eye > s.floor)
-    plane_span(x, floor_start, y1, sector, false);
-  else
-    fill_span(x, floor_start, y1, kVoidColor);
-}
-
-void Canvas::finish() {
-  for (int x = 0; x < view_->width; ++x) {
-    Column& c = columns_[x];
-    planes_to_horizon(x, c.top, c.bottom, c.sector);
-  }
+  near_plane(x, floor_start, y1, sector, false);
 }
 
 }  // namespace p3d::render

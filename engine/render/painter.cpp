@@ -72,7 +72,7 @@ class Painter final : public Renderer {
       bool drew = false;
       for (int x = range.x0; x <= range.x1; ++x) {
         double depth, t;
-        if (!projector.hit(x, depth, t) || t < f.t0 || t > f.t1) continue;
+        if (!projector.hit(x, depth, t) || !in_fragment(f, t)) continue;
         const WallHit hit{f.wall, side, depth, t, int32_t(i)};
         if (!painted_[x]) {  // the farthest hit of this column: first the view beyond it
           painted_[x] = true;

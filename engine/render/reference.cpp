@@ -28,13 +28,18 @@ class Reference final : public Renderer {
       column_hits_.clear();
       for (const VisibleWall& w : walls_) {
         double depth, t;
-        if (w.projector.hit(x, depth, t) && t >= 0 && t <= 1) column_hits_.push_back({w.wall, w.side, depth, t});
+        if (w.projector.hit(x, depth, t)) column_hits_.push_back({{w.wall, w.side, depth, t}, w.projector.right_end(x)});
       }
-      std::sort(column_hits_.begin(), column_hits_.end(), [](const WallHit& a, const WallHit& b) {
-        return a.depth != b.depth ? a.depth < b.depth : a.wall < b.wall;
+      // Nearest first; two walls met at one point: the one in front just right of it.
+      std::sort(column_hits_.begin(), column_hits_.end(), [&](const Hit& a, const Hit& b) {
+        if (a.hit.depth != b.hit.depth) return a.hit.depth < b.hit.depth;
+        const level::Wall &wa = level.walls[a.hit.wall], &wb = level.walls[b.hit.wall];
+        if (hides_to_the_right(wb, b.right_end, wa, a.right_end)) return true;
+        if (hides_to_the_right(wa, a.right_end, wb, b.right_end)) return false;
+        return a.hit.wall < b.hit.wall;
       });
-      for (const WallHit& h : column_hits_)
-        if (canvas_.draw_wall(x, h)) break;
+      for (const Hit& h : column_hits_)
+        if (canvas_.draw_wall(x, h.hit)) break;
     }
     canvas_.finish();
 
@@ -50,9 +55,13 @@ class Reference final : public Renderer {
     int side;
     WallProjector projector;
   };
+  struct Hit {
+    WallHit hit;
+    int right_end;  // the wall's end right of the ray
+  };
   Canvas canvas_;
   std::vector<VisibleWall> walls_;
-  std::vector<WallHit> column_hits_;
+  std::vector<Hit> column_hits_;
 };
 
 }  // namespace

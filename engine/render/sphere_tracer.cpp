@@ -188,7 +188,7 @@ class SphereTracer final : public Renderer {
       for (uint32_t i : near_) {
         const level::Wall& w = level.walls[i];
         double depth, t;
-        if (!WallProjector(view, w.a, w.b).hit(x, depth, t) || t < 0 || t > 1 ||
+        if (!WallProjector(view, w.a, w.b).hit(x, depth, t) ||
             depth < s * depth_per_unit - 1e-9 * (1 + s)) {
           ignored_.push_back(i);
           continue;

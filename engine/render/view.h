@@ -46,35 +46,60 @@ struct View {
   }
 };
 
-// The line through a wall as seen from one view: the hit of column x's ray with
-// it costs one division. Every renderer hits walls through this, so they agree.
+// A wall segment as seen from one view: where column x's ray crosses it, for one
+// division. Every quantity comes from one end alone (its side of the ray, its
+// depth), so walls sharing a vertex agree exactly on whether a ray passes left of
+// it, right of it, or through it. A ray through a vertex belongs only to the walls
+// that extend to its right (half-open, like rasterization's top-left rule): at a
+// room's corner exactly one wall is hit, and no renderer can pick a different one.
+// Every renderer hits walls through this, so they agree.
 struct WallProjector {
-  double den0 = 0, den_dx = 0;  // cross(ray(x), e) = den0 + den_dx * x
-  double s_num = 0;             // cross(a - pos, e)
-  double t_num0 = 0, t_dx = 0;  // cross(a - pos, ray(x)) = t_num0 + t_dx * x
-  double d = 1;
+  double side0[2] = {0, 0}, side_dx[2] = {0, 0};  // cross(ray(x), end - pos) = side0 + side_dx * x; < 0: right
+  double end_depth[2] = {0, 0};                   // each end's depth along the view direction
 
   WallProjector() = default;
-  WallProjector(const View& v, Vec2 a, Vec2 b) : d(v.d) {
-    const Vec2 e = b - a, rel = a - v.pos;
-    den0 = geom::cross(v.ray0, e);
-    den_dx = geom::cross(v.right, e);
-    s_num = geom::cross(rel, e);
-    t_num0 = geom::cross(rel, v.ray0);
-    t_dx = geom::cross(rel, v.right);
+  WallProjector(const View& v, Vec2 a, Vec2 b) {
+    const Vec2 ends[2] = {a, b};
+    for (int i = 0; i < 2; ++i) {
+      const Vec2 rel = ends[i] - v.pos;
+      side0[i] = geom::cross(v.ray0, rel);
+      side_dx[i] = geom::cross(v.right, rel);
+      end_depth[i] = v.depth_of(ends[i]);
+    }
   }
 
-  // Depth (along forward) and wall parameter t of column x's hit with the wall's
-  // line; false when the ray runs parallel or the hit is behind the near plane.
+  // Depth (along forward) and wall parameter t (0 at a, 1 at b) where column x's ray
+  // crosses the segment; false when it passes beside it, runs along it, or meets it
+  // behind the near plane.
   bool hit(int x, double& depth, double& t) const {
-    const double den = den0 + den_dx * x;
-    if (den == 0) return false;
-    depth = s_num / den * d;
-    if (!(depth > kNearDepth)) return false;
-    t = (t_num0 + t_dx * x) / den;
-    return true;
+    const double s0 = side0[0] + side_dx[0] * x, s1 = side0[1] + side_dx[1] * x;
+    if ((s0 < 0) == (s1 < 0)) return false;  // both ends on one side (an end on the ray counts as left)
+    t = s0 / (s0 - s1);
+    // Interpolated from the nearer end, so a hit exactly at an end has exactly that end's depth.
+    depth = t <= 0.5 ? end_depth[0] + (end_depth[1] - end_depth[0]) * t
+                     : end_depth[1] - (end_depth[1] - end_depth[0]) * (1 - t);
+    return depth > kNearDepth;
   }
+
+  // Which end lies right of column x's ray (only meaningful for a hit): 0 for a, 1 for b.
+  int right_end(int x) const { return side0[0] + side_dx[0] * x < 0 ? 0 : 1; }
 };
+
+// Whether wall b hides wall a just right of a column's ray, where both are hit at
+// the same point (a shared vertex or a crossing). Both extend to the right there
+// (see WallProjector); the one turned further towards the camera is in front.
+// Exact, on the walls' fixed-point ends: any valid front-to-back order agrees.
+inline bool hides_to_the_right(const level::Wall& a, int a_right_end, const level::Wall& b, int b_right_end) {
+  const geom::IPoint da = a_right_end == 1 ? geom::sub(a.p2, a.p1) : geom::sub(a.p1, a.p2);
+  const geom::IPoint db = b_right_end == 1 ? geom::sub(b.p2, b.p1) : geom::sub(b.p1, b.p2);
+  return geom::cross(da, db) < 0;  // b turned clockwise from a: towards the camera
+}
+
+// A fragment's share of its wall: [t0, t1], open at an end where a splitter cut it,
+// so a hit exactly on a cut belongs to one fragment only.
+inline bool in_fragment(const level::Fragment& f, double t) {
+  return t >= f.t0 && (f.cut[1] == level::kNone ? t <= f.t1 : t < f.t1);
+}
 
 // A conservative range of screen columns [x0, x1]; empty when x0 > x1.
 struct ColumnRange {

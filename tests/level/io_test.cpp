@@ -6,6 +6,7 @@
 #include "engine/map/source.h"
 #include "engine/level/io.h"
 #include "engine/util/bytes.h"
+#include "engine/util/limits.h"
 #include "engine/util/rng.h"
 #include "tests/support/support.h"
 
@@ -61,7 +62,8 @@ TEST_F(LevelIo, RejectsDamagedFiles) {
 
   std::vector<uint8_t> version(good);
   version[8] = 9;
-  EXPECT_EQ(decode_error(version), "x.bsp: compiled level version 9 is not supported (expected 2; recompile with mapc)");
+  EXPECT_EQ(decode_error(version), "x.bsp: compiled level version 9 is not supported (expected " +
+                                       std::to_string(format::kVersion) + "; recompile with mapc)");
 
   std::vector<uint8_t> truncated(good.begin(), good.begin() + good.size() / 2);
   EXPECT_NE(decode_error(truncated).find("x.bsp: truncated or padded file"), std::string::npos);
@@ -165,6 +167,67 @@ TEST_F(LevelIo, TexturesAreColumnMajor) {
   EXPECT_EQ(t.at(0, 1), 5u);
   EXPECT_EQ(t.at(5, 3), 6u);  // wraps
   EXPECT_EQ(t.column(2)[1], 7u);
+}
+
+// Sides that are not powers of two (Doom's 72-high textures) wrap by modulo, on both signs.
+TEST_F(LevelIo, TexturesOfAnySizeWrap) {
+  const uint32_t a = 0xFF000000u;  // opaque
+  const uint32_t rows[6] = {a | 1, a | 2, a | 3, a | 4, a | 5, a | 6};  // 3 wide, 2 high
+  const Texture t = make_texture("t", 3, 2, rows);
+  EXPECT_FALSE(t.pow2_width);
+  EXPECT_TRUE(t.pow2_height);
+  for (int64_t u : {-7, -4, -1, 0, 2, 3, 5, 3000001})
+    for (int64_t v : {-3, -1, 0, 1, 2, 5})
+      EXPECT_EQ(t.at(u, v), rows[floor_mod(v, 2) * 3 + floor_mod(u, 3)]) << u << "," << v;
+  EXPECT_FALSE(t.holes);
+  const uint32_t holes[2] = {0xFF0000FFu, 0x00000000u};
+  EXPECT_TRUE(make_texture("h", 1, 2, holes).holes);
+}
+
+// A paletted level (WAD art) stores palette indices and opacity, and reads back exactly;
+// Doom's line, sector and thing data survive; a ceiling below its floor is Doom's and is kept.
+TEST_F(LevelIo, PalettedLevelsAndDoomDataRoundTrip) {
+  Level l = *level_;
+  l.palette.resize(limits::kPaletteSize);
+  for (int i = 0; i < limits::kPaletteSize; ++i) l.palette[size_t(i)] = image::rgba(i, 255 - i, i / 2);
+  l.light_maps.resize(size_t(limits::kLightMaps) * limits::kPaletteSize);
+  for (size_t i = 0; i < l.light_maps.size(); ++i) l.light_maps[i] = l.palette[(i * 7) % limits::kPaletteSize];
+  for (Texture& t : l.textures) {
+    std::vector<uint32_t> rgba(size_t(t.width) * t.height);
+    std::vector<uint8_t> idx(rgba.size());
+    for (size_t p = 0; p < rgba.size(); ++p) {
+      idx[p] = uint8_t(p * 31 % 256);
+      rgba[p] = p % 5 == 0 ? 0u : l.palette[idx[p]];  // every fifth texel transparent
+    }
+    t = make_texture(t.name, t.width, t.height, rgba.data(), idx.data());
+  }
+  l.walls[3].source = 4711;
+  l.walls[3].special = 1;
+  l.walls[3].tag = 7;
+  l.walls[3].flags |= kImpassable | kSecret;
+  l.walls[3].sides[0].part_x[kUpperPart] = 8;
+  l.walls[3].sides[0].light = 200;
+  l.sectors[2].special = 9;
+  l.sectors[2].tag = 7;
+  l.sectors[2].ceiling = l.sectors[2].floor - 1;
+  l.things.push_back({2001, {10, 20}, 90, 16});
+  const std::vector<uint8_t> bytes = encode(l);
+  const Level back = decode(bytes, "x.bsp");
+  EXPECT_EQ(encode(back), bytes);
+  EXPECT_TRUE(back.paletted());
+  EXPECT_EQ(back.light_maps, l.light_maps);
+  for (size_t i = 0; i < l.textures.size(); ++i) {
+    EXPECT_EQ(back.textures[i].indices, l.textures[i].indices);
+    EXPECT_EQ(back.textures[i].texels, l.textures[i].texels);
+  }
+  EXPECT_EQ(back.walls[3].source, 4711);
+  EXPECT_EQ(back.walls[3].tag, 7);
+  EXPECT_EQ(back.walls[3].flags, l.walls[3].flags);
+  EXPECT_EQ(back.walls[3].sides[0].part_x[kUpperPart], 8);
+  EXPECT_EQ(back.walls[3].sides[0].light, 200);
+  EXPECT_EQ(back.sectors[2].ceiling, l.sectors[2].ceiling);
+  EXPECT_EQ(back.sectors[2].special, 9);
+  EXPECT_EQ(back.things.back().flags, 16u);
 }
 
 }  // namespace

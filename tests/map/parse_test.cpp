@@ -40,7 +40,8 @@ class ParseTest : public ::testing::Test {
     dir_ = test::temp_dir("parse");
     image::save_png(image::Image(64, 64, image::rgba(200, 0, 0)), dir_ / "wall.png");
     image::save_png(image::Image(32, 32, image::rgba(0, 200, 0)), dir_ / "flat.png");
-    image::save_png(image::Image(48, 64), dir_ / "odd.png");
+    image::save_png(image::Image(48, 72), dir_ / "odd.png");
+    image::save_png(image::Image(limits::kMaxTextureSize + 1, 1), dir_ / "wide.png");
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
 
@@ -75,6 +76,18 @@ TEST_F(ParseTest, ValidMap) {
   EXPECT_EQ(s.things.size(), 1u);
   EXPECT_EQ(s.walls[0].loc.line, 14);
   EXPECT_EQ(s.textures[0].image.width, 64);
+}
+
+// Doom's textures are 72 or 96 high, and two-sided walls may show a masked middle texture.
+TEST_F(ParseTest, TexturesOfAnySizeAndMaskedMiddles) {
+  std::string text = std::string(kRoomHeader) + "texture odd odd.png\n" + kRoomWalls;
+  const std::string window = "wall v2 v3 front=a back=b upper=wall lower=wall\n";
+  text.replace(text.find(window), window.size(), "wall v2 v3 front=a back=b upper=wall lower=wall middle=odd back_middle=odd\n");
+  const Source s = load(text);
+  const Texture& odd = s.textures[size_t(s.walls[2].front.middle)];
+  EXPECT_EQ(odd.image.width, 48);
+  EXPECT_EQ(odd.image.height, 72);
+  EXPECT_EQ(s.walls[2].back.middle, s.walls[2].front.middle);
 }
 
 TEST_F(ParseTest, SegmentsOnlyGetADefaultSector) {
@@ -119,8 +132,8 @@ TEST_F(ParseTest, BadInputGivesLocatedMessages) {
       {"huge", base + "vertex q 1e999 0\n" + walls, "DIR/test.map:14: x coordinate '1e999' is out of range"},
       {"out of range", base + "vertex q 3000000 0\n" + walls, "DIR/test.map:14: x coordinate '3000000' is outside +-2097152"},
       {"missing texture file", "texture wall nowhere.png\n", "DIR/test.map:1: texture file 'DIR/nowhere.png' does not exist"},
-      {"bad texture size", "texture odd odd.png\n",
-       "DIR/test.map:1: texture 'odd' is 48x64: sides must be powers of two up to 1024"},
+      {"bad texture size", "texture wide wide.png\n",
+       "DIR/test.map:1: texture 'wide' is 4097x1: sides must be at most 4096"},
       {"unknown texture", base + "segment v0 v4 texture=nope\n" + walls, "DIR/test.map:14: unknown texture 'nope'"},
       {"unknown option", base + "wall v0 v5 front=a middle=wall colour=red\n" + walls,
        "DIR/test.map:14: wall: unknown option 'colour'"},

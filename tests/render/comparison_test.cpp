@@ -122,7 +122,7 @@ double isolation(const level::Level& level, const View& view, int x, const Colum
   for (uint32_t i = 0; i < level.walls.size(); ++i) {
     if (int32_t(i) == closing.wall) continue;
     double depth, t;
-    if (WallProjector(view, level.walls[i].a, level.walls[i].b).hit(x, depth, t) && t >= 0 && t <= 1)
+    if (WallProjector(view, level.walls[i].a, level.walls[i].b).hit(x, depth, t))
       gap = std::min(gap, std::fabs(depth - closing.dist));
   }
   return gap;

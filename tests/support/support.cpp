@@ -33,6 +33,13 @@ render::Camera random_camera(const level::Level& level, Rng& rng) {
   }
 }
 
+std::filesystem::path freedoom_path(const std::string& file) {
+  const std::filesystem::path path = std::filesystem::path("/usr/share/games/doom") / file;
+  if (!std::filesystem::exists(path))
+    throw std::runtime_error(path.string() + " is missing: install Debian's freedoom package (tools/install-deps.sh does)");
+  return path;
+}
+
 std::filesystem::path temp_dir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("p3d-test-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);

@@ -24,6 +24,10 @@ level::Level compile(const map::Source& source, bsp::Strategy strategy = bsp::St
 // walls with sectors), looking anywhere, at a plausible eye height.
 render::Camera random_camera(const level::Level& level, Rng& rng);
 
+// A Freedoom WAD (Debian's freedoom package, which tools/install-deps.sh installs);
+// fails the test with a clear message when it is not there.
+std::filesystem::path freedoom_path(const std::string& file);
+
 // A fresh empty directory under the system temp directory.
 std::filesystem::path temp_dir(const std::string& name);
 

@@ -113,6 +113,16 @@ TEST_F(Tools, DamagedLevelsAreRejected) {
   }
 }
 
+// Without --pos, a camera stands at the level's player start, facing its way.
+TEST_F(Tools, CameraDefaultsToThePlayerStart) {
+  std::string o;
+  ASSERT_EQ(run_in_source(tool("mapc") + " maps/outpost.map -o " + out("a.bsp"), o), 0) << o;
+  const std::string cap = tool("capture") + " " + out("a.bsp") + " --size 160x100 ";
+  ASSERT_EQ(test::run(cap + "-o " + out("default.png"), o), 0) << o;
+  ASSERT_EQ(test::run(cap + "--pos 64,96 --angle 30 -o " + out("explicit.png"), o), 0) << o;  // maps/outpost.map's start
+  EXPECT_EQ(read_file_bytes(out("default.png")), read_file_bytes(out("explicit.png")));
+}
+
 TEST_F(Tools, BadArgumentsAreRefused) {
   std::string o;
   ASSERT_EQ(run_in_source(tool("mapc") + " maps/outpost.map -o " + out("a.bsp"), o), 0) << o;
@@ -128,7 +138,6 @@ TEST_F(Tools, BadArgumentsAreRefused) {
       {"--pos 1,1 --size 100 -o " + out("x.png"), "expected WxH"},
       {"--pos 1,1 --fov 200 -o " + out("x.png"), "--fov"},
       {"--pos 1,1 --renderer magic -o " + out("x.png"), "unknown renderer 'magic'"},
-      {"-o " + out("x.png"), "a camera position is required"},
       {"--cameras " + out("bad.cams") + " -o " + dir_.string(), "bad.cams:1: expected NAME X Y ANGLE"},
       {"--pos 1,1 --angle inf -o " + out("x.png"), "finite"},
       {"--pos 1e15,0 -o " + out("x.png"), "X,Y must lie within"},

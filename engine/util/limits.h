@@ -1,0 +1,19 @@
+// The project's limits, in one place: the parsers, the importer, the compiler's
+// writer and the reader all apply these, so nothing is written that cannot be read.
+// (Coordinates: geom::kMaxCoord.)
+#pragma once
+
+#include <cstddef>
+
+namespace p3d::limits {
+
+constexpr int kMaxTextureSize = 4096;    // texels per side
+constexpr size_t kMaxNameLength = 256;   // texture, sector and vertex names
+constexpr size_t kMaxTitleLength = 1024;
+constexpr int kMaxGridSide = 4096;       // tiles per side of a .grid map
+
+// Paletted art (WAD levels): a 256-colour palette and Doom's 32 light maps over it.
+constexpr int kPaletteSize = 256;
+constexpr int kLightMaps = 32;
+
+}  // namespace p3d::limits

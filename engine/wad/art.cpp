@@ -1,0 +1,168 @@
+// TEXTURE1/TEXTURE2 layout: i32 count, count x i32 offset; at each offset a
+// texture: name[8], i32 flags, i16 width, i16 height, i32 (obsolete), i16 patch
+// count, then patches of i16 x, i16 y, i16 PNAMES index, i16, i16 (unused).
+// PNAMES: i32 count, count x name[8].
+#include "engine/wad/art.h"
+
+#include "engine/util/bytes.h"
+#include "engine/util/error.h"
+
+namespace p3d::wad {
+
+namespace {
+
+constexpr size_t kPaletteBytes = 3 * kPaletteColors;
+constexpr size_t kTextureHeader = 22;
+constexpr size_t kPatchRecord = 10;
+constexpr size_t kFlatBytes = size_t(kFlatSide) * kFlatSide;
+
+std::string read_name(ByteReader& in) {
+  const auto raw = in.raw(kNameSize);
+  return normalize_name(std::string_view(reinterpret_cast<const char*>(raw.data()), kNameSize));
+}
+
+const Lump& require(const Stack& stack, std::string_view name) {
+  const Lump* l = stack.find(name);
+  if (!l) {
+    std::string wads;
+    for (const Wad& w : stack.wads()) wads += (wads.empty() ? "" : ", ") + w.name();
+    throw Error(wads + ": no " + std::string(name) + " lump: the WADs hold no Doom art (give an IWAD with --iwad)");
+  }
+  return *l;
+}
+
+std::string lump_what(const Stack& stack, const Lump& lump) {
+  for (const Wad& w : stack.wads())
+    if (!w.lumps().empty() && &lump >= &w.lumps().front() && &lump <= &w.lumps().back()) return w.name() + ": " + lump.name;
+  return lump.name;
+}
+
+}  // namespace
+
+std::string sky_texture_name(std::string_view map_name) {
+  const std::string m = normalize_name(map_name);
+  if (m.size() == 4 && m[0] == 'E' && m[2] == 'M' && m[1] >= '1' && m[1] <= '4') return std::string("SKY") + m[1];
+  if (m.size() >= 4 && m.compare(0, 3, "MAP") == 0) {
+    const int n = std::atoi(m.c_str() + 3);
+    return n < 12 ? "SKY1" : n < 21 ? "SKY2" : "SKY3";
+  }
+  return "SKY1";
+}
+
+Art::Art(const Stack& stack) : stack_(stack) {
+  const Lump& playpal = require(stack, "PLAYPAL");
+  if (playpal.bytes.size() < kPaletteBytes)
+    throw Error(lump_what(stack, playpal) + ": " + std::to_string(playpal.bytes.size()) + " bytes, a palette needs " +
+                std::to_string(kPaletteBytes));
+  for (int i = 0; i < kPaletteColors; ++i)
+    palette_.push_back(uint32_t(playpal.bytes[3 * i]) | uint32_t(playpal.bytes[3 * i + 1]) << 8 |
+                       uint32_t(playpal.bytes[3 * i + 2]) << 16 | 0xFF000000u);
+
+  const Lump& colormap = require(stack, "COLORMAP");
+  if (colormap.bytes.size() < size_t(limits::kLightMaps) * kPaletteColors)
+    throw Error(lump_what(stack, colormap) + ": " + std::to_string(colormap.bytes.size()) +
+                " bytes, the light tables need " + std::to_string(limits::kLightMaps * kPaletteColors));
+  colormap_.assign(colormap.bytes.begin(),
+                   colormap.bytes.begin() + std::min(colormap.bytes.size(), size_t(kColormaps) * kPaletteColors));
+  colormap_.resize(size_t(kColormaps) * kPaletteColors, 0);  // the last (all black) map may be absent
+
+  const Lump& pnames = require(stack, "PNAMES");
+  ByteReader in(pnames.bytes, lump_what(stack, pnames));
+  const uint32_t count = in.count(kNameSize, "patch names");
+  std::vector<std::string> patch_names;
+  for (uint32_t i = 0; i < count; ++i) patch_names.push_back(read_name(in));
+
+  read_texture_lump(require(stack, "TEXTURE1"), patch_names);
+  if (const Lump* t2 = stack.find("TEXTURE2")) read_texture_lump(*t2, patch_names);
+
+  for (const Lump* l : stack.namespace_lumps({"F", "FF"})) flats_[l->name] = l;
+}
+
+void Art::read_texture_lump(const Lump& lump, const std::vector<std::string>& patch_names) {
+  const std::string what = lump_what(stack_, lump);
+  ByteReader in(lump.bytes, what);
+  const uint32_t count = in.count(4, "texture offsets");
+  for (uint32_t i = 0; i < count; ++i) {
+    const uint32_t offset = in.u32();
+    const std::string entry = what + " #" + std::to_string(i);
+    if (uint64_t(offset) + kTextureHeader > lump.bytes.size())
+      throw Error(entry + ": texture at byte " + std::to_string(offset) + " lies outside the lump");
+    ByteReader t(lump.bytes.subspan(offset), entry);
+    TextureDef def;
+    def.name = read_name(t);
+    t.u32();  // flags (masked: unused by Doom)
+    def.width = int16_t(t.u16());
+    def.height = int16_t(t.u16());
+    t.u32();  // column directory (obsolete)
+    const int patches = int16_t(t.u16());
+    if (def.width <= 0 || def.height <= 0 || def.width > kMaxTextureSide || def.height > kMaxTextureSide)
+      throw Error(entry + ": texture '" + printable(def.name) + "' has a bad size " + std::to_string(def.width) + "x" +
+                  std::to_string(def.height));
+    if (patches < 0 || size_t(patches) * kPatchRecord > t.remaining())
+      throw Error(entry + ": texture '" + printable(def.name) + "' lists " + std::to_string(patches) +
+                  " patches that do not fit in the lump");
+    for (int p = 0; p < patches; ++p) {
+      PatchPlacement placement;
+      placement.x = int16_t(t.u16());
+      placement.y = int16_t(t.u16());
+      const int index = int16_t(t.u16());
+      t.u16();
+      t.u16();
+      if (index < 0 || size_t(index) >= patch_names.size())
+        throw Error(entry + ": texture '" + printable(def.name) + "' uses patch number " + std::to_string(index) +
+                    ", PNAMES has " + std::to_string(patch_names.size()));
+      placement.patch = patch_names[size_t(index)];
+      def.patches.push_back(placement);
+    }
+    textures_.emplace(def.name, std::move(def));  // Doom takes the first texture of a name
+  }
+}
+
+std::optional<IndexedImage> Art::texture(std::string_view name, std::vector<std::string>& problems) const {
+  const auto it = textures_.find(normalize_name(name));
+  if (it == textures_.end()) return std::nullopt;
+  const TextureDef& def = it->second;
+  IndexedImage img(def.width, def.height);
+  for (const PatchPlacement& p : def.patches) {
+    const Lump* lump = stack_.find(p.patch);
+    if (!lump) {
+      problems.push_back("texture " + def.name + ": patch " + printable(p.patch) + " is missing");
+      continue;
+    }
+    IndexedImage patch;
+    try {
+      patch = decode_picture(lump->bytes, "patch " + printable(p.patch));
+    } catch (const Error& e) {
+      problems.push_back("texture " + def.name + ": " + e.what());
+      continue;
+    }
+    for (int y = 0; y < patch.height; ++y) {
+      const int ty = p.y + y;
+      if (ty < 0 || ty >= def.height) continue;
+      for (int x = 0; x < patch.width; ++x) {
+        const int tx = p.x + x;
+        if (tx < 0 || tx >= def.width || !patch.opaque[patch.at(x, y)]) continue;
+        img.indices[img.at(tx, ty)] = patch.indices[patch.at(x, y)];
+        img.opaque[img.at(tx, ty)] = 1;
+      }
+    }
+  }
+  return img;
+}
+
+std::optional<IndexedImage> Art::flat(std::string_view name, std::vector<std::string>& problems) const {
+  const auto it = flats_.find(normalize_name(name));
+  if (it == flats_.end()) return std::nullopt;
+  const Lump& lump = *it->second;
+  if (lump.bytes.size() < kFlatBytes) {
+    problems.push_back("flat " + lump.name + " is " + std::to_string(lump.bytes.size()) + " bytes, a flat needs " +
+                       std::to_string(kFlatBytes));
+    return std::nullopt;
+  }
+  IndexedImage img(kFlatSide, kFlatSide);
+  std::copy(lump.bytes.begin(), lump.bytes.begin() + kFlatBytes, img.indices.begin());
+  std::fill(img.opaque.begin(), img.opaque.end(), 1);
+  return img;
+}
+
+}  // namespace p3d::wad

@@ -1,0 +1,425 @@
+// WAD map records -> map::Source. Index: Importer::run (the pipeline), sectors and
+// flats, walls (sides, textures, flags), trim_overlaps (collinear overlaps),
+// report_* (what is kept with a warning), things and the player start, art.
+#include "engine/wad/import.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+#include "engine/util/error.h"
+#include "engine/wad/art.h"
+
+namespace p3d::wad {
+
+namespace {
+
+using geom::IPoint;
+
+constexpr int kPlayerOneStart = 1;  // the thing type of player 1's start
+constexpr int kPlaceholderSide = 64;
+constexpr int kMaxLight = 255;
+
+// A collinear piece of a wall, by its end vertices.
+struct Piece {
+  int v1, v2;
+};
+
+class Importer {
+ public:
+  Importer(const Stack& stack, const MapData& data, const ImportOptions& options)
+      : data_(data), options_(options), art_(stack) {}
+
+  ImportResult run() {
+    src_.path = data_.where;
+    src_.title = data_.name;
+    make_light_maps();
+    add_sectors();
+    add_vertices();
+    add_walls();
+    trim_overlaps();
+    report_missing_parts();
+    report_crossings();
+    report_open_sectors();
+    add_things();
+    add_sky();
+    finish_warnings();
+    return {std::move(src_), std::move(warnings_)};
+  }
+
+ private:
+  // ---- warnings --------------------------------------------------------------
+  void warn(const std::string& kind, const std::string& record, const std::string& message) {
+    if (++warning_counts_[kind] > options_.max_warnings_per_kind) return;
+    warnings_.push_back(data_.where + ": " + record + ": warning: " + message);
+  }
+  void finish_warnings() {
+    for (const auto& [kind, count] : warning_counts_)
+      if (count > options_.max_warnings_per_kind)
+        warnings_.push_back(data_.where + ": warning: " + std::to_string(count - options_.max_warnings_per_kind) +
+                            " more " + kind);
+  }
+  static std::string line_record(int i) { return "LINEDEFS #" + std::to_string(i); }
+  static std::string side_record(int i) { return "SIDEDEFS #" + std::to_string(i); }
+  static std::string sector_record(int i) { return "SECTORS #" + std::to_string(i); }
+
+  // ---- art -------------------------------------------------------------------
+  void make_light_maps() {
+    src_.palette = art_.palette();
+    src_.light_maps.resize(size_t(limits::kLightMaps) * limits::kPaletteSize);
+    for (int m = 0; m < limits::kLightMaps; ++m)
+      for (int i = 0; i < limits::kPaletteSize; ++i)
+        src_.light_maps[size_t(m) * limits::kPaletteSize + i] =
+            art_.palette()[art_.colormap()[size_t(m) * kPaletteColors + i]];
+  }
+
+  int add_texture(const std::string& name, const IndexedImage& img) {
+    map::Texture t;
+    t.name = name;
+    t.image = image::Image(img.width, img.height);
+    t.indices = img.indices;
+    for (size_t p = 0; p < img.indices.size(); ++p)
+      t.image.pixels[p] = img.opaque[p] ? art_.palette()[img.indices[p]] : 0u;
+    t.loc = FileLoc{data_.where, 0};
+    src_.textures.push_back(std::move(t));
+    return int(src_.textures.size()) - 1;
+  }
+
+  // A wall texture by name: its index, kNone for "-" or an unknown name (warned about once).
+  int wall_texture(const std::string& name, const std::string& record) {
+    if (name.empty() || name == "-") return map::kNone;
+    const auto it = wall_textures_.find(name);
+    if (it != wall_textures_.end()) return it->second;
+    std::vector<std::string> problems;
+    const auto img = art_.texture(name, problems);
+    for (const std::string& p : problems) warn("broken patches", record, p);
+    const int index = img ? add_texture(name, *img) : map::kNone;
+    if (!img) warn("unknown textures", record, "texture " + printable(name) + " does not exist (drawn as missing)");
+    wall_textures_[name] = index;
+    return index;
+  }
+
+  // A flat by name; an unknown one becomes a checkered placeholder (warned about once).
+  int flat(const std::string& name, const std::string& record) {
+    const auto it = flats_.find(name);
+    if (it != flats_.end()) return it->second;
+    std::vector<std::string> problems;
+    const auto img = art_.flat(name, problems);
+    for (const std::string& p : problems) warn("broken flats", record, p);
+    int index;
+    if (img) {
+      index = add_texture(name, *img);
+    } else {
+      warn("unknown flats", record, "flat " + printable(name) + " does not exist (drawn as a placeholder)");
+      index = add_texture(name, placeholder());
+    }
+    flats_[name] = index;
+    return index;
+  }
+
+  // A checkerboard of the palette's darkest and brightest colours.
+  IndexedImage placeholder() const {
+    auto luma = [&](int i) {
+      const uint32_t c = art_.palette()[size_t(i)];
+      return int(c & 0xFF) + int(c >> 8 & 0xFF) + int(c >> 16 & 0xFF);
+    };
+    uint8_t dark = 0, bright = 0;
+    for (int i = 0; i < kPaletteColors; ++i) {
+      if (luma(i) < luma(dark)) dark = uint8_t(i);
+      if (luma(i) > luma(bright)) bright = uint8_t(i);
+    }
+    IndexedImage img(kPlaceholderSide, kPlaceholderSide);
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) img.indices[img.at(x, y)] = ((x / 8 + y / 8) & 1) ? bright : dark;
+    std::fill(img.opaque.begin(), img.opaque.end(), 1);
+    return img;
+  }
+
+  void add_sky() {
+    const std::string name = sky_texture_name(data_.name);
+    src_.sky_texture = wall_texture(name, "sky");
+  }
+
+  // ---- sectors ---------------------------------------------------------------
+  void add_sectors() {
+    for (size_t i = 0; i < data_.sectors.size(); ++i) {
+      const MapSector& m = data_.sectors[i];
+      const std::string record = sector_record(int(i));
+      map::Sector s;
+      s.name = std::to_string(i);
+      s.loc = FileLoc{data_.where + ": " + record, 0};
+      for (double h : {m.floor, m.ceiling})
+        if (!std::isfinite(h) || std::fabs(h) > geom::kMaxCoord)
+          throw Error(s.loc, "height " + std::to_string(h) + " is outside +-" + std::to_string(int64_t(geom::kMaxCoord)));
+      s.floor = m.floor;
+      s.ceiling = m.ceiling;
+      if (s.ceiling < s.floor)
+        warn("ceilings below floors", record,
+             "ceiling " + number(s.ceiling) + " is below floor " + number(s.floor) + " (kept: Doom draws it so)");
+      s.light = std::clamp(m.light, 0, kMaxLight);
+      if (s.light != m.light)
+        warn("light out of range", record, "light " + std::to_string(m.light) + " is outside 0..255 (clamped)");
+      s.floor_texture = m.floor_flat == kSkyFlat ? map::kSkyTexture : flat(m.floor_flat, record);
+      s.ceiling_texture = m.ceiling_flat == kSkyFlat ? map::kSkyTexture : flat(m.ceiling_flat, record);
+      s.special = m.special;
+      s.tag = m.tag;
+      src_.sectors.push_back(std::move(s));
+    }
+  }
+
+  static std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+  }
+
+  // ---- vertices --------------------------------------------------------------
+  void add_vertices() {
+    for (size_t i = 0; i < data_.vertices.size(); ++i) {
+      const MapVertex& m = data_.vertices[i];
+      map::Vertex v;
+      v.name = std::to_string(i);
+      v.loc = FileLoc{data_.where + ": VERTEXES #" + std::to_string(i), 0};
+      if (!geom::to_fixed(m.x, v.pos.x) || !geom::to_fixed(m.y, v.pos.y))
+        throw Error(v.loc, "coordinates (" + number(m.x) + ", " + number(m.y) + ") are outside +-" +
+                               std::to_string(int64_t(geom::kMaxCoord)));
+      src_.vertices.push_back(std::move(v));
+    }
+  }
+
+  // ---- walls -----------------------------------------------------------------
+  // Whether sidedef k exists and names an existing sector.
+  bool valid_side(int k) const {
+    return k >= 0 && size_t(k) < data_.sidedefs.size() && data_.sidedefs[size_t(k)].sector >= 0 &&
+           size_t(data_.sidedefs[size_t(k)].sector) < data_.sectors.size();
+  }
+
+  std::string why_invalid(int k) const {
+    if (k < 0 || size_t(k) >= data_.sidedefs.size())
+      return "sidedef " + std::to_string(k) + " does not exist (SIDEDEFS has " + std::to_string(data_.sidedefs.size()) + ")";
+    return side_record(k) + " names sector " + std::to_string(data_.sidedefs[size_t(k)].sector) +
+           ", which does not exist (SECTORS has " + std::to_string(data_.sectors.size()) + ")";
+  }
+
+  map::Side side(int k, const std::string& record) {
+    const MapSidedef& m = data_.sidedefs[size_t(k)];
+    map::Side s;
+    s.sector = m.sector;
+    s.upper = wall_texture(m.upper, record);
+    s.middle = wall_texture(m.middle, record);
+    s.lower = wall_texture(m.lower, record);
+    s.x_offset = m.x_offset;
+    s.y_offset = m.y_offset;
+    std::copy(std::begin(m.part_x), std::end(m.part_x), s.part_x);
+    std::copy(std::begin(m.part_y), std::end(m.part_y), s.part_y);
+    if (m.light_absolute || m.light != 0)
+      s.light = std::clamp(m.light_absolute ? m.light : data_.sectors[size_t(m.sector)].light + m.light, 0, kMaxLight);
+    return s;
+  }
+
+  void add_walls() {
+    for (size_t i = 0; i < data_.linedefs.size(); ++i) {
+      const MapLinedef& l = data_.linedefs[i];
+      const std::string record = line_record(int(i));
+      if (src_.point(l.v1) == src_.point(l.v2)) {
+        warn("zero-length lines", record, "zero-length line (dropped)");
+        continue;
+      }
+      if (!valid_side(l.front)) {
+        warn("lines without a front side", record, "front " + why_invalid(l.front) + " (line dropped)");
+        continue;
+      }
+      map::Wall w;
+      w.v1 = l.v1;
+      w.v2 = l.v2;
+      w.loc = FileLoc{data_.where + ": " + record, 0};
+      w.source = int(i);
+      w.special = l.special;
+      w.tag = l.tag;
+      w.flags = (l.flags & kLineUnpegUpper ? map::kUnpegUpper : 0u) | (l.flags & kLineUnpegLower ? map::kUnpegLower : 0u) |
+                (l.flags & kLineBlocking ? map::kImpassable : 0u) | (l.flags & kLineSecret ? map::kSecret : 0u) |
+                (l.flags & kLineHidden ? map::kHidden : 0u) | (l.flags & kLineMapped ? map::kMapped : 0u);
+      w.front = side(l.front, record);
+      if (l.back != kNoSide) {
+        if (valid_side(l.back))
+          w.back = side(l.back, record);
+        else
+          warn("bad back sides", record, "back " + why_invalid(l.back) + " (line made one-sided)");
+      }
+      if (w.two_sided() && w.front.sector == w.back.sector && l.special == 0 && w.front.middle == map::kNone &&
+          w.back.middle == map::kNone)
+        warn("same sector on both sides", record,
+             "sector " + std::to_string(w.front.sector) + " on both sides, no special, no texture (it draws nothing)");
+      src_.walls.push_back(std::move(w));
+    }
+  }
+
+  // ---- collinear overlaps ----------------------------------------------------
+  // Two collinear walls on the same stretch conflict when one viewpoint can see
+  // both: they face the same way, or either is two-sided.
+  bool conflict(const map::Wall& a, const map::Wall& b) const {
+    const IPoint da = geom::sub(src_.point(a.v2), src_.point(a.v1)), db = geom::sub(src_.point(b.v2), src_.point(b.v1));
+    const bool same_way = da.x * db.x + da.y * db.y > 0;
+    return same_way || a.two_sided() || b.two_sided();
+  }
+
+  void trim_overlaps() {
+    std::vector<std::vector<uint32_t>> earlier(src_.walls.size());  // conflicting overlaps with earlier walls
+    for (const map::Contact& c : map::find_contacts(src_, SIZE_MAX))
+      if (c.kind == geom::SegmentContact::kOverlap && conflict(src_.walls[c.a], src_.walls[c.b]))
+        earlier[c.b].push_back(c.a);
+    std::vector<std::vector<Piece>> pieces(src_.walls.size());
+    for (size_t j = 0; j < src_.walls.size(); ++j) {
+      const map::Wall& w = src_.walls[j];
+      pieces[j] = {{w.v1, w.v2}};
+      for (uint32_t i : earlier[j])
+        for (const Piece& p : pieces[i]) pieces[j] = subtract(pieces[j], p);
+      if (earlier[j].empty()) continue;
+      const std::string record = line_record(w.source), other = line_record(src_.walls[earlier[j].front()].source);
+      if (pieces[j].empty())
+        warn("overlapping lines", record, "lies on " + other + " (dropped: the earlier line is drawn)");
+      else if (pieces[j].size() != 1 || pieces[j][0].v1 != w.v1 || pieces[j][0].v2 != w.v2)
+        warn("overlapping lines", record, "overlaps " + other + " (keeps only the part the earlier line leaves)");
+    }
+    std::vector<map::Wall> kept;
+    for (size_t j = 0; j < src_.walls.size(); ++j)
+      for (const Piece& p : pieces[j]) kept.push_back(piece_of(src_.walls[j], p));
+    src_.walls = std::move(kept);
+  }
+
+  // Position of p along the (collinear) direction d: exact, on the dominant axis.
+  static int64_t along(IPoint d, IPoint p) { return std::llabs(d.x) >= std::llabs(d.y) ? p.x * geom::sign(d.x) : p.y * geom::sign(d.y); }
+
+  // The parts of `pieces` (collinear, directed) that `cut` does not cover.
+  std::vector<Piece> subtract(const std::vector<Piece>& pieces, const Piece& cut) const {
+    std::vector<Piece> out;
+    for (const Piece& p : pieces) {
+      const IPoint d = geom::sub(src_.point(p.v2), src_.point(p.v1));
+      const int64_t a = along(d, src_.point(p.v1)), b = along(d, src_.point(p.v2));
+      int c0 = cut.v1, c1 = cut.v2;
+      if (along(d, src_.point(c0)) > along(d, src_.point(c1))) std::swap(c0, c1);
+      const int64_t ca = along(d, src_.point(c0)), cb = along(d, src_.point(c1));
+      if (cb <= a || ca >= b) {
+        out.push_back(p);
+        continue;
+      }
+      if (ca > a) out.push_back({p.v1, c0});
+      if (cb < b) out.push_back({c1, p.v2});
+    }
+    return out;
+  }
+
+  // The wall restricted to a piece; texture offsets keep the texture where it was.
+  map::Wall piece_of(const map::Wall& w, const Piece& p) const {
+    map::Wall out = w;
+    out.v1 = p.v1;
+    out.v2 = p.v2;
+    auto distance = [&](int a, int b) { return glm::length(geom::to_world(src_.point(a)) - geom::to_world(src_.point(b))); };
+    if (p.v1 != w.v1) out.front.x_offset += distance(w.v1, p.v1);
+    if (p.v2 != w.v2) out.back.x_offset += distance(p.v2, w.v2);  // the back side's texture runs from v2
+    return out;
+  }
+
+  // ---- what is kept, with a warning -----------------------------------------
+  void report_missing_parts() {
+    for (const map::Wall& w : src_.walls) {
+      const std::string record = line_record(w.source);
+      if (!w.two_sided()) {
+        if (w.front.middle == map::kNone)
+          warn("missing textures", record, "one-sided line without a middle texture (the sector shows through)");
+        continue;
+      }
+      const map::Sector& f = src_.sectors[size_t(w.front.sector)];
+      const map::Sector& b = src_.sectors[size_t(w.back.sector)];
+      const bool both_sky = f.ceiling_texture == map::kSkyTexture && b.ceiling_texture == map::kSkyTexture;
+      auto check = [&](const map::Side& s, const map::Sector& near, const map::Sector& far, const char* which) {
+        if (far.ceiling < near.ceiling && !both_sky && s.upper == map::kNone)
+          warn("missing textures", record,
+               std::string(which) + " side needs an upper texture (the far ceiling shows instead)");
+        if (far.floor > near.floor && s.lower == map::kNone)
+          warn("missing textures", record, std::string(which) + " side needs a lower texture (the far floor shows instead)");
+      };
+      check(w.front, f, b, "front");
+      check(w.back, b, f, "back");
+    }
+  }
+
+  void report_crossings() {
+    for (const map::Contact& c : map::find_contacts(src_, SIZE_MAX))
+      if (c.kind == geom::SegmentContact::kCross)
+        warn("crossing lines", line_record(src_.walls[c.b].source),
+             "crosses " + line_record(src_.walls[c.a].source) + " (both kept, as Doom draws both)");
+  }
+
+  void report_open_sectors() {
+    for (const map::OpenSector& o : map::find_open_sectors(src_)) {
+      const geom::Vec2 p = geom::to_world(o.at);
+      warn("unclosed sectors", sector_record(o.sector),
+           "not closed: its boundary has an open end at (" + number(p.x) + ", " + number(p.y) + ")");
+    }
+  }
+
+  // ---- things ----------------------------------------------------------------
+  void add_things() {
+    int start = -1;
+    for (size_t i = 0; i < data_.things.size(); ++i) {
+      const MapThing& m = data_.things[i];
+      if (!std::isfinite(m.x) || !std::isfinite(m.y) || std::fabs(m.x) > geom::kMaxCoord || std::fabs(m.y) > geom::kMaxCoord) {
+        warn("things out of range", "THINGS #" + std::to_string(i), "position is outside the map range (ignored)");
+        continue;
+      }
+      map::Thing t;
+      t.type = m.type;
+      t.pos = {m.x, m.y};
+      t.angle = m.angle;
+      t.flags = m.flags;
+      src_.things.push_back(t);
+      if (m.type == kPlayerOneStart) start = int(i);  // Doom spawns the player at the last one
+    }
+    if (start >= 0) {
+      const MapThing& m = data_.things[size_t(start)];
+      src_.player = {{m.x, m.y}, m.angle, FileLoc{data_.where + ": THINGS #" + std::to_string(start), 0}};
+      return;
+    }
+    warn("no player start", "THINGS", "no player 1 start (the player starts beside the first line)");
+    src_.player = {inside_first_wall(), 90, FileLoc{data_.where + ": THINGS", 0}};
+  }
+
+  // A point just in front of the first wall's middle.
+  geom::Vec2 inside_first_wall() const {
+    if (src_.walls.empty()) return {0, 0};
+    const map::Wall& w = src_.walls.front();
+    const geom::Vec2 a = geom::to_world(src_.point(w.v1)), b = geom::to_world(src_.point(w.v2));
+    const geom::Vec2 d = glm::normalize(b - a);
+    return (a + b) * 0.5 + geom::Vec2(d.y, -d.x) * 8.0;  // the front is on the right
+  }
+
+  const MapData& data_;
+  const ImportOptions& options_;
+  Art art_;
+  map::Source src_;
+  std::vector<std::string> warnings_;
+  std::map<std::string, size_t> warning_counts_;
+  std::unordered_map<std::string, int> wall_textures_, flats_;
+};
+
+}  // namespace
+
+ImportResult import_map_data(const Stack& stack, const MapData& data, const ImportOptions& options) {
+  return Importer(stack, data, options).run();
+}
+
+ImportResult import_map(const Stack& stack, std::string_view map_name, const ImportOptions& options) {
+  const std::optional<MapLumps> lumps = stack.map(map_name);
+  if (!lumps) {
+    std::string wads, names;
+    for (const Wad& w : stack.wads()) wads += (wads.empty() ? "" : ", ") + w.name();
+    for (const std::string& n : stack.map_names()) names += (names.empty() ? "" : " ") + n;
+    throw Error(wads + ": no map " + printable(normalize_name(map_name)) +
+                (names.empty() ? " (the WADs hold no maps)" : " (maps: " + names + ")"));
+  }
+  return import_map_data(stack, read_map(*lumps), options);
+}
+
+}  // namespace p3d::wad

@@ -1,0 +1,42 @@
+// A WAD map as a map source, with Doom's art: the importer repairs what Doom
+// tolerates, as Doom behaves, and says so in a located warning; only a map that
+// cannot be built at all (no art, a broken lump, a vertex out of range) is an error.
+//
+// Repairs (each warned about, "<wad>:<map>: LINEDEFS #n: warning: ..."):
+//  - zero-length lines are dropped;
+//  - a line whose front sidedef (or its sector) does not exist is dropped; a bad
+//    back sidedef makes the line one-sided;
+//  - where collinear lines overlap and could be seen together, the later line
+//    keeps only what the earlier ones leave (lines facing apart are both kept);
+//  - unknown textures and flats are missing: a missing upper or lower part shows
+//    the far sector's plane, a missing middle the near sector's planes;
+// Kept as they are, with a warning: ceilings below floors, lines crossing other
+// lines, sectors that do not close, lines with the same sector on both sides.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "engine/map/source.h"
+#include "engine/wad/map_data.h"
+#include "engine/wad/wad.h"
+
+namespace p3d::wad {
+
+struct ImportOptions {
+  size_t max_warnings_per_kind = SIZE_MAX;  // further warnings of a kind are counted, not listed
+};
+
+struct ImportResult {
+  map::Source source;
+  std::vector<std::string> warnings;  // "<wad>:<map>: <record>: warning: <message>"
+};
+
+// Throws Error("<wad>:<map>: ...") when the map does not exist or cannot be built.
+ImportResult import_map(const Stack& stack, std::string_view map_name, const ImportOptions& options = {});
+
+// The same from decoded records (tests write records directly).
+ImportResult import_map_data(const Stack& stack, const MapData& data, const ImportOptions& options = {});
+
+}  // namespace p3d::wad
