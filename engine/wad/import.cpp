@@ -276,7 +276,9 @@ class Importer {
       for (uint32_t i : earlier[j])
         for (const Piece& p : pieces[i]) pieces[j] = subtract(pieces[j], p);
       if (earlier[j].empty()) continue;
-      const std::string record = line_record(w.source), other = line_record(src_.walls[earlier[j].front()].source);
+      const std::string record = line_record(w.source);
+      std::string other;
+      for (uint32_t i : earlier[j]) other += (other.empty() ? "" : ", ") + line_record(src_.walls[i].source);
       if (pieces[j].empty())
         warn("overlapping lines", record, "lies on " + other + " (dropped: the earlier line is drawn)");
       else if (pieces[j].size() != 1 || pieces[j][0].v1 != w.v1 || pieces[j][0].v2 != w.v2)

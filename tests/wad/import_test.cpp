@@ -1,0 +1,466 @@
+// The WAD importer on small maps the tests write: each quirk Doom tolerates is
+// repaired or kept with its warning and the map compiles (BSP invariants exact, the
+// front-to-back renderer equal to the reference); broken WADs give their message;
+// UDMF gives the same level as the binary format; Doom's pegging and masked middles.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/bsp/check.h"
+#include "engine/bsp/load.h"
+#include "engine/render/renderer.h"
+#include "engine/util/error.h"
+#include "tests/support/support.h"
+#include "tests/support/wad_writer.h"
+
+namespace p3d::wad {
+namespace {
+
+using test::TestMap;
+
+// Two rooms: A (0..256 square; floor 0, ceiling 128) and B east of it (256..512;
+// floor 16, ceiling 96), joined by line 2 (x = 256), two-sided, its front facing A.
+TestMap two_rooms() {
+  TestMap m;
+  m.sectors.push_back({});
+  m.sectors.push_back({16, 96});
+  auto line = [&](int x1, int y1, int x2, int y2, int sector) {
+    TestMap::Side s;
+    s.middle = "WALL";
+    s.sector = sector;
+    m.lines.push_back({m.add_vertex(x1, y1), m.add_vertex(x2, y2), 1, 0, 0, m.add_side(s)});
+  };
+  line(0, 0, 0, 256, 0);     // 0: A west
+  line(0, 256, 256, 256, 0);  // 1: A north
+  TestMap::Side front, back;
+  front.upper = front.lower = "WALL";
+  back.sector = 1;
+  m.lines.push_back({m.add_vertex(256, 256), m.add_vertex(256, 0), 4, 0, 0, m.add_side(front), m.add_side(back)});  // 2
+  line(256, 0, 0, 0, 0);      // 3: A south
+  line(256, 256, 512, 256, 1);  // 4: B north
+  line(512, 256, 512, 0, 1);    // 5: B east
+  line(512, 0, 256, 0, 1);      // 6: B south
+  m.things.push_back({64, 128, 0, 1, 7});
+  return m;
+}
+
+struct Built {
+  level::Level level;
+  std::vector<std::string> warnings;
+};
+
+Stack stack_of(const TestMap& m, bool udmf = false) {
+  test::WadWriter w(true);
+  test::add_test_art(w);
+  if (udmf) {
+    w.lump("MAP01");
+    w.text_lump("TEXTMAP", m.udmf());
+    w.lump("ENDMAP");
+  } else {
+    m.add_to(w, "MAP01");
+  }
+  Stack stack;
+  stack.add(Wad(w.bytes(), "test.wad"));
+  return stack;
+}
+
+Built build(const TestMap& m, bool udmf = false) {
+  const Stack stack = stack_of(m, udmf);
+  Built b;
+  b.level = bsp::build_wad_map(stack, "MAP01", {}, &b.warnings);
+  return b;
+}
+
+std::string build_error(const TestMap& m) {
+  try {
+    build(m);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+::testing::AssertionResult has_warning(const Built& b, const std::string& text) {
+  for (const std::string& w : b.warnings)
+    if (w.find(text) != std::string::npos) return ::testing::AssertionSuccess();
+  std::string all;
+  for (const std::string& w : b.warnings) all += "\n  " + w;
+  return ::testing::AssertionFailure() << "no warning containing '" << text << "' among:" << all;
+}
+
+// The compiled level is sound: exact invariants, and bsp renders exactly as the reference.
+void expect_sound(const level::Level& level, const std::string& what) {
+  const auto problems = bsp::check_invariants(level);
+  EXPECT_TRUE(problems.empty()) << what << ": " << (problems.empty() ? "" : problems.front());
+  Rng rng(7);
+  for (int i = 0; i < 24; ++i) {
+    const render::Camera c = i == 0 ? render::camera_at(level, level.player_start, level.player_angle)
+                                    : test::random_camera(level, rng);
+    render::Frame a(64, 40), b(64, 40);
+    render::make_renderer("bsp")->render(level, c, a);
+    render::make_renderer("reference")->render(level, c, b);
+    EXPECT_EQ(a.pixels, b.pixels) << what << " camera " << i;
+  }
+}
+
+TEST(Import, AValidMapCompilesWithoutWarnings) {
+  const Built b = build(two_rooms());
+  EXPECT_TRUE(b.warnings.empty()) << b.warnings.front();
+  const level::Level& l = b.level;
+  EXPECT_EQ(l.walls.size(), 7u);
+  EXPECT_EQ(l.walls[2].source, 2);
+  EXPECT_TRUE(l.walls[2].two_sided());
+  EXPECT_EQ(l.title, "MAP01");
+  EXPECT_EQ(l.player_start, geom::Vec2(64, 128));
+  EXPECT_TRUE(l.paletted());
+  ASSERT_NE(l.sky_texture, level::kNone);
+  EXPECT_EQ(l.textures[size_t(l.sky_texture)].name, "SKY1");
+  // Only the art the map uses is embedded: WALL, the two flats, the sky.
+  EXPECT_EQ(l.textures.size(), 4u);
+  expect_sound(l, "two rooms");
+}
+
+TEST(Import, UdmfGivesTheSameLevelAsTheBinaryFormat) {
+  const Built binary = build(two_rooms()), udmf = build(two_rooms(), true);
+  EXPECT_TRUE(udmf.warnings.empty());
+  ASSERT_EQ(udmf.level.walls.size(), binary.level.walls.size());
+  for (size_t i = 0; i < binary.level.walls.size(); ++i) {
+    EXPECT_EQ(udmf.level.walls[i].p1, binary.level.walls[i].p1);
+    EXPECT_EQ(udmf.level.walls[i].p2, binary.level.walls[i].p2);
+    EXPECT_EQ(udmf.level.walls[i].flags, binary.level.walls[i].flags);
+    for (int s = 0; s < 2; ++s) {
+      EXPECT_EQ(udmf.level.walls[i].sides[s].sector, binary.level.walls[i].sides[s].sector);
+      EXPECT_EQ(udmf.level.walls[i].sides[s].upper, binary.level.walls[i].sides[s].upper);
+      EXPECT_EQ(udmf.level.walls[i].sides[s].middle, binary.level.walls[i].sides[s].middle);
+    }
+  }
+  for (size_t s = 0; s < binary.level.sectors.size(); ++s) {
+    EXPECT_EQ(udmf.level.sectors[s].floor, binary.level.sectors[s].floor);
+    EXPECT_EQ(udmf.level.sectors[s].ceiling, binary.level.sectors[s].ceiling);
+    EXPECT_EQ(udmf.level.sectors[s].light, binary.level.sectors[s].light);
+  }
+  EXPECT_EQ(udmf.level.things.size(), binary.level.things.size());
+  EXPECT_EQ(udmf.level.things[0].flags, binary.level.things[0].flags);
+}
+
+// ---- quirks Doom tolerates: repaired or kept, with a warning ---------------------
+
+TEST(Import, CeilingBelowFloorIsKept) {
+  TestMap m = two_rooms();
+  m.sectors[1].ceiling = 10;  // below its floor of 16
+  const Built b = build(m);
+  EXPECT_TRUE(has_warning(b, "test.wad:MAP01: SECTORS #1: warning: ceiling 10 is below floor 16"));
+  EXPECT_EQ(b.level.sectors[1].ceiling, 10);
+  expect_sound(b.level, "inverted sector");
+}
+
+TEST(Import, CrossingLinesAreKept) {
+  TestMap m = two_rooms();
+  TestMap::Side trigger;
+  const int s = m.add_side(trigger);
+  m.lines.push_back({m.add_vertex(32, 32), m.add_vertex(200, 200), 4, 2, 0, s, s});
+  m.lines.push_back({m.add_vertex(32, 200), m.add_vertex(200, 32), 4, 2, 0, s, s});
+  const Built b = build(m);
+  EXPECT_TRUE(has_warning(b, "LINEDEFS #8: warning: crosses LINEDEFS #7 (both kept, as Doom draws both)"));
+  expect_sound(b.level, "crossing");
+}
+
+TEST(Import, DuplicateAndOverlappingLinesKeepTheEarlierOne) {
+  TestMap m = two_rooms();
+  // Line 2 again, reversed (the E3M6 quirk), and a two-sided piece overlapping A's north wall.
+  TestMap::Side a, bside;
+  bside.sector = 1;
+  m.lines.push_back({m.lines[2].v2, m.lines[2].v1, 4, 0, 0, m.add_side(bside), m.add_side(a)});  // 7
+  m.lines.push_back({m.add_vertex(128, 256), m.add_vertex(384, 256), 4, 0, 0, m.add_side(a), m.add_side(bside)});  // 8
+  const Built b = build(m);
+  EXPECT_TRUE(has_warning(b, "LINEDEFS #7: warning: lies on LINEDEFS #2 (dropped: the earlier line is drawn)"));
+  EXPECT_TRUE(has_warning(b, "LINEDEFS #8: warning: lies on LINEDEFS #1, LINEDEFS #4 (dropped"));
+  for (const level::Wall& w : b.level.walls) EXPECT_NE(w.source, 7);
+  // Line 8 keeps nothing: lines 1 and 4 cover it.
+  for (const level::Wall& w : b.level.walls) EXPECT_NE(w.source, 8);
+  expect_sound(b.level, "overlaps");
+}
+
+TEST(Import, OverlapsKeepTheUncoveredPieceWithItsTextureAlignment) {
+  TestMap m = two_rooms();
+  TestMap::Side s;
+  s.middle = "WALL";
+  s.x_offset = 5;
+  // A one-sided wall over A's south wall (3: 256,0 -> 0,0) and beyond it to x = -128, same direction.
+  m.lines.push_back({m.add_vertex(128, 0), m.add_vertex(-128, 0), 1, 0, 0, m.add_side(s)});  // 7
+  const Built b = build(m);
+  EXPECT_TRUE(has_warning(b, "LINEDEFS #7: warning: overlaps LINEDEFS #3 (keeps only the part the earlier line leaves)"));
+  int pieces = 0;
+  for (const level::Wall& w : b.level.walls)
+    if (w.source == 7) {
+      ++pieces;
+      EXPECT_EQ(geom::to_world(w.p1), geom::Vec2(0, 0));
+      EXPECT_EQ(geom::to_world(w.p2), geom::Vec2(-128, 0));
+      EXPECT_EQ(w.sides[0].x_offset, 5 + 128);  // the texture stays where the whole line put it
+    }
+  EXPECT_EQ(pieces, 1);
+}
+
+TEST(Import, LinesFacingApartOnOneStretchAreBothKept) {
+  TestMap m = two_rooms();
+  // A thin wall: one-sided lines on the same stretch facing apart.
+  TestMap::Side s;
+  s.middle = "WALL";
+  m.lines.push_back({m.add_vertex(64, 64), m.add_vertex(64, 192), 1, 0, 0, m.add_side(s)});
+  m.lines.push_back({m.add_vertex(64, 192), m.add_vertex(64, 64), 1, 0, 0, m.add_side(s)});
+  const Built b = build(m);
+  EXPECT_FALSE(has_warning(b, "LINEDEFS #8"));
+  EXPECT_EQ(b.level.walls.size(), 9u);
+  expect_sound(b.level, "thin wall");
+}
+
+TEST(Import, SameSectorOnBothSidesIsKept) {
+  TestMap m = two_rooms();
+  TestMap::Side s;
+  const int side = m.add_side(s);
+  m.lines.push_back({m.add_vertex(64, 64), m.add_vertex(64, 192), 4, 0, 0, side, side});
+  const Built b = build(m);
+  EXPECT_TRUE(has_warning(b, "LINEDEFS #7: warning: sector 0 on both sides, no special, no texture"));
+  expect_sound(b.level, "self-referencing");
+}
+
+TEST(Import, UnclosedSectorsAreKept) {
+  TestMap m = two_rooms();
+  m.lines.erase(m.lines.begin() + 5);  // B's east wall
+  const Built b = build(m);
+  EXPECT_TRUE(has_warning(b, "SECTORS #1: warning: not closed: its boundary has an open end at (512, 0)"));
+  EXPECT_TRUE(bsp::check_invariants(b.level).empty());
+}
+
+TEST(Import, ZeroLengthLinesAreDropped) {
+  TestMap m = two_rooms();
+  m.lines.push_back({0, 0, 1, 0, 0, 0});
+  const Built b = build(m);
+  EXPECT_TRUE(has_warning(b, "LINEDEFS #7: warning: zero-length line (dropped)"));
+  EXPECT_EQ(b.level.walls.size(), 7u);
+}
+
+TEST(Import, UnknownTexturesAndFlatsAreMissing) {
+  TestMap m = two_rooms();
+  m.sides[0].middle = "NOPE";
+  m.sectors[1].floor_flat = "NOFLAT";
+  m.sides[2].upper = "-";  // needed: B's ceiling is lower
+  const Built b = build(m);
+  EXPECT_TRUE(has_warning(b, "LINEDEFS #0: warning: texture NOPE does not exist (drawn as missing)"));
+  EXPECT_TRUE(has_warning(b, "SECTORS #1: warning: flat NOFLAT does not exist (drawn as a placeholder)"));
+  EXPECT_TRUE(has_warning(b, "LINEDEFS #0: warning: one-sided line without a middle texture"));
+  EXPECT_TRUE(has_warning(b, "LINEDEFS #2: warning: front side needs an upper texture (the far ceiling shows instead)"));
+  expect_sound(b.level, "missing textures");
+}
+
+TEST(Import, BadSideReferencesAreRepaired) {
+  TestMap m = two_rooms();
+  m.lines[0].front = 999;      // no front side: dropped
+  m.lines[2].back = 888;       // no back side: one-sided
+  m.sides[1].sector = 77;      // line 1's front names no sector: dropped
+  const Built b = build(m);
+  EXPECT_TRUE(has_warning(b, "LINEDEFS #0: warning: front sidedef 999 does not exist (SIDEDEFS has 8) (line dropped)"));
+  EXPECT_TRUE(has_warning(b, "LINEDEFS #2: warning: back sidedef 888 does not exist (SIDEDEFS has 8) (line made one-sided)"));
+  EXPECT_TRUE(has_warning(b, "LINEDEFS #1: warning: front SIDEDEFS #1 names sector 77, which does not exist (SECTORS has 2)"));
+  for (const level::Wall& w : b.level.walls) EXPECT_TRUE(w.source != 0 && w.source != 1);
+  EXPECT_TRUE(bsp::check_invariants(b.level).empty());
+}
+
+TEST(Import, NoPlayerStartAndOutOfRangeLight) {
+  TestMap m = two_rooms();
+  m.things.clear();
+  m.sectors[0].light = 300;
+  const Built b = build(m);
+  EXPECT_TRUE(has_warning(b, "THINGS: warning: no player 1 start (the player starts beside the first line)"));
+  EXPECT_TRUE(has_warning(b, "SECTORS #0: warning: light 300 is outside 0..255 (clamped)"));
+  EXPECT_EQ(b.level.sectors[0].light, 255);
+  EXPECT_NE(b.level.sector_at(b.level.player_start), level::kNone);
+}
+
+// ---- maps that cannot be built: clear errors ---------------------------------------
+
+TEST(Import, BrokenMapsGiveTheirMessage) {
+  TestMap m = two_rooms();
+  m.lines[3].v2 = 40;
+  EXPECT_EQ(build_error(m), "test.wad:MAP01: LINEDEFS #3: vertex 40 does not exist (VERTEXES has 6)");
+
+  test::WadWriter w(true);
+  test::add_test_art(w);
+  two_rooms().add_to(w, "MAP01");
+  w.lump("MAP02");
+  w.lump("THINGS", {1, 2, 3});  // not a whole number of 10-byte records
+  Stack stack;
+  stack.add(Wad(w.bytes(), "test.wad"));
+  try {
+    bsp::build_wad_map(stack, "MAP02", {}, nullptr);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "test.wad:MAP02: the map has no VERTEXES lump");
+  }
+  try {
+    bsp::build_wad_map(stack, "MAP07", {}, nullptr);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "test.wad: no map MAP07 (maps: MAP01 MAP02)");
+  }
+}
+
+TEST(Import, UdmfErrorsAreLocated) {
+  struct Case {
+    std::string text, message;
+  };
+  const std::vector<Case> cases = {
+      {"vertex { x = 1; }", "w:M: TEXTMAP:1: no 'namespace = \"...\";' statement"},
+      {"namespace = \"doom\";\nvertex { x = 1 }", "w:M: TEXTMAP:2: expected ';', found '}'"},
+      {"namespace = \"doom\";\n\nvertex { x = \"one\"; }", "w:M: TEXTMAP:3: 'x' must be a number"},
+      {"namespace = \"doom\";\nlinedef { v1 = 0; v2 = 1; sidefront = 0; }", "w:M: TEXTMAP:2: linedef #0: vertex 0 does not exist (0 vertices come before it)"},
+      {"namespace = \"doom\";\nlinedef { v1 = 0; }", "w:M: TEXTMAP:2: linedef #0 needs v1, v2 and sidefront"},
+      {"namespace = \"doom\";\n/* never closed", "w:M: TEXTMAP:2: comment never closed"},
+      {"namespace = \"doom\";\nthing { ambush = maybe; }", "w:M: TEXTMAP:2: 'ambush' must be true or false"},
+      {"namespace = \"doom\";\nvertex { x = 0x; }", "w:M: TEXTMAP:2: '0x' is not a number"},
+  };
+  for (const Case& c : cases) {
+    try {
+      parse_udmf(c.text, "w:M");
+      ADD_FAILURE() << c.text;
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), c.message);
+    }
+  }
+  const MapData d = parse_udmf("namespace = \"zdoom\"; vertex { x = -0x10; y = 1.5e1; unknownkey = \"ignored\"; }\n"
+                               "sidedef { sector = 0; offsetx_mid = 4.5; light = 16; }\nfoo { bar = 1; }",
+                               "w:M");
+  ASSERT_EQ(d.vertices.size(), 1u);
+  EXPECT_EQ(d.vertices[0].x, -16);
+  EXPECT_EQ(d.vertices[0].y, 15);
+  EXPECT_EQ(d.sidedefs[0].part_x[1], 4.5);
+  EXPECT_EQ(d.sidedefs[0].light, 16);
+}
+
+TEST(Import, APwadMapUsesTheIwadArtAndOverridesItsMap) {
+  test::WadWriter iwad(true), pwad;
+  test::add_test_art(iwad);
+  two_rooms().add_to(iwad, "MAP01");
+  TestMap mine = two_rooms();
+  mine.sectors[0].light = 96;
+  mine.add_to(pwad, "MAP01");
+  pwad.lump("F_START");
+  pwad.lump("FLOOR", std::vector<uint8_t>(64 * 64, 200));  // a replacement flat
+  pwad.lump("F_END");
+  Stack stack;
+  stack.add(Wad(iwad.bytes(), "doom.wad"));
+  stack.add(Wad(pwad.bytes(), "mine.wad"));
+  std::vector<std::string> warnings;
+  const level::Level l = bsp::build_wad_map(stack, "map01", {}, &warnings);
+  EXPECT_EQ(l.sectors[0].light, 96);
+  const level::Texture& floor = l.textures[size_t(l.sectors[0].floor_texture)];
+  EXPECT_EQ(floor.indices[0], 200);
+  EXPECT_EQ(bsp::resolve_map_name(stack, ""), "MAP01");
+}
+
+// ---- drawing: Doom's pegging and masked middles ------------------------------------
+
+// The texel row of each pixel of column x (the test art's WALL texture encodes its
+// row in the palette index: red = row + 100), or -1 where the pixel is not WALL.
+std::vector<int> texel_rows(const level::Level& level, const render::Camera& camera, int x) {
+  render::Frame frame(160, 100);
+  render::make_renderer("bsp")->render(level, camera, frame);
+  std::vector<int> rows;
+  for (int y = 0; y < frame.height; ++y) {
+    const uint32_t c = frame.at(x, y);
+    const int row = int(image::red(c)) - 100;
+    rows.push_back(row >= 0 && row < 72 && image::green(c) == 255 - image::red(c) ? row : -1);
+  }
+  return rows;
+}
+
+int first_wall_row(const std::vector<int>& rows) {
+  for (int r : rows)
+    if (r >= 0) return r;
+  return -1;
+}
+int last_wall_row(const std::vector<int>& rows) {
+  for (auto it = rows.rbegin(); it != rows.rend(); ++it)
+    if (*it >= 0) return *it;
+  return -1;
+}
+
+TEST(Import, DoomPeggingAndTexturesOf72RowsWrap) {
+  // One room 0..256 with a 96-high ceiling, lit full bright; the east wall faces the camera.
+  TestMap m;
+  m.add_room({{0, 0}, {0, 256}, {256, 256}, {256, 0}}, {0, 96, "FLOOR", "CEIL", 255});
+  m.things.push_back({128, 128, 0, 1, 7});
+  const render::Camera camera{{128, 128}, 41, 0, 90};
+  std::vector<int> rows = texel_rows(build(m).level, camera, 80);
+  EXPECT_LE(first_wall_row(rows), 1);  // pegged: the texture hangs from the ceiling
+  // 96 units of a 72-row texture: it wraps once, by modulo.
+  bool wrapped = false;
+  for (size_t y = 1; y < rows.size(); ++y)
+    if (rows[y] >= 0 && rows[y - 1] >= 0 && rows[y] < rows[y - 1]) wrapped = true;
+  EXPECT_TRUE(wrapped);
+
+  m.lines[2].flags |= 16;  // lower unpegged: a one-sided wall's texture stands on the floor
+  rows = texel_rows(build(m).level, camera, 80);
+  EXPECT_GE(last_wall_row(rows), 70);
+}
+
+TEST(Import, UpperAndLowerTexturesFollowDoomsRules) {
+  // From A, facing line 2: the upper part (96..128) and the lower part (0..16).
+  TestMap m = two_rooms();
+  m.sectors[0].light = m.sectors[1].light = 255;
+  const render::Camera camera{{100, 128}, 41, 0, 90};
+  // The first run of WALL pixels from the top is the upper part, the last from the
+  // bottom the lower part (B's far walls show through the opening between them).
+  auto parts = [&](const TestMap& map) {
+    const std::vector<int> rows = texel_rows(build(map).level, camera, 80);
+    std::vector<int> upper, lower;
+    size_t y = 0;
+    while (y < rows.size() && rows[y] < 0) ++y;
+    for (; y < rows.size() && rows[y] >= 0; ++y) upper.push_back(rows[y]);
+    size_t end = rows.size();
+    while (end > 0 && rows[end - 1] < 0) --end;
+    for (; end > 0 && rows[end - 1] >= 0; --end) lower.insert(lower.begin(), rows[end - 1]);
+    return std::make_pair(upper, lower);
+  };
+  auto [upper, lower] = parts(m);
+  ASSERT_FALSE(upper.empty());
+  ASSERT_FALSE(lower.empty());
+  EXPECT_GE(upper.back(), 70);  // the upper texture rests on the far ceiling
+  EXPECT_LE(lower.front(), 1);  // the lower texture hangs from the far floor
+  m.lines[2].flags |= 8 | 16;   // upper unpegged: from the near ceiling; lower unpegged: from the near ceiling too
+  std::tie(upper, lower) = parts(m);
+  EXPECT_LE(upper.front(), 1);
+  // 128 - 16 = 112 units from the near ceiling down to the far floor: row 112 mod 72 = 40 there.
+  EXPECT_NEAR(lower.front(), 40, 1);
+}
+
+TEST(Import, MaskedMiddlesShowWhatIsBehindAndAreNotTiled) {
+  TestMap m = two_rooms();
+  m.sectors[0].light = 255;     // full bright: every texel keeps its palette index
+  m.sectors[1] = m.sectors[0];  // the same heights: nothing above or below the opening
+  m.sides[2].upper = m.sides[2].lower = "-";
+  m.sides[2].middle = "MESH";   // 32 rows high, every other column transparent
+  const Built b = build(m);
+  const render::Camera camera{{100, 128}, 41, 0, 90};
+  render::Frame frame(160, 100);
+  render::Probe probe;
+  const render::RenderStats s = render::make_renderer("bsp")->render(b.level, camera, frame, &probe);
+  EXPECT_GT(s.masked_pixels, 0u);
+  EXPECT_EQ(s.pixels_written, 160u * 100);
+  // MESH (index 40, red 40) hangs from the ceiling (128) down to 96: 32 units, once.
+  const double scale = (160 / 2.0) / (256 - 100);  // pixels per unit at the line's depth
+  const int mesh_bottom = int(50 - (96 - 41) * scale);
+  int mesh = 0, through = 0;
+  for (int y = 0; y < frame.height; ++y)
+    for (int x = 40; x < 120; ++x) {
+      const bool is_mesh = image::red(frame.at(x, y)) == 40;
+      if (y > mesh_bottom + 1) EXPECT_FALSE(is_mesh) << "tiled below the texture at row " << y;
+      if (y < mesh_bottom - 1 && y > 10) (is_mesh ? mesh : through)++;
+    }
+  EXPECT_GT(mesh, 0);
+  EXPECT_GT(through, 0);  // the holes show the room behind
+  expect_sound(b.level, "masked");
+}
+
+}  // namespace
+}  // namespace p3d::wad
