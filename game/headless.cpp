@@ -10,7 +10,7 @@ namespace p3d::game {
 
 int replay_headless(Session& session, const sim::Demo& demo, const HeadlessOptions& o) {
   if (demo.level_fingerprint != sim::fingerprint(session.level()))
-    throw Error("the demo was recorded on a different level than " + session.map_path().string());
+    throw Error("the demo was recorded on a different level than " + session.name());
   std::filesystem::create_directories(o.out_dir);
   session.spawn(demo.start, demo.angle);
   render::Frame frame(o.width, o.height);

@@ -27,18 +27,34 @@ size_t autopilot_headless(game::Session& session, const std::vector<geom::Vec2>&
   return session.recording().tics.size();
 }
 
+// Doom's -warp: "MAP" on a Doom II IWAD (MAPxx maps), "EPISODE [MAP]" on Doom's (ExMy).
+std::string warp_map(const bsp::LevelSource& source, const std::vector<int>& warp) {
+  const wad::Stack wads = bsp::read_wads(source.wads);
+  const auto names = wads.map_names();
+  const bool doom2 = std::any_of(names.begin(), names.end(), [](const std::string& n) { return n.rfind("MAP", 0) == 0; });
+  char name[16];
+  if (doom2)
+    std::snprintf(name, sizeof name, "MAP%02d", warp[0]);
+  else
+    std::snprintf(name, sizeof name, "E%dM%d", warp[0], warp.size() > 1 ? warp[1] : 1);
+  return name;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"game: walk a level (.bsp, .map or .grid) with Doom's controls", "game"};
-  std::string map_path, record, play, out_dir, resolution, window = "960x600", renderer = "bsp", autopilot;
+  CLI::App app{"game: walk a level (.bsp, .map, .grid, or a WAD map) with Doom's controls", "game"};
+  cli::LevelArgs level_args;
+  std::vector<int> warp;
+  std::string record, play, out_dir, resolution, window = "960x600", renderer = "bsp", autopilot;
   bool headless = false, fullscreen = false, no_vsync = false, map_reload = false, timedemo = false;
   int capture_every = 35;
   uint64_t quit_after = 0;
   double fov = 90, sensitivity = 24;
-  app.add_option("map", map_path, "level: a compiled .bsp, or a .map/.grid compiled on the fly")
-      ->required()
-      ->check(CLI::ExistingFile);
+  cli::add_level_options(app, level_args);
+  app.add_option("--warp", warp, "start on a WAD map as Doom's -warp: MAP (Doom II) or EPISODE [MAP]")
+      ->expected(1, 2)
+      ->check(CLI::Range(0, 99));
   app.add_option("--record", record, "record every tic's input to this demo file");
   app.add_option("--play", play, "replay this demo, then quit")->check(CLI::ExistingFile);
   app.add_flag("--timedemo", timedemo, "with --play: one tic per frame as fast as possible, then report the fps");
@@ -54,7 +70,7 @@ int main(int argc, char** argv) {
   app.add_flag("--no-vsync", no_vsync, "uncapped frame rate");
   app.add_option("--renderer", renderer, "bsp, painter, dda, sphere, sphere-naive or reference")->capture_default_str();
   app.add_option("--fov", fov, "horizontal field of view")->check(CLI::Range(30.0, 160.0))->capture_default_str();
-  app.add_flag("--map-reload", map_reload, "recompile and reload the map when its source changes on disk");
+  app.add_flag("--map-reload", map_reload, "recompile and reload the level when its source or WAD changes on disk");
   app.add_option("--autopilot", autopilot, "walk through these waypoints (a camera list) instead of reading input")
       ->check(CLI::ExistingFile);
   app.add_option("--sensitivity", sensitivity, "mouse turn per pixel, in 1/65536 of a turn")
@@ -68,14 +84,21 @@ int main(int argc, char** argv) {
     if (headless && play.empty() && autopilot.empty())
       throw CLI::ValidationError("--headless", "needs --play (to capture frames) or --autopilot (to record)");
     if (headless && !play.empty() && out_dir.empty()) throw CLI::ValidationError("--out", "--headless --play needs --out DIR");
-    if (map_reload && !bsp::is_source_path(map_path))
-      throw CLI::ValidationError("--map-reload", "needs a .map or .grid source, not a compiled level");
+    bsp::LevelSource source = cli::level_source(level_args);
+    if (!warp.empty()) {
+      if (!source.is_wad()) throw CLI::ValidationError("--warp", "picks a map in WADs: use it with --iwad");
+      if (!level_args.map.empty()) throw CLI::ValidationError("--warp", "use either --warp or --map");
+      source.map = warp_map(source, warp);
+    }
+    if (map_reload && !source.is_wad() && !bsp::is_source_path(source.file))
+      throw CLI::ValidationError("--map-reload", "needs a .map or .grid source or a WAD, not a compiled level");
     int rw = 0, rh = 0, ww = 0, wh = 0;
     if (!resolution.empty()) cli::parse_size(resolution, rw, rh);
     cli::parse_size(window, ww, wh);
 
-    game::Session session(map_path);
+    game::Session session(source);
     session.fov = fov;
+    const std::string& map_path = session.name();
     if (!session.select_renderer(renderer)) throw Error("renderer '" + renderer + "' cannot draw " + map_path);
     std::optional<sim::Demo> demo;
     if (!play.empty()) {

@@ -201,9 +201,14 @@ class Window {
     if (o_.quit_after_tics && session_.tics() >= o_.quit_after_tics) running_ = false;
   }
 
+  // The newest modification among the files the level is read from.
   std::filesystem::file_time_type modified_time() const {
-    std::error_code ec;
-    return std::filesystem::last_write_time(session_.map_path(), ec);
+    std::filesystem::file_time_type newest{};
+    for (const auto& file : session_.files()) {
+      std::error_code ec;
+      newest = std::max(newest, std::filesystem::last_write_time(file, ec));
+    }
+    return newest;
   }
 
   void check_reload() {

@@ -12,20 +12,27 @@ const std::vector<std::string>& key_renderers() {
   return names;
 }
 
-Session::Session(const std::filesystem::path& map_path) : map_path_(map_path) {
+Session::Session(const bsp::LevelSource& source) : source_(source) {
   load();
   player_ = previous_ = world_->spawn();
   select_renderer("bsp");
 }
 
 void Session::load() {
-  level_ = std::make_unique<level::Level>(bsp::load_level(map_path_));
+  bsp::OpenedLevel opened = bsp::open_level(source_);
+  name_ = opened.name;
+  level_ = std::make_unique<level::Level>(std::move(opened.level));
   world_ = std::make_unique<sim::World>(*level_);
   automap_view_.set_level(*level_);
 }
 
 std::string Session::title() const {
-  return level_->title.empty() ? map_path_.filename().string() : level_->title;
+  return level_->title.empty() ? std::filesystem::path(name_).filename().string() : level_->title;
+}
+
+std::vector<std::filesystem::path> Session::files() const {
+  if (source_.is_wad()) return source_.wads;
+  return {source_.file};
 }
 
 void Session::spawn(geom::Vec2 pos, double angle) {
@@ -117,7 +124,7 @@ bool Session::reload() {
   player_ = previous_ = keep;
   player_.z = previous_.z = std::max(keep.z, world_->heights_at(keep.pos).floor);
   if (!select_renderer(renderer_name_)) select_renderer("bsp");
-  say("reloaded " + map_path_.filename().string());
+  say("reloaded " + std::filesystem::path(name_).filename().string());
   return true;
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/bsp/load.h"
 #include "engine/level/level.h"
 #include "engine/render/renderer.h"
 #include "engine/sim/sim.h"
@@ -22,12 +23,16 @@ const std::vector<std::string>& key_renderers();
 
 class Session {
  public:
-  explicit Session(const std::filesystem::path& map_path);
+  explicit Session(const bsp::LevelSource& source);
+  explicit Session(const std::filesystem::path& map_path) : Session(bsp::LevelSource{map_path, {}, {}}) {}
 
   const level::Level& level() const { return *level_; }
   const sim::World& world() const { return *world_; }
-  const std::filesystem::path& map_path() const { return map_path_; }
+  // The level's name for messages: its file, or "<wad>:<map>".
+  const std::string& name() const { return name_; }
   std::string title() const;
+  // The files a reload reads: the source, or the WADs.
+  std::vector<std::filesystem::path> files() const;
 
   // ---- simulation
   void spawn(geom::Vec2 pos, double angle);
@@ -61,7 +66,8 @@ class Session {
  private:
   void load();
 
-  std::filesystem::path map_path_;
+  bsp::LevelSource source_;
+  std::string name_;
   std::unique_ptr<level::Level> level_;
   std::unique_ptr<sim::World> world_;
   sim::Player player_, previous_;

@@ -4,11 +4,19 @@
 //   grids       grid ray casting against open distance: mazes and open arenas
 //   strategies  tree size, depth, build time and frame time per BSP strategy
 // Timings are wall-clock medians on one thread; compare ratios within one run.
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <map>
 
 #include "engine/bsp/build.h"
+#include "engine/bsp/load.h"
+#include "engine/util/rng.h"
+#include "engine/wad/write.h"
 #include "engine/level/io.h"
 #include "engine/map/generate.h"
 #include "engine/render/camera_file.h"
@@ -22,6 +30,9 @@ using Clock = std::chrono::steady_clock;
 namespace {
 
 struct Settings {
+  cli::LevelArgs wads;         // the wad section: --iwad, --file, --map
+  int cameras = 30;            // the wad section: random cameras per map
+  int runs = 5;                // the wad section: compiles per map and tool (median)
   int width = 640, height = 400;
   int repeat = 3;              // renders per camera; the median of all frames is reported
   double budget_seconds = 2;   // per renderer and map: slow renderers render a prefix of the path
@@ -297,6 +308,145 @@ void bench_strategies(const Settings& s) {
     }
 }
 
+// ---- wad: every map of WADs compiled beside ZDBSP, and rendered ---------------
+
+// Runs a program with its output discarded; the wall time in seconds. Throws if it fails.
+double run_process(const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  const auto start = Clock::now();
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, 1);
+    ::dup2(null, 2);
+    ::execvp(argv[0], argv.data());
+    ::_exit(127);
+  }
+  int status = 0;
+  if (pid < 0 || ::waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw Error(args[0] + " failed (" + args.back() + ")");
+  return cli::seconds_since(start);
+}
+
+std::filesystem::path own_directory() { return std::filesystem::read_symlink("/proc/self/exe").parent_path(); }
+
+bool on_path(const std::string& program) {
+  for (const char* dir : {"/usr/bin", "/usr/local/bin", "/usr/games"})
+    if (std::filesystem::exists(std::filesystem::path(dir) / program)) return true;
+  return false;
+}
+
+// ZDBSP's nodes for one map: segs, and the mean depth of its subsectors (as our leaves).
+struct PeerTree {
+  size_t segs = 0;
+  double mean_depth = 0;
+};
+PeerTree read_peer_tree(const std::filesystem::path& wad_path, const std::string& map) {
+  const wad::Wad w(read_file_bytes(wad_path), wad_path.string());
+  wad::Stack stack;
+  stack.add(w);
+  const auto lumps = stack.map(map);
+  const wad::Lump *segs = lumps ? lumps->find("SEGS") : nullptr, *nodes = lumps ? lumps->find("NODES") : nullptr;
+  if (!segs || !nodes || nodes->bytes.size() % 28) throw Error(wad_path.string() + ": no vanilla nodes for " + map);
+  PeerTree t;
+  t.segs = segs->bytes.size() / 12;
+  const size_t n = nodes->bytes.size() / 28;
+  auto child = [&](size_t node, int k) {
+    const size_t at = node * 28 + 24 + 2 * size_t(k);
+    return uint16_t(nodes->bytes[at] | nodes->bytes[at + 1] << 8);
+  };
+  size_t leaves = 0, depth_sum = 0;
+  std::vector<std::pair<size_t, size_t>> stack_nodes{{n - 1, 1}};  // the root is the last node
+  while (!stack_nodes.empty()) {
+    const auto [node, depth] = stack_nodes.back();
+    stack_nodes.pop_back();
+    for (int k = 0; k < 2; ++k) {
+      const uint16_t c = child(node, k);
+      if (c & 0x8000) {
+        ++leaves, depth_sum += depth;
+      } else if (c < n) {
+        stack_nodes.push_back({c, depth + 1});
+      }
+    }
+  }
+  t.mean_depth = leaves ? double(depth_sum) / double(leaves) : 0;
+  return t;
+}
+
+// Cameras at random points inside sectors, looking anywhere, eye 41 above the floor.
+std::vector<render::Camera> random_cameras(const level::Level& level, int count, uint64_t seed) {
+  Rng rng(seed);
+  std::vector<render::Camera> out;
+  for (int attempt = 0; int(out.size()) < count && attempt < count * 1000; ++attempt) {
+    const geom::Vec2 p{rng.uniform(level.bounds.min.x, level.bounds.max.x), rng.uniform(level.bounds.min.y, level.bounds.max.y)};
+    const int sector = level.sector_at(p);
+    if (sector == level::kNone) continue;
+    const level::Sector& s = level.sectors[size_t(sector)];
+    if (s.ceiling - s.floor < 56) continue;  // not inside a closed door or a crusher
+    out.push_back(render::camera_at(level, p, rng.uniform(0, 360)));
+  }
+  return out;
+}
+
+double geomean(const std::vector<double>& v) {
+  double log_sum = 0;
+  for (double x : v) log_sum += std::log(x);
+  return v.empty() ? 0 : std::exp(log_sum / double(v.size()));
+}
+
+void bench_wad(const Settings& s) {
+  const bsp::LevelSource source = cli::level_source(s.wads);
+  const wad::Stack wads = bsp::read_wads(source.wads);
+  const std::vector<std::string> maps = s.wads.map.empty() ? wads.map_names() : std::vector<std::string>{wad::normalize_name(s.wads.map)};
+  const bool zdbsp = on_path("zdbsp");
+  const auto dir = std::filesystem::temp_directory_path() / ("p3d-bench-wad-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string mapc = (own_directory() / "mapc").string();
+  std::printf("\n### %s: every map compiled (whole process, median of %d) beside ZDBSP, and rendered\n\n",
+              source.wads.back().filename().c_str(), s.runs);
+  std::printf("| map | lines | mapc ms | zdbsp ms | mapc / zdbsp | segs (2-sided x2) | zdbsp segs | segs / zdbsp | "
+              "depth | zdbsp depth | bsp ms/frame %dx%d | fps |\n", s.width, s.height);
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  std::vector<double> time_ratios, seg_ratios, frame_ms;
+  for (const std::string& map : maps) {
+    bsp::Stats stats;
+    const level::Level level = bsp::build_wad_map(wads, map, {}, nullptr, &stats);
+    size_t segs = 0;
+    for (const level::Fragment& f : level.fragments) segs += level.walls[f.wall].two_sided() ? 2 : 1;
+
+    std::vector<std::string> ours = {mapc, "--iwad", source.wads.front().string()};
+    for (size_t i = 1; i < source.wads.size(); ++i) ours.insert(ours.end(), {"--file", source.wads[i].string()});
+    ours.insert(ours.end(), {"--map", map, "-o", (dir / "out.bsp").string()});
+    const auto single = dir / "single.wad", built = dir / "built.wad";
+    write_file_atomically(single, wad::map_without_nodes(*wads.map(map)));
+    const std::vector<std::string> peer = {"zdbsp", "-o", built.string(), single.string()};
+    std::vector<double> ours_s, peer_s;
+    for (int r = 0; r < s.runs; ++r) {  // interleaved: the machine's noise hits both alike
+      ours_s.push_back(run_process(ours));
+      if (zdbsp) peer_s.push_back(run_process(peer));
+    }
+    const double ours_ms = median(ours_s) * 1000, peer_ms = zdbsp ? median(peer_s) * 1000 : 0;
+    const PeerTree tree = zdbsp ? read_peer_tree(built, map) : PeerTree{};
+
+    const auto cameras = random_cameras(level, s.cameras, 1);
+    const Timing t = time_renderer(*render::make_renderer("bsp"), level, cameras, s);
+    frame_ms.push_back(t.median_ms);
+    if (zdbsp) time_ratios.push_back(ours_ms / peer_ms), seg_ratios.push_back(double(segs) / double(tree.segs));
+    std::printf("| %s | %zu | %s | %s | %s | %zu | %s | %s | %s | %s | %s | %s |\n", map.c_str(), stats.walls,
+                fixed(ours_ms, 1).c_str(), zdbsp ? fixed(peer_ms, 1).c_str() : "n/a",
+                zdbsp ? fixed(ours_ms / peer_ms, 2).c_str() : "n/a", segs, zdbsp ? std::to_string(tree.segs).c_str() : "n/a",
+                zdbsp ? fixed(double(segs) / double(tree.segs), 3).c_str() : "n/a", fixed(stats.mean_depth, 1).c_str(),
+                zdbsp ? fixed(tree.mean_depth, 1).c_str() : "n/a", fixed(t.median_ms, 3).c_str(),
+                fixed(1000 / t.median_ms, 0).c_str());
+    std::fflush(stdout);
+  }
+  std::printf("| geomean | | | | %s | | | %s | | | %s | |\n", zdbsp ? fixed(geomean(time_ratios), 2).c_str() : "n/a",
+              zdbsp ? fixed(geomean(seg_ratios), 3).c_str() : "n/a", fixed(geomean(frame_ms), 3).c_str());
+  std::filesystem::remove_all(dir);
+}
+
 std::string cpu_name() {
   std::ifstream in("/proc/cpuinfo");
   std::string line;
@@ -312,8 +462,12 @@ int main(int argc, char** argv) {
   Settings s;
   std::vector<std::string> sections;
   std::string size_text = "640x400";
-  app.add_option("sections", sections, "render, scaling, grids, strategies (default: all)")
-      ->check(CLI::IsMember({"render", "scaling", "grids", "strategies"}));
+  app.add_option("sections", sections,
+                 "render, scaling, grids, strategies, wad (default: all but wad; with --iwad, wad)")
+      ->check(CLI::IsMember({"render", "scaling", "grids", "strategies", "wad"}));
+  cli::add_wad_options(app, s.wads);
+  app.add_option("--cameras", s.cameras, "wad: random cameras per map")->check(CLI::Range(1, 100000))->capture_default_str();
+  app.add_option("--runs", s.runs, "wad: compiles per map and tool (median)")->check(CLI::Range(1, 1000))->capture_default_str();
   app.add_option("--size", size_text, "resolution WxH")->capture_default_str();
   app.add_option("--repeat", s.repeat, "renders per camera")->check(CLI::Range(1, 1000))->capture_default_str();
   app.add_option("--budget", s.budget_seconds, "seconds per renderer and map before the path is cut short")
@@ -328,7 +482,11 @@ int main(int argc, char** argv) {
     cli::parse_size(size_text, s.width, s.height);
     for (const auto& r : s.renderers)
       if (!render::make_renderer(r)) throw CLI::ValidationError("--renderers", "unknown renderer '" + r + "'");
-    if (sections.empty()) sections = {"render", "scaling", "grids", "strategies"};
+    if (sections.empty())
+      sections = s.wads.iwad.empty() ? std::vector<std::string>{"render", "scaling", "grids", "strategies"}
+                                     : std::vector<std::string>{"wad"};
+    if (std::count(sections.begin(), sections.end(), "wad") && s.wads.iwad.empty())
+      throw CLI::ValidationError("--iwad", "the wad section needs WADs: --iwad [--file ...] [--map ...]");
 #ifndef NDEBUG
     std::printf("WARNING: not a Release build; timings are meaningless.\n");
 #endif
@@ -338,6 +496,7 @@ int main(int argc, char** argv) {
       if (section == "scaling") bench_scaling(s);
       if (section == "grids") bench_grids(s);
       if (section == "strategies") bench_strategies(s);
+      if (section == "wad") bench_wad(s);
     }
     return 0;
   });

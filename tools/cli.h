@@ -68,13 +68,19 @@ struct LevelArgs {
   std::string map;
 };
 
-inline void add_level_options(CLI::App& app, LevelArgs& a) {
-  app.add_option("level", a.path, "level: a compiled .bsp, a .map or .grid (compiled on the fly), or a WAD")
-      ->check(CLI::ExistingFile);
+// --iwad, --file, --map: a map in WADs, Doom's way.
+inline void add_wad_options(CLI::App& app, LevelArgs& a) {
   app.add_option("--iwad", a.iwad, "the IWAD whose maps and art to use, as Doom's -iwad")->check(CLI::ExistingFile);
   app.add_option("--file", a.files, "PWADs loaded after the IWAD, later ones overriding (Doom's -file)")
       ->check(CLI::ExistingFile);
   app.add_option("--map", a.map, "the WAD's map: MAP01, E1M1 (default: the first map of the last WAD holding maps)");
+}
+
+// A level file as the positional argument, or a map in WADs.
+inline void add_level_options(CLI::App& app, LevelArgs& a) {
+  app.add_option("level", a.path, "level: a compiled .bsp, a .map or .grid (compiled on the fly), or a WAD")
+      ->check(CLI::ExistingFile);
+  add_wad_options(app, a);
 }
 
 // Whether a file starts like a WAD (IWAD or PWAD).

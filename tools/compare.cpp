@@ -103,16 +103,16 @@ std::string json_escape(const std::string& s) {
 
 int main(int argc, char** argv) {
   CLI::App app{"compare: one level and camera through every renderer, side by side", "compare"};
-  std::string map_path, pos_text, path_file, size_text = "320x200", output, json;
+  cli::LevelArgs level_args;
+  std::string pos_text, path_file, size_text = "320x200", output, json;
   std::vector<std::string> names;
-  double angle = 0, eye = render::kEyeHeight, fov = 90;
+  std::optional<double> angle;
+  double eye = render::kEyeHeight, fov = 90;
   int frames = 5;
   render::RendererOptions ropt;
-  app.add_option("map", map_path, "level: a compiled .bsp, or a .map/.grid compiled on the fly")
-      ->required()
-      ->check(CLI::ExistingFile);
-  app.add_option("--pos", pos_text, "camera position X,Y");
-  app.add_option("--angle", angle, "view angle, degrees counter-clockwise from east")->capture_default_str();
+  cli::add_level_options(app, level_args);
+  app.add_option("--pos", pos_text, "camera position X,Y (default: the player start)");
+  app.add_option("--angle", angle, "view angle, degrees counter-clockwise from east (default: the player's)");
   app.add_option("--eye", eye, "eye height above the floor")->capture_default_str();
   app.add_option("--fov", fov, "horizontal field of view")->check(CLI::Range(1.0, 179.0))->capture_default_str();
   app.add_option("--path", path_file, "camera path (NAME X Y ANGLE [EYE [FOV]] per line): report medians")
@@ -128,21 +128,27 @@ int main(int argc, char** argv) {
   return cli::run(app, argc, argv, [&] {
     int w = 0, h = 0;
     cli::parse_size(size_text, w, h);
+    const bsp::LevelSource source = cli::level_source(level_args);
     std::vector<render::CameraSpec> specs;
     if (!path_file.empty()) {
       if (!pos_text.empty()) throw CLI::ValidationError("--pos", "use either --pos or --path");
       specs = render::read_camera_list(path_file);
     } else {
-      if (pos_text.empty()) throw CLI::ValidationError("--pos", "a camera position is required (or --path)");
-      if (!std::isfinite(angle)) throw CLI::ValidationError("--angle", "must be finite");
+      if (angle && !std::isfinite(*angle)) throw CLI::ValidationError("--angle", "must be finite");
       cli::check_eye(eye);
-      specs.push_back({"camera", cli::parse_point(pos_text, "--pos"), angle, eye, fov});
     }
     if (names.empty()) names = render::renderer_names();
     names.erase(std::remove(names.begin(), names.end(), "reference"), names.end());
     names.push_back("reference");  // the baseline, drawn last
 
-    const level::Level level = bsp::load_level(map_path);
+    const bsp::OpenedLevel opened = bsp::open_level(source);
+    cli::report_warnings(opened, false);
+    const level::Level& level = opened.level;
+    if (path_file.empty()) {  // one camera: where asked, else at the player start
+      const geom::Vec2 pos = pos_text.empty() ? level.player_start : cli::parse_point(pos_text, "--pos");
+      specs.push_back({"camera", pos, angle.value_or(pos_text.empty() ? level.player_angle : 0.0), eye, fov});
+    }
+    const std::string& map_path = opened.name;
     std::vector<std::unique_ptr<render::Renderer>> renderers;
     std::vector<Row> rows;
     for (const std::string& name : names) {

@@ -117,7 +117,7 @@ World::Heights World::heights_at(Vec2 pos) const {
 
 bool World::blocks(uint32_t wall, Vec2 from, double z) const {
   const level::Wall& w = level_.walls[wall];
-  if (!w.two_sided()) return true;  // one-sided walls and plain segments
+  if (!w.two_sided() || (w.flags & level::kImpassable)) return true;  // one-sided, plain segments, Doom's impassable
   const int near = geom::cross(w.b - w.a, from - w.a) > 0 ? 1 : 0;
   const level::Sector& far = level_.sectors[w.sides[1 - near].sector];
   return far.floor - z > kMaxStep || far.ceiling - far.floor < kPlayerHeight ||

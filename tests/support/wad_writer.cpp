@@ -1,6 +1,7 @@
 #include "tests/support/wad_writer.h"
 
 #include "engine/util/bytes.h"
+#include "engine/wad/write.h"
 
 namespace p3d::test {
 
@@ -21,23 +22,9 @@ void WadWriter::text_lump(const std::string& name, const std::string& text) {
 }
 
 std::vector<uint8_t> WadWriter::bytes() const {
-  ByteWriter out;
-  out.raw(std::span(reinterpret_cast<const uint8_t*>(iwad_ ? "IWAD" : "PWAD"), 4));
-  out.u32(uint32_t(lumps_.size()));
-  size_t directory = 12;
-  for (const auto& l : lumps_) directory += l.second.size();
-  out.u32(uint32_t(directory));
-  std::vector<uint32_t> offsets;
-  for (const auto& l : lumps_) {
-    offsets.push_back(uint32_t(out.size()));
-    out.raw(l.second);
-  }
-  for (size_t i = 0; i < lumps_.size(); ++i) {
-    out.u32(offsets[i]);
-    out.u32(uint32_t(lumps_[i].second.size()));
-    name8(out, lumps_[i].first);
-  }
-  return std::move(out.bytes());
+  std::vector<wad::LumpToWrite> lumps;
+  for (const auto& [name, data] : lumps_) lumps.push_back({name, data});
+  return wad::write_wad(iwad_, lumps);
 }
 
 int TestMap::add_vertex(int x, int y) {
