@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 
+#include "engine/bsp/load.h"
 #include "engine/image/image.h"
 #include "engine/map/source.h"
 #include "engine/render/camera_file.h"
@@ -17,14 +18,25 @@ namespace p3d::render {
 namespace {
 
 std::string stats_line(const std::string& name, const RenderStats& s) {
-  char line[256];
+  char line[320];
   std::snprintf(line, sizeof line,
                 "%s nodes_visited=%llu subtrees_culled=%llu fragments_drawn=%llu columns_closed=%llu "
-                "pixels_written=%llu early_exit=%d\n",
+                "pixels_written=%llu masked_pixels=%llu early_exit=%d\n",
                 name.c_str(), (unsigned long long)s.nodes_visited, (unsigned long long)s.subtrees_culled,
                 (unsigned long long)s.fragments_drawn, (unsigned long long)s.columns_closed,
-                (unsigned long long)s.pixels_written, int(s.early_exit));
+                (unsigned long long)s.pixels_written, (unsigned long long)s.masked_pixels, int(s.early_exit));
   return line;
+}
+
+// Compares a frame with its golden PNG (or rewrites it when updating).
+void check_golden(const Frame& frame, const std::filesystem::path& path, bool update, const std::string& name) {
+  if (update) return image::save_png(frame, path);
+  const image::Image expected = image::load_png(path);
+  ASSERT_EQ(expected.width, frame.width);
+  ASSERT_EQ(expected.height, frame.height);
+  const image::Difference d = image::compare(frame, expected, 2);
+  EXPECT_LE(d.fraction(frame), 0.005) << name << ": " << d.differing_pixels << " pixels differ, max delta "
+                                      << d.max_channel_delta;
 }
 
 TEST(Golden, DefaultMapCaptures) {
@@ -37,22 +49,48 @@ TEST(Golden, DefaultMapCaptures) {
     Frame frame(160, 100);
     const RenderStats s = renderer->render(level, camera_at(level, c.pos, c.angle, c.eye, c.fov), frame);
     stats += stats_line(c.name, s);
-    const auto path = golden / ("outpost_" + c.name + ".png");
-    if (update) {
-      image::save_png(frame, path);
-      continue;
-    }
-    const image::Image expected = image::load_png(path);
-    ASSERT_EQ(expected.width, frame.width);
-    ASSERT_EQ(expected.height, frame.height);
-    const image::Difference d = image::compare(frame, expected, 2);
-    EXPECT_LE(d.fraction(frame), 0.005) << c.name << ": " << d.differing_pixels << " pixels differ, max delta "
-                                        << d.max_channel_delta;
+    check_golden(frame, golden / ("outpost_" + c.name + ".png"), update, c.name);
   }
   if (update)
     write_file_atomically(golden / "outpost.stats", stats);
   else
     EXPECT_EQ(stats, read_file_text(golden / "outpost.stats"));
+}
+
+// Freedoom views with Doom's own art: plain rooms, skies, masked bars and grates.
+TEST(Golden, FreedoomViews) {
+  struct View {
+    const char* wad;
+    const char* map;
+    const char* name;
+    bool at_start;
+    double x, y, angle;
+  };
+  const View views[] = {
+      {"freedoom2.wad", "MAP01", "map01_start", true, 0, 0, 0},
+      {"freedoom2.wad", "MAP01", "map01_grate", false, 1889.7, -877.3, 116.6},
+      {"freedoom2.wad", "MAP02", "map02_sky", true, 0, 0, 0},
+      {"freedoom1.wad", "E1M1", "e1m1_bars", false, 2080, 520, 90},
+      {"freedoom1.wad", "E2M1", "e2m1_start", true, 0, 0, 0},
+      {"freedoom1.wad", "E3M1", "e3m1_start", true, 0, 0, 0},
+  };
+  const auto golden = test::source_dir() / "tests/golden";
+  const bool update = std::getenv("P3D_UPDATE_GOLDEN") != nullptr;
+  auto renderer = make_renderer("bsp");
+  std::string stats;
+  for (const View& v : views) {
+    const wad::Stack wads = bsp::read_wads({test::freedoom_path(v.wad)});
+    const level::Level level = bsp::build_wad_map(wads, v.map, {}, nullptr);
+    const Camera camera = v.at_start ? camera_at(level, level.player_start, level.player_angle)
+                                     : camera_at(level, {v.x, v.y}, v.angle);
+    Frame frame(160, 100);
+    stats += stats_line(v.name, renderer->render(level, camera, frame));
+    check_golden(frame, golden / (std::string("freedoom_") + v.name + ".png"), update, v.name);
+  }
+  if (update)
+    write_file_atomically(golden / "freedoom.stats", stats);
+  else
+    EXPECT_EQ(stats, read_file_text(golden / "freedoom.stats"));
 }
 
 }  // namespace

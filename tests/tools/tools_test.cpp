@@ -259,6 +259,74 @@ TEST_F(Tools, HeadlessReplayWritesTheSameFramesEveryTime) {
 }
 #endif
 
+// WAD maps end to end: Doom's command-line habits, determinism, LINEDEF numbers in
+// --columns, a summary of every map, and clear errors for broken WADs and usage.
+TEST_F(Tools, WadMapsCompileCaptureAndFailCleanly) {
+  const std::string iwad = test::freedoom_path("freedoom2.wad").string();
+  std::string o;
+  ASSERT_EQ(test::run(tool("mapc") + " --iwad " + iwad + " --map map02 -o " + out("a.bsp") + " --check", o), 0) << o;
+  ASSERT_EQ(test::run(tool("mapc") + " --iwad " + iwad + " --map MAP02 -o " + out("b.bsp"), o), 0) << o;
+  EXPECT_EQ(read_file_bytes(out("a.bsp")), read_file_bytes(out("b.bsp")));
+
+  // The compiled level needs nothing else; --columns names LINEDEFs, and the reference agrees.
+  const std::string cap = tool("capture") + " " + out("a.bsp") + " --size 120x80 ";
+  ASSERT_EQ(test::run(cap + "-o " + out("a.png") + " --columns " + out("a.csv"), o), 0) << o;
+  ASSERT_EQ(test::run(cap + "--renderer reference -o " + out("r.png") + " --columns " + out("r.csv"), o), 0) << o;
+  EXPECT_EQ(read_file_bytes(out("a.png")), read_file_bytes(out("r.png")));
+  EXPECT_EQ(read_file_text(out("a.csv")), read_file_text(out("r.csv")));
+  const level::Level level = level::read(out("a.bsp"));
+  int max_linedef = -1;
+  for (const level::Wall& w : level.walls) max_linedef = std::max(max_linedef, w.source);
+  const std::string csv = read_file_text(out("a.csv"));
+  int columns = 0;
+  for (size_t at = csv.find('\n') + 1; at < csv.size(); at = csv.find('\n', at) + 1, ++columns) {
+    const int wall = std::stoi(csv.substr(csv.find(',', at) + 1));
+    EXPECT_GE(wall, 0);
+    EXPECT_LE(wall, max_linedef);
+  }
+  EXPECT_EQ(columns, 120);
+
+  // capture straight from the WAD, from the player start.
+  ASSERT_EQ(test::run(tool("capture") + " --iwad " + iwad + " --map MAP02 --size 120x80 -o " + out("w.png"), o), 0) << o;
+  EXPECT_EQ(read_file_bytes(out("w.png")), read_file_bytes(out("a.png")));
+
+  // A broken WAD: a clear message, exit 1, nothing written.
+  std::vector<uint8_t> broken = read_file_bytes(iwad);
+  broken.resize(broken.size() / 2);
+  write_file_atomically(out("broken.wad"), broken);
+  EXPECT_EQ(test::run(tool("mapc") + " --iwad " + out("broken.wad") + " --map MAP01 -o " + out("x.bsp"), o), 1);
+  EXPECT_NE(o.find("broken.wad: the directory of"), std::string::npos) << o;
+  EXPECT_EQ(test::run(tool("mapc") + " --iwad " + iwad + " --map MAP99 -o " + out("x.bsp"), o), 1);
+  EXPECT_NE(o.find("freedoom2.wad: no map MAP99 (maps: MAP01"), std::string::npos) << o;
+  EXPECT_FALSE(std::filesystem::exists(out("x.bsp")));
+  // Usage.
+  EXPECT_EQ(test::run(tool("mapc") + " --file " + iwad + " -o " + out("x.bsp"), o), 2);
+  EXPECT_NE(o.find("PWADs need the IWAD they build on: add --iwad"), std::string::npos) << o;
+  EXPECT_EQ(run_in_source(tool("mapc") + " maps/outpost.map --map MAP01 -o " + out("x.bsp"), o), 2);
+  EXPECT_NE(o.find("--map: names a map in WADs: use it with --iwad"), std::string::npos) << o;
+  EXPECT_FALSE(std::filesystem::exists(out("x.bsp")));
+}
+
+TEST_F(Tools, MapcCompilesEveryMapOfAWad) {
+  const std::string iwad = test::freedoom_path("freedoom1.wad").string();
+  std::string o;
+  ASSERT_EQ(test::run(tool("mapc") + " --iwad " + iwad + " --all -o " + out("maps"), o), 0) << o;
+  EXPECT_NE(o.find("36 maps compiled into"), std::string::npos) << o;
+  EXPECT_NE(o.find("E1M1   Outer Prison"), std::string::npos) << o;
+  EXPECT_TRUE(std::filesystem::exists(out("maps/E4M9.bsp")));
+}
+
+#ifdef P3D_GAME
+TEST_F(Tools, GameWarpsToAWadMap) {
+  std::string o;
+  const std::string game = std::string("SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy ") + P3D_GAME;
+  ASSERT_EQ(test::run(game + " --iwad " + test::freedoom_path("freedoom1.wad").string() +
+                          " --warp 2 --resolution 160x100 --quit-after-tics 10 --no-vsync", o), 0) << o;
+  EXPECT_EQ(run_in_source(game + " maps/outpost.map --warp 2", o), 2);
+  EXPECT_NE(o.find("--warp: picks a map in WADs: use it with --iwad"), std::string::npos) << o;
+}
+#endif
+
 TEST_F(Tools, GeneratedMapsCompile) {
   std::string o;
   ASSERT_EQ(run_in_source(tool("mapgen") + " rooms --walls 500 --seed 3 -o " + out("r.map"), o), 0) << o;
