@@ -473,7 +473,7 @@ int main(int argc, char** argv) {
   app.add_option("--budget", s.budget_seconds, "seconds per renderer and map before the path is cut short")
       ->check(CLI::Range(0.01, 3600.0))
       ->capture_default_str();
-  app.add_option("--sizes", s.sizes, "wall counts for the scaling section")->capture_default_str();
+  app.add_option("--sizes", s.sizes, "wall counts for the scaling section")->delimiter(',')->capture_default_str();
   app.add_option("--renderers", s.renderers, "renderers to time (default: all)")->delimiter(',');
   app.add_option("--source-dir", s.source_dir, "the project's source directory (for maps/)")
       ->check(CLI::ExistingDirectory)

@@ -19,7 +19,10 @@ level::Level load_level(const std::filesystem::path& path, const Options& option
 
 wad::Stack read_wads(const std::vector<std::filesystem::path>& paths) {
   wad::Stack stack;
-  for (const auto& path : paths) stack.add(wad::Wad(read_file_bytes(path), path.filename().string()));
+  for (const auto& path : paths) {
+    auto file = std::make_shared<const MappedFile>(path);
+    stack.add(wad::Wad(file->bytes(), file, path.filename().string()));
+  }
   return stack;
 }
 

@@ -1,5 +1,8 @@
 #include "engine/util/file.h"
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -38,6 +41,30 @@ std::vector<uint8_t> read_file_bytes(const std::filesystem::path& path) {
 std::string read_file_text(const std::filesystem::path& path) {
   if (std::filesystem::is_directory(path)) throw Error(path.string() + ": is a directory");
   return read_all<std::string>(path);
+}
+
+MappedFile::MappedFile(const std::filesystem::path& path) {
+  if (std::filesystem::is_directory(path)) throw Error(path.string() + ": is a directory");
+  const int fd = ::open(path.c_str(), O_RDONLY);
+  if (fd < 0) throw Error(path.string() + ": cannot open: " + errno_text());
+  struct stat st {};
+  if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
+    void* map = ::mmap(nullptr, size_t(st.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
+    if (map != MAP_FAILED) {
+      data_ = static_cast<const uint8_t*>(map);
+      size_ = size_t(st.st_size);
+    }
+  }
+  ::close(fd);
+  if (!data_) {
+    copy_ = read_file_bytes(path);
+    data_ = copy_.data();
+    size_ = copy_.size();
+  }
+}
+
+MappedFile::~MappedFile() {
+  if (copy_.empty() && data_) ::munmap(const_cast<uint8_t*>(data_), size_);
 }
 
 void write_file_atomically(const std::filesystem::path& path, std::span<const uint8_t> bytes) {

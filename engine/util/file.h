@@ -13,6 +13,22 @@ namespace p3d {
 std::vector<uint8_t> read_file_bytes(const std::filesystem::path& path);
 std::string read_file_text(const std::filesystem::path& path);
 
+// A whole file, read-only and memory-mapped, so that only the pages read are loaded
+// (a 28 MB IWAD of which a map uses a few hundred KB). Throws Error when it cannot be opened.
+class MappedFile {
+ public:
+  explicit MappedFile(const std::filesystem::path& path);
+  ~MappedFile();
+  MappedFile(const MappedFile&) = delete;
+  MappedFile& operator=(const MappedFile&) = delete;
+  std::span<const uint8_t> bytes() const { return {data_, size_}; }
+
+ private:
+  const uint8_t* data_ = nullptr;
+  size_t size_ = 0;
+  std::vector<uint8_t> copy_;  // a file that cannot be mapped (empty, or not a regular file) is read
+};
+
 // Writes to "<path>.tmp-<pid>" in the same directory, then renames over path.
 void write_file_atomically(const std::filesystem::path& path, std::span<const uint8_t> bytes);
 void write_file_atomically(const std::filesystem::path& path, const std::string& text);

@@ -64,15 +64,24 @@ std::string printable(std::string_view text) {
   return out;
 }
 
-Wad::Wad(std::vector<uint8_t> bytes, std::string name)
-    : bytes_(std::make_shared<const std::vector<uint8_t>>(std::move(bytes))), name_(std::move(name)) {
-  const std::vector<uint8_t>& data = *bytes_;
+Wad::Wad(std::vector<uint8_t> bytes, std::string name) : name_(std::move(name)) {
+  auto owned = std::make_shared<const std::vector<uint8_t>>(std::move(bytes));
+  owner_ = owned;
+  read_directory(*owned);
+}
+
+Wad::Wad(std::span<const uint8_t> bytes, std::shared_ptr<const void> owner, std::string name)
+    : owner_(std::move(owner)), name_(std::move(name)) {
+  read_directory(bytes);
+}
+
+void Wad::read_directory(std::span<const uint8_t> data) {
   if (data.size() < kHeaderSize) throw Error(name_ + ": not a WAD file (" + std::to_string(data.size()) + " bytes)");
   const std::string_view magic(reinterpret_cast<const char*>(data.data()), 4);
   if (magic != "IWAD" && magic != "PWAD")
     throw Error(name_ + ": not a WAD file (starts with '" + printable(magic) + "', expected IWAD or PWAD)");
   iwad_ = magic == "IWAD";
-  const std::span<const uint8_t> all(data);
+  const std::span<const uint8_t> all = data;
   ByteReader header(all.subspan(4, 8), name_);
   const int32_t count = header.i32(), offset = header.i32();
   if (count < 0 || offset < 0)

@@ -29,6 +29,8 @@ class Wad {
   // Validates the header and the directory (every lump inside the file); throws
   // Error("<name>: ...") otherwise. `name` is how messages refer to the file.
   Wad(std::vector<uint8_t> bytes, std::string name);
+  // The same over bytes that `owner` keeps alive (a mapped file).
+  Wad(std::span<const uint8_t> bytes, std::shared_ptr<const void> owner, std::string name);
 
   const std::string& name() const { return name_; }
   bool is_iwad() const { return iwad_; }
@@ -37,7 +39,9 @@ class Wad {
   const Lump* find(std::string_view name) const;
 
  private:
-  std::shared_ptr<const std::vector<uint8_t>> bytes_;  // shared: Lump spans outlive moves of the Wad
+  void read_directory(std::span<const uint8_t> data);
+
+  std::shared_ptr<const void> owner_;  // keeps the bytes alive: Lump spans outlive moves of the Wad
   std::string name_;
   bool iwad_ = false;
   std::vector<Lump> lumps_;
