@@ -10,6 +10,7 @@
 #include "game/input.h"
 #include "game/session.h"
 #include "tests/support/support.h"
+#include "tests/support/wad_writer.h"
 
 namespace p3d::game {
 namespace {
@@ -113,6 +114,34 @@ TEST(Session, ReloadKeepsThePlayerAndSurvivesABrokenMap) {
   EXPECT_FALSE(s.reload());
   EXPECT_EQ(s.level().walls.size(), walls + 1) << "the old level stays";
   s.tic({});
+  std::filesystem::remove_all(dir);
+}
+
+// The level designer's loop: the map lives in a PWAD over an IWAD; each save reloads it.
+TEST(Session, ReloadsAWadMapWhenThePwadChanges) {
+  const auto dir = test::temp_dir("reload-wad");
+  test::WadWriter iwad(true);
+  test::add_test_art(iwad);
+  write_file_atomically(dir / "doom.wad", iwad.bytes());
+  auto save = [&](int light) {
+    test::TestMap m;
+    m.add_room({{0, 0}, {0, 256}, {256, 256}, {256, 0}}, {0, 128, "FLOOR", "CEIL", light});
+    m.things.push_back({64, 64, 0, 1, 7});
+    test::WadWriter pwad;
+    m.add_to(pwad, "MAP01");
+    write_file_atomically(dir / "mine.wad", pwad.bytes());
+  };
+  save(100);
+  Session s(bsp::LevelSource{{}, {dir / "doom.wad", dir / "mine.wad"}, "MAP01"});
+  EXPECT_EQ(s.name(), "mine.wad:MAP01");
+  EXPECT_EQ(s.files().size(), 2u);
+  EXPECT_EQ(s.level().sectors[0].light, 100);
+  save(200);
+  EXPECT_TRUE(s.reload());
+  EXPECT_EQ(s.level().sectors[0].light, 200);
+  write_file_atomically(dir / "mine.wad", std::string("PWAD broken"));
+  EXPECT_FALSE(s.reload());
+  EXPECT_EQ(s.level().sectors[0].light, 200) << "the old level stays";
   std::filesystem::remove_all(dir);
 }
 

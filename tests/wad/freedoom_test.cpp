@@ -34,9 +34,7 @@ void compare_camera(const level::Level& level, const render::Camera& camera, int
   for (int x = 0; x < w; ++x) {
     ++t.columns;
     const render::ColumnHit &ha = pa.columns[size_t(x)], &hb = pb.columns[size_t(x)];
-    const bool same = ha.wall == hb.wall && (ha.wall < 0 || ha.dist == hb.dist);
-    const bool tie = ha.wall >= 0 && hb.wall >= 0 && std::fabs(ha.dist - hb.dist) <= 1e-9 * hb.dist;
-    if (!same && !tie) {
+    if (ha.wall != hb.wall || (ha.wall >= 0 && ha.dist != hb.dist)) {
       if (++t.column_mismatches <= 10)
         ADD_FAILURE() << what << " column " << x << ": bsp wall " << ha.wall << " at " << ha.dist << ", reference "
                       << hb.wall << " at " << hb.dist;
