@@ -9,6 +9,8 @@
 // draw_hit (the rows of one hit), wall_span, draw_masked, plane_span, sky_span.
 #include "engine/render/draw.h"
 
+#include <array>
+#include <bit>
 #include <cmath>
 
 namespace p3d::render {
@@ -41,10 +43,17 @@ int wall_light_map(int start, double depth) {
   return std::clamp(start - static_cast<int>(gain), 0, kDarkest);
 }
 
+// Doom's zlight: 128 distance steps of 16 units, brightening by 80 / (step + 1) maps.
+constexpr int kZLightSteps = 128;
+constexpr auto kZLightGain = [] {
+  std::array<int, kZLightSteps> gain{};
+  for (int step = 0; step < kZLightSteps; ++step) gain[size_t(step)] = 80 / (step + 1);
+  return gain;
+}();
+
 int flat_light_map(int start, double depth) {
-  constexpr int kZLightSteps = 127;
-  const int step = depth >= 16.0 * kZLightSteps ? kZLightSteps : static_cast<int>(depth / 16);
-  return std::clamp(start - 80 / (step + 1), 0, kDarkest);
+  const int step = depth >= 16.0 * (kZLightSteps - 1) ? kZLightSteps - 1 : static_cast<int>(depth * (1.0 / 16));
+  return std::clamp(start - kZLightGain[size_t(step)], 0, kDarkest);
 }
 
 // RGBA art is shaded by multiplying with 256 / 32 per map: 256 is full bright.
@@ -344,21 +353,29 @@ void Canvas::plane_span(int x, int y0, int y1, int sector, bool ceiling) {
   const double rx = ray.x * kFix, ry = -ray.y * kFix;
   const int start = light_start(s.light, 0);
   const double depth_per_dy = std::fabs(h_rel) * view_->d;  // depth = |h| d / |dy|
-  auto draw = [&](auto lit) {
+  // Four loops, chosen once per span: paletted or RGBA art, wrapped by mask or by modulo.
+  auto draw = [&](auto lit, auto texel_of) {
     uint32_t* out = pixel(x, y0);
     for (int y = y0; y < y1; ++y, out += view_->width) {
       const double k = h_rel * row_inv_[y];
       const int64_t u = static_cast<int64_t>(px + rx * k) >> 16, v = static_cast<int64_t>(py + ry * k) >> 16;
-      const size_t texel = size_t(tex.wrap_u(u)) * tex.height + tex.wrap_v(v);
-      *out = lit(texel, flat_light_map(start, depth_per_dy * std::fabs(row_inv_[y])));
+      *out = lit(texel_of(u, v), flat_light_map(start, depth_per_dy * std::fabs(row_inv_[y])));
     }
   };
-  if (level_->paletted())
-    draw([&](size_t texel, int map) {
-      return level_->light_maps[size_t(map) * limits::kPaletteSize + tex.indices[texel]];
-    });
-  else
-    draw([&](size_t texel, int map) { return shade(tex.texels[texel], multiplier(map)); });
+  auto by_art = [&](auto texel_of) {
+    if (level_->paletted())
+      draw([&](size_t texel, int map) { return level_->light_maps[size_t(map) * limits::kPaletteSize + tex.indices[texel]]; },
+           texel_of);
+    else
+      draw([&](size_t texel, int map) { return shade(tex.texels[texel], multiplier(map)); }, texel_of);
+  };
+  if (tex.pow2_width && tex.pow2_height) {
+    const int64_t umask = tex.width - 1, vmask = tex.height - 1;
+    const int shift = std::countr_zero(unsigned(tex.height));
+    by_art([=](int64_t u, int64_t v) { return size_t(((u & umask) << shift) | (v & vmask)); });
+  } else {
+    by_art([&](int64_t u, int64_t v) { return size_t(tex.wrap_u(u)) * tex.height + tex.wrap_v(v); });
+  }
 }
 
 // Doom's sky: 1024 texture columns around the horizon (a 256-wide sky repeats four
