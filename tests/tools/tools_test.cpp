@@ -310,7 +310,7 @@ TEST_F(Tools, WadMapsCompileCaptureAndFailCleanly) {
 TEST_F(Tools, MapcCompilesEveryMapOfAWad) {
   const std::string iwad = test::freedoom_path("freedoom1.wad").string();
   std::string o;
-  ASSERT_EQ(test::run(tool("mapc") + " --iwad " + iwad + " --all -o " + out("maps"), o), 0) << o;
+  ASSERT_EQ(test::run(tool("mapc") + " --iwad " + iwad + " --all --check -o " + out("maps"), o), 0) << o;
   EXPECT_NE(o.find("36 maps compiled into"), std::string::npos) << o;
   EXPECT_NE(o.find("E1M1   Outer Prison"), std::string::npos) << o;
   EXPECT_TRUE(std::filesystem::exists(out("maps/E4M9.bsp")));
