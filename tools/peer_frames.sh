@@ -4,7 +4,7 @@
 #
 #   tools/peer_frames.sh OUT.png freedoom2:MAP01 freedoom2:MAP02 freedoom1:E1M1 ...
 #
-# Chocolate Doom runs headless: a demo of a few empty tics (skill 3, no monsters) is
+# Chocolate Doom runs headless: a demo of a few empty tics (skill 3; NOMONSTERS=1 leaves monsters out) is
 # played with -timedemo under SDL's dummy video driver, which saves every presented
 # frame when SDL_VIDEO_DUMMY_SAVE_FRAMES=1; the last one is the view after the tics.
 # Needs chocolate-doom, freedoom and imagemagick (Debian packages) and a Release build.
@@ -23,7 +23,7 @@ for spec in "$@"; do
   else episode=1 number=$((10#${map#MAP})); fi
   # Demo v1.9: version, skill, episode, map, deathmatch, respawn, fast, nomonsters, player,
   # four players present; then 4 bytes per tic; 0x80 ends it.
-  printf "$(printf '\\x%02x' 109 2 "$episode" "$number" 0 0 0 1 0 1 0 0 0)" > "$work/start.lmp"
+  printf "$(printf '\\x%02x' 109 2 "$episode" "$number" 0 0 0 "${NOMONSTERS:-0}" 0 1 0 0 0)" > "$work/start.lmp"
   head -c 8 /dev/zero >> "$work/start.lmp"
   printf '\x80' >> "$work/start.lmp"
   mkdir -p "$work/frames" "$work/home"

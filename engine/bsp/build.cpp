@@ -121,7 +121,22 @@ class Builder {
       lw.sides[1] = side(w.back);
       out_.walls.push_back(lw);
     }
-    for (const map::Thing& t : src_.things) out_.things.push_back({t.type, t.pos, t.angle, t.flags});
+    for (const map::SpriteImage& i : src_.sprite_images) {
+      out_.sprite_images.push_back({int32_t(out_.textures.size()), i.left, i.top});
+      out_.textures.push_back(level::make_texture(i.name, i.image.width, i.image.height, i.image.pixels.data(),
+                                                  i.indices.empty() ? nullptr : i.indices.data()));
+    }
+    for (const map::SpriteFrame& f : src_.sprites) {
+      level::SpriteFrame lf;
+      lf.name = f.name;
+      std::copy(std::begin(f.image), std::end(f.image), lf.image);
+      std::copy(std::begin(f.flip), std::end(f.flip), lf.flip);
+      lf.bright = f.bright;
+      lf.hanging = f.hanging;
+      lf.drop = f.drop;
+      out_.sprite_frames.push_back(lf);
+    }
+    for (const map::Thing& t : src_.things) out_.things.push_back({t.type, t.pos, t.angle, t.flags, t.sprite});
     out_.player_start = src_.player.pos;
     out_.player_angle = src_.player.angle;
     out_.default_sector = src_.default_sector;

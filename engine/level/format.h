@@ -9,6 +9,8 @@
 //     TEXTURES u32 n; n x { str name, u32 width, u32 height, pixels in rows: if paletted,
 //              width*height u8 palette indices then ceil(width*height / 8) opacity bytes
 //              (bit p % 8 of byte p / 8, 1 = opaque); else width*height RGBA8 }
+//     SPRITES  u32 n; n x image { i32 texture, i32 left offset, i32 top offset };
+//              u32 n; n x frame { str name, 8 x { i32 image, u8 flip }, u8 bright, u8 hanging, f64 drop }
 //     SECTORS  u32 n; n x { str name, f64 floor, f64 ceiling, i32 light, i32 floor tex, i32 ceiling tex,
 //                           i32 special, i32 tag }
 //     WALLS    u32 n; n x { i64 x1, y1, x2, y2 (1/256 unit), u32 flags, i32 source, i32 special, i32 tag,
@@ -19,7 +21,7 @@
 //     NODES    u32 n; n x { u32 splitter wall, i32 front, i32 back, u32 first frag, u32 frag count,
 //                           f64 bbox min x, min y, max x, max y }
 //     LEAVES   u32 n; n x { i32 sector }
-//     THINGS   u32 n; n x { i32 type, f64 x, y, angle, u32 flags }
+//     THINGS   u32 n; n x { i32 type, f64 x, y, angle, u32 flags, i32 sprite frame (-1: none) }
 //     GRID     u32 present (0 or 1); if 1: u32 cols, u32 rows, f64 cell,
 //              cols*rows u8 solid (row 0 south), cols*rows*4 i32 face walls (east, north, west, south)
 // All integers and IEEE doubles little-endian; str = u32 length + bytes.
@@ -33,14 +35,15 @@
 namespace p3d::level::format {
 
 constexpr char kMagic[8] = {'P', '3', 'D', 'B', 'S', 'P', '\r', '\n'};
-constexpr uint32_t kVersion = 3;
+constexpr uint32_t kVersion = 4;
 constexpr size_t kHeaderSize = 8 + 4 + 4 + 8 + 8;
 
 constexpr uint32_t tag(const char (&s)[5]) {
   return uint32_t(uint8_t(s[0])) | uint32_t(uint8_t(s[1])) << 8 | uint32_t(uint8_t(s[2])) << 16 |
          uint32_t(uint8_t(s[3])) << 24;
 }
-constexpr uint32_t kMeta = tag("META"), kPalette = tag("PALT"), kTextures = tag("TEXS"), kSectors = tag("SECS"),
+constexpr uint32_t kMeta = tag("META"), kPalette = tag("PALT"), kTextures = tag("TEXS"), kSprites = tag("SPRS"),
+                   kSectors = tag("SECS"),
                    kWalls = tag("WALL"), kFragments = tag("FRAG"), kNodes = tag("NODE"), kLeaves = tag("LEAF"),
                    kThings = tag("THNG"), kGrid = tag("GRID");
 
@@ -49,7 +52,9 @@ constexpr size_t kWallRecord = 4 * 8 + 4 * 4 + 2 * kSideRecord;
 constexpr size_t kFragmentRecord = 4 * 3 + 8 * 2;
 constexpr size_t kNodeRecord = 4 * 5 + 8 * 4;
 constexpr size_t kSectorRecord = 4 + 8 * 2 + 4 * 5;
-constexpr size_t kThingRecord = 4 + 8 * 3 + 4;
+constexpr size_t kThingRecord = 4 + 8 * 3 + 4 + 4;
+constexpr size_t kSpriteImageRecord = 4 * 3;
+constexpr size_t kSpriteFrameRecord = 4 + 8 * (4 + 1) + 1 + 1 + 8;
 constexpr size_t kLeafRecord = 4;
 constexpr size_t kTextureHeader = 4 + 4 + 4;
 constexpr size_t kGridCellBytes = 1 + 4 * 4;

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "engine/geom/polygon.h"
+#include "engine/util/doom.h"
 
 namespace p3d::level {
 
@@ -30,6 +31,79 @@ Texture make_texture(const std::string& name, int width, int height, const uint3
     }
   return t;
 }
+
+namespace {
+
+// Each sprite's reach: the farthest any of its pictures extends sideways from its thing.
+void measure_sprites(Level& level) {
+  for (SpriteFrame& f : level.sprite_frames) {
+    f.reach = 0;
+    for (int r = 0; r < kRotations; ++r) {
+      const SpriteImage& img = level.sprite_images[size_t(f.image[r])];
+      const int width = level.textures[size_t(img.texture)].width;
+      f.reach = std::max({f.reach, double(std::abs(img.left)), double(std::abs(width - img.left))});
+    }
+  }
+}
+
+// Attaches each drawn thing to the deepest node whose cell holds its sprite's disc,
+// or to a leaf; then culling boxes grow to cover the discs (see finalize in level.h).
+void attach_things(Level& level) {
+  for (Node& n : level.nodes) n.things = {}, n.cull_box = n.bbox;
+  for (Leaf& l : level.leaves) l.things = {};
+  std::vector<int32_t> owner(level.things.size(), 0);  // node index, or leaf_child(leaf)
+  std::vector<uint32_t> node_count(level.nodes.size(), 0), leaf_count(level.leaves.size(), 0);
+  for (size_t i = 0; i < level.things.size(); ++i) {
+    const Thing& t = level.things[i];
+    if (t.sprite == kNone) continue;
+    const double reach = level.sprite_frames[size_t(t.sprite)].reach;
+    int32_t c = 0;
+    for (;;) {
+      if (is_leaf(c)) {
+        ++leaf_count[size_t(leaf_index(c))];
+        break;
+      }
+      const Node& n = level.nodes[size_t(c)];
+      const double side = splitter_side(n, t.pos) / glm::length(n.direction);  // signed distance, > 0 back
+      if (std::fabs(side) <= reach) {
+        ++node_count[size_t(c)];
+        break;
+      }
+      c = n.child[side > 0 ? 1 : 0];
+    }
+    owner[i] = c;
+  }
+  // Ranges: nodes first, then leaves, in index order; things in index order within each.
+  uint32_t next = 0;
+  for (size_t n = 0; n < level.nodes.size(); ++n) level.nodes[n].things = {next, 0}, next += node_count[n];
+  for (size_t l = 0; l < level.leaves.size(); ++l) level.leaves[l].things = {next, 0}, next += leaf_count[l];
+  level.attached_things.assign(next, 0);
+  for (size_t i = 0; i < level.things.size(); ++i) {
+    if (level.things[i].sprite == kNone) continue;
+    ThingRange& r = is_leaf(owner[i]) ? level.leaves[size_t(leaf_index(owner[i]))].things : level.nodes[size_t(owner[i])].things;
+    level.attached_things[r.first + r.count++] = uint32_t(i);
+  }
+  auto disc_box = [&](const ThingRange& r, BBox& box) {
+    for (uint32_t k = r.first; k < r.first + r.count; ++k) {
+      const Thing& t = level.things[level.attached_things[k]];
+      const double reach = level.sprite_frames[size_t(t.sprite)].reach;
+      box.add(t.pos - Vec2(reach));
+      box.add(t.pos + Vec2(reach));
+    }
+  };
+  for (size_t i = level.nodes.size(); i-- > 0;) {  // children come after their parent
+    Node& n = level.nodes[i];
+    disc_box(n.things, n.cull_box);
+    for (int32_t c : n.child) {
+      if (is_leaf(c))
+        disc_box(level.leaves[size_t(leaf_index(c))].things, n.cull_box);
+      else
+        n.cull_box.add(level.nodes[size_t(c)].cull_box);
+    }
+  }
+}
+
+}  // namespace
 
 void finalize(Level& level) {
   static std::atomic<uint64_t> generations{0};
@@ -57,9 +131,24 @@ void finalize(Level& level) {
       level.fragments[i].same_direction = glm::dot(w.b - w.a, n.direction) > 0;
     }
   }
-  if (!level.nodes.empty() && !level.leaves.empty())
-    for (Wall& w : level.walls)
-      if (w.segment()) w.segment_sector = level.sector_at((w.a + w.b) * 0.5);
+  measure_sprites(level);
+  if (level.nodes.empty() || level.leaves.empty()) return;
+  for (Wall& w : level.walls)
+    if (w.segment()) w.segment_sector = level.sector_at((w.a + w.b) * 0.5);
+  for (Thing& t : level.things) t.sector = level.sector_at(t.pos);
+  attach_things(level);
+}
+
+State start_state(const Level& level, int skill) {
+  State s;
+  for (const Sector& sec : level.sectors) s.sectors.push_back({sec.floor, sec.ceiling, sec.light});
+  s.things.resize(level.things.size());
+  for (size_t i = 0; i < level.things.size(); ++i) {
+    const Thing& t = level.things[i];
+    s.things[i] = t.sprite != kNone && t.sector != kNone && (t.flags & doom::skill_bit(skill)) &&
+                  !(t.flags & doom::kThingNotSingle);
+  }
+  return s;
 }
 
 int Level::leaf_at(Vec2 p) const {

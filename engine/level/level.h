@@ -104,6 +104,11 @@ struct Fragment {
   bool same_direction = true;  // the wall runs the same way as its node's splitter
 };
 
+// Things attached to a node or leaf: a range of Level::attached_things.
+struct ThingRange {
+  uint32_t first = 0, count = 0;
+};
+
 // Children: index >= 0 is a node, index < 0 is leaf ~index.
 struct Node {
   uint32_t splitter = 0;  // the wall whose line splits this node
@@ -112,6 +117,8 @@ struct Node {
   BBox bbox;  // of every fragment in this subtree
   // Derived on load:
   Vec2 origin, direction;  // the splitter line in map units
+  ThingRange things;       // things whose sprite reaches across this node's splitter
+  BBox cull_box;           // bbox and the reach of every sprite in the subtree: what culling tests
 };
 
 inline bool is_leaf(int32_t child) { return child < 0; }
@@ -120,13 +127,43 @@ inline int32_t leaf_child(int32_t leaf) { return ~leaf; }
 
 struct Leaf {
   int32_t sector = kNone;  // the sector filling this convex cell, or kNone outside the map
+  // Derived on load:
+  ThingRange things;       // things whose sprite lies within this cell
+};
+
+// A picture shown for a thing: a texture and Doom's picture offsets. The thing's
+// position lies `left` texels right of the picture's left edge; its origin (its
+// feet) `top` texels below the picture's top edge.
+struct SpriteImage {
+  int32_t texture = kNone;
+  int32_t left = 0, top = 0;
+};
+
+constexpr int kRotations = 8;
+
+// How a kind of thing looks (Doom's sprite frame): a picture for each of the eight
+// directions it can be seen from, some mirrored. image[r] is Doom's rotation r + 1:
+// r = 0 seen from the front, then in 45-degree steps as the viewer goes round it
+// clockwise (Doom's rotation 0, a picture for every direction, fills all eight).
+struct SpriteFrame {
+  std::string name;                  // Doom's lump prefix and frame ("BAR1A"), or the picture's name
+  int32_t image[kRotations] = {};    // indices into Level::sprite_images
+  bool flip[kRotations] = {};
+  bool bright = false;               // full bright (lamps, torches)
+  bool hanging = false;              // hangs from the ceiling (Doom's MF_SPAWNCEILING)
+  double drop = 0;                   // hanging: its origin lies this far below the ceiling
+  // Derived on load:
+  double reach = 0;                  // the farthest any of its pictures extends sideways from the thing
 };
 
 struct Thing {
   int type = 0;
   Vec2 pos;
   double angle = 0;
-  uint32_t flags = 0;  // Doom's thing flags (map::ThingFlags)
+  uint32_t flags = 0;  // doom::ThingFlags
+  int32_t sprite = kNone;  // its frame in Level::sprite_frames, or kNone: never drawn (player starts...)
+  // Derived on load:
+  int32_t sector = kNone;  // the sector it stands in
 };
 
 // The tile grid of a level compiled from a .grid map, for the grid ray caster.
@@ -152,6 +189,8 @@ struct Level {
   std::vector<Node> nodes;  // preorder: node 0 is the root, children come after their parent
   std::vector<Leaf> leaves;
   std::vector<Thing> things;
+  std::vector<SpriteImage> sprite_images;
+  std::vector<SpriteFrame> sprite_frames;
   Vec2 player_start;
   double player_angle = 0;
   int default_sector = kNone;
@@ -165,6 +204,7 @@ struct Level {
   // Derived on load:
   BBox bounds;              // of all walls
   uint64_t generation = 0;  // unique per finalize(): renderers key per-level caches on it
+  std::vector<uint32_t> attached_things;  // thing indices, by node and leaf (see ThingRange)
 
   // Point location: descend the BSP. A point on a splitter goes to the front.
   int leaf_at(Vec2 p) const;
@@ -172,8 +212,33 @@ struct Level {
 };
 
 // Fills the derived fields (wall and fragment points, node lines, bounds, the
-// sectors plain segments stand in). Call again after changing leaf sectors.
+// sectors plain segments and things stand in, where each thing's sprite attaches to
+// the tree). Call again after changing leaf sectors.
+//
+// A sprite is a picture facing the viewer, so it may reach up to SpriteFrame::reach
+// sideways from its thing, across splitters. It attaches to the deepest node whose
+// cell holds that whole disc (or to the leaf, if one does), and culling boxes cover
+// these discs: a subtree is skipped only when every column it could touch was closed
+// by walls visited earlier, which lie in front of every point of the subtree's cell.
+// So culling never hides a visible sprite pixel.
 void finalize(Level& level);
+
+// What changes while a level is played, beside the immutable level: sector heights
+// and light (doors and lifts move), and which things are present (the skill played,
+// things picked up). Renderers draw the level with a state.
+struct SectorState {
+  double floor = 0, ceiling = 0;
+  int light = 0;
+};
+struct State {
+  std::vector<SectorState> sectors;
+  std::vector<uint8_t> things;  // per thing: 1 when present
+};
+
+constexpr int kDefaultSkill = 3;  // Doom's "Hurt me plenty"
+// The level as it starts at a skill (1..5, as Doom's -skill): things absent at that
+// skill, things only in multiplayer games, and things without a sprite are left out.
+State start_state(const Level& level, int skill = kDefaultSkill);
 
 // Side of p relative to a node's splitter: > 0 back (left), < 0 front (right).
 inline double splitter_side(const Node& n, Vec2 p) { return geom::cross(n.direction, p - n.origin); }

@@ -29,6 +29,7 @@ class Reader {
 
     read_palette();
     read_textures();
+    read_sprites();
     read_sectors();
     read_walls();
     read_fragments();
@@ -104,6 +105,39 @@ class Reader {
         rows[p] = opacity[p / 8] >> (p % 8) & 1 ? level_.palette[indices[p]] : 0u;
       level_.textures.push_back(make_texture(name, int(w), int(h), rows.data(), indices.data()));
     }
+  }
+
+  void read_sprites() {
+    section(format::kSprites, "SPRS");
+    const uint32_t images = in_.count(format::kSpriteImageRecord, "sprite images");
+    level_.sprite_images.resize(images);
+    for (SpriteImage& i : level_.sprite_images) {
+      i.texture = in_.i32();
+      index(i.texture, 0, level_.textures.size(), "sprite image " + std::to_string(&i - level_.sprite_images.data()) + " texture");
+      i.left = in_.i32();
+      i.top = in_.i32();
+      if (std::abs(int64_t(i.left)) > limits::kMaxTextureSize || std::abs(int64_t(i.top)) > limits::kMaxTextureSize)
+        in_.fail("sprite image offsets out of range");
+    }
+    const uint32_t frames = in_.count(format::kSpriteFrameRecord, "sprite frames");
+    level_.sprite_frames.resize(frames);
+    for (SpriteFrame& f : level_.sprite_frames) {
+      f.name = in_.str(limits::kMaxNameLength);
+      for (int r = 0; r < kRotations; ++r) {
+        f.image[r] = in_.i32();
+        index(f.image[r], 0, images, "sprite frame '" + f.name + "' image");
+        f.flip[r] = flag("sprite flip");
+      }
+      f.bright = flag("sprite bright flag");
+      f.hanging = flag("sprite hanging flag");
+      f.drop = height("sprite drop");
+    }
+  }
+
+  bool flag(const char* what) {
+    const uint8_t v = in_.u8();
+    if (v > 1) in_.fail(std::string("bad ") + what);
+    return v;
   }
 
   void read_sectors() {
@@ -203,6 +237,8 @@ class Reader {
       t.pos = {finite("thing x"), finite("thing y")};
       t.angle = finite("thing angle");
       t.flags = in_.u32();
+      t.sprite = in_.i32();
+      index(t.sprite, kNone, level_.sprite_frames.size(), "thing sprite");
     }
   }
 

@@ -66,6 +66,25 @@ void write_payload(ByteWriter& out, const Level& level) {
     write_texels(out, t, level.paletted());
   }
 
+  out.u32(format::kSprites);
+  out.u32(static_cast<uint32_t>(level.sprite_images.size()));
+  for (const SpriteImage& i : level.sprite_images) {
+    out.i32(i.texture);
+    out.i32(i.left);
+    out.i32(i.top);
+  }
+  out.u32(static_cast<uint32_t>(level.sprite_frames.size()));
+  for (const SpriteFrame& f : level.sprite_frames) {
+    out.str(f.name);
+    for (int r = 0; r < kRotations; ++r) {
+      out.i32(f.image[r]);
+      out.u8(f.flip[r] ? 1 : 0);
+    }
+    out.u8(f.bright ? 1 : 0);
+    out.u8(f.hanging ? 1 : 0);
+    out.f64(f.drop);
+  }
+
   out.u32(format::kSectors);
   out.u32(static_cast<uint32_t>(level.sectors.size()));
   for (const Sector& s : level.sectors) {
@@ -130,6 +149,7 @@ void write_payload(ByteWriter& out, const Level& level) {
     out.f64(t.pos.y);
     out.f64(t.angle);
     out.u32(t.flags);
+    out.i32(t.sprite);
   }
 
   out.u32(format::kGrid);

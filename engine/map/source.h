@@ -10,6 +10,7 @@
 #include "engine/geom/geom.h"
 #include "engine/image/image.h"
 #include "engine/util/error.h"
+#include "engine/util/doom.h"
 #include "engine/util/limits.h"
 
 namespace p3d::map {
@@ -70,21 +71,31 @@ struct Wall {
   bool two_sided() const { return back.sector != kNone; }
 };
 
-// Doom's thing flags (the WAD's bits): the skills a thing appears at, and more.
-enum ThingFlags : uint32_t {
-  kThingEasy = 1,        // skills 1 and 2
-  kThingMedium = 2,      // skill 3
-  kThingHard = 4,        // skills 4 and 5
-  kThingAmbush = 8,
-  kThingNotSingle = 16,  // multiplayer only
-  kThingAllSkills = kThingEasy | kThingMedium | kThingHard,
-};
-
 struct Thing {
   int type = 0;
   geom::Vec2 pos;
   double angle = 0;  // degrees, counter-clockwise from east
-  uint32_t flags = kThingAllSkills;
+  uint32_t flags = doom::kThingAllSkills;
+  int sprite = kNone;  // index into Source::sprites, or kNone: not drawn
+};
+
+// A picture for things: a .map `sprite` statement's PNG, or one of a WAD's sprite lumps.
+struct SpriteImage {
+  std::string name;
+  image::Image image;            // RGBA; alpha 0 where transparent
+  std::vector<uint8_t> indices;  // paletted art: each pixel's palette index, row-major; else empty
+  int left = 0, top = 0;         // the thing's position lies `left` pixels right of the left edge, its feet `top` below the top
+};
+
+constexpr int kRotations = 8;
+
+// How a kind of thing looks: as level::SpriteFrame, images indexing Source::sprite_images.
+struct SpriteFrame {
+  std::string name;
+  int image[kRotations] = {};
+  bool flip[kRotations] = {};
+  bool bright = false, hanging = false;
+  double drop = 0;  // hanging: the thing's origin lies this far below the ceiling
 };
 
 struct PlayerStart {
@@ -112,6 +123,8 @@ struct Source {
   std::vector<Sector> sectors;
   std::vector<Wall> walls;  // in file order: the wall index of --columns and the game
   std::vector<Thing> things;
+  std::vector<SpriteImage> sprite_images;
+  std::vector<SpriteFrame> sprites;
   PlayerStart player;
   int default_sector = kNone;  // used where no sector bounds a point (segment-only maps always have one)
   int sky_texture = kNone;

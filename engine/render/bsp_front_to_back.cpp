@@ -2,7 +2,8 @@
 // clipping): walk the tree nearest subtree first, draw each node's fragments into
 // the columns still open, set a column's bit in the W-bit array once it closes,
 // skip any subtree whose bounding box projects onto closed columns only, and stop
-// the walk the moment every column is closed.
+// the walk the moment every column is closed. Things met on the way (attached to the
+// nodes and leaves the walk reaches) are drawn as sprites at the end, farthest first.
 #include "engine/render/draw.h"
 #include "engine/render/occlusion.h"
 #include "engine/render/renderer.h"
@@ -14,10 +15,12 @@ namespace {
 class BspFrontToBack final : public Renderer {
  public:
   std::string_view name() const override { return "bsp"; }
+  using Renderer::render;
 
-  RenderStats render(const level::Level& level, const Camera& camera, Frame& frame, Probe* probe) override {
+  RenderStats render(const level::Level& level, const level::State& state, const Camera& camera, Frame& frame,
+                     Probe* probe) override {
     const View view(camera, frame.width, frame.height);
-    canvas_.begin(level, view, frame, level.sector_at(camera.pos), probe);
+    canvas_.begin(level, state, view, frame, level.sector_at(camera.pos), probe);
     order_ = probe && probe->want_order ? &probe->order : nullptr;
     if (order_) order_->clear();
     mask_.reset(view.width);
@@ -31,18 +34,24 @@ class BspFrontToBack final : public Renderer {
       }
       const Item item = stack_.back();
       stack_.pop_back();
-      if (level::is_leaf(item.child)) continue;
+      if (level::is_leaf(item.child)) {
+        add_sprites(level, level.leaves[size_t(level::leaf_index(item.child))].things);
+        continue;
+      }
       const level::Node& node = level.nodes[item.child];
       if (item.draw_fragments) {
         draw_fragments(level, view, node, stats);
         continue;
       }
-      const ColumnRange range = columns_of_box(view, node.bbox);
+      // The culling box covers the subtree's fragments and the sprites of its things
+      // (see level::finalize): nothing visible is skipped.
+      const ColumnRange range = columns_of_box(view, node.cull_box);
       if (range.empty() || mask_.all_closed(range.x0, range.x1)) {
         ++stats.subtrees_culled;
         continue;
       }
       ++stats.nodes_visited;
+      add_sprites(level, node.things);
       const int near = level::splitter_side(node, camera.pos) > 0 ? 1 : 0;
       stack_.push_back({node.child[1 - near], false});
       stack_.push_back({item.child, true});
@@ -58,6 +67,10 @@ class BspFrontToBack final : public Renderer {
     int32_t child;
     bool draw_fragments;  // draw this node's own fragments (its near subtree is done)
   };
+
+  void add_sprites(const level::Level& level, const level::ThingRange& things) {
+    for (uint32_t k = things.first; k < things.first + things.count; ++k) canvas_.add_sprite(level.attached_things[k]);
+  }
 
   void draw_fragments(const level::Level& level, const View& view, const level::Node& node, RenderStats& stats) {
     for (uint32_t i = node.first_fragment; i < node.first_fragment + node.fragment_count && !mask_.full(); ++i) {

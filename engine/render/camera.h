@@ -37,6 +37,8 @@ struct RenderStats {
   uint64_t columns_closed = 0;
   uint64_t pixels_written = 0;   // by walls, floors, ceilings and sky: each pixel once, front to back
   uint64_t masked_pixels = 0;    // by masked middle textures, over what is behind them
+  uint64_t sprites_drawn = 0;    // things whose sprite wrote at least one pixel
+  uint64_t sprite_pixels = 0;
   bool early_exit = false;       // the traversal stopped because every column was closed
   // Ray-based renderers:
   uint64_t rays = 0;

@@ -9,6 +9,7 @@
 // draw_hit (the rows of one hit), wall_span, draw_masked, plane_span, sky_span.
 #include "engine/render/draw.h"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -99,14 +100,18 @@ int64_t to_int(double v) {
 
 }  // namespace
 
-void Canvas::begin(const level::Level& level, const View& view, Frame& frame, int camera_sector, Probe* probe) {
+void Canvas::begin(const level::Level& level, const level::State& state, const View& view, Frame& frame,
+                   int camera_sector, Probe* probe) {
   level_ = &level;
+  state_ = &state;
   view_ = &view;
   frame_ = &frame;
   hits_ = probe && probe->want_columns ? &probe->columns : nullptr;
   writes_ = probe && probe->want_writes ? &probe->writes : nullptr;
   columns_.assign(view.width, Column{0, view.height, camera_sector});
-  masked_.clear();
+  if (steps_.size() != size_t(view.width)) steps_.resize(view.width);
+  for (auto& column : steps_) column.clear();
+  sprites_.clear();
   if (row_dy_.size() != size_t(view.height) || (!row_dy_.empty() && row_dy_[0] != 0.5 - view.half_h)) {
     row_dy_.resize(view.height);
     row_inv_.resize(view.height);
@@ -117,7 +122,7 @@ void Canvas::begin(const level::Level& level, const View& view, Frame& frame, in
   }
   if (hits_) hits_->assign(view.width, ColumnHit{});
   if (writes_) writes_->assign(size_t(view.width) * view.height, 0);
-  pixels_ = closed_count_ = masked_pixels_ = 0;
+  pixels_ = closed_count_ = masked_pixels_ = sprites_drawn_ = sprite_pixels_ = 0;
 }
 
 // The sector whose heights frame the hit: the facing side's; for a plain segment
@@ -134,10 +139,12 @@ bool Canvas::draw_wall(int x, const WallHit& hit) {
   const level::Wall& w = level_->walls[hit.wall];
   const int near = near_sector(w, hit, x);
   int top = c.top, bottom = c.bottom;
-  draw_hit(x, hit, near, top, bottom);
-  if (w.two_sided()) c.sector = w.sides[1 - hit.side].sector;
+  const bool masked = draw_hit(x, hit, near, top, bottom);
+  const int far = w.two_sided() ? w.sides[1 - hit.side].sector : kNone;
+  if (far != kNone) c.sector = far;
   c.top = top;
   c.bottom = bottom;
+  steps_[x].push_back({hit, near, far, top, bottom, masked});
   if (top < bottom) return false;
   close(x, hit);
   return true;
@@ -152,12 +159,7 @@ bool Canvas::clip_wall(int x, const WallHit& hit) {
 
 void Canvas::paint_wall(int x, const WallHit& hit) {
   int top = 0, bottom = view_->height;
-  const size_t masked = masked_.size();
   draw_hit(x, hit, near_sector(level_->walls[hit.wall], hit, -1), top, bottom);
-  if (masked_.size() > masked) {  // back to front already: its masked texture goes on now
-    draw_masked(masked_.back());
-    masked_.pop_back();
-  }
 }
 
 void Canvas::paint_background(int x, int sector) { planes_to_horizon(x, 0, view_->height, sector); }
@@ -173,8 +175,7 @@ void Canvas::finish() {
     Column& c = columns_[x];
     planes_to_horizon(x, c.top, c.bottom, c.sector);
   }
-  // Recorded per column nearest first: in reverse, every column gets them farthest first.
-  for (auto it = masked_.rbegin(); it != masked_.rend(); ++it) draw_masked(*it);
+  draw_layers();
 }
 
 // Draws, within rows [top, bottom), the near sector's ceiling above the wall, its
@@ -187,20 +188,21 @@ void Canvas::finish() {
 // lower part, as Doom draws them, and no pixel is written twice. A part without a
 // texture shows the plane that would continue there (the far ceiling or floor, or
 // for a one-sided wall its own sector's planes), as Doom ports show a missing texture.
-void Canvas::draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom) {
+// Returns whether a masked middle texture shows in the opening left.
+bool Canvas::draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom) {
   const level::Wall& w = level_->walls[hit.wall];
   const level::Side& side = w.sides[hit.side];
   if (near == kNone) {  // no sector to measure heights from: a wall over every open row
     wall_span(x, top, bottom, {side.middle, level::kMiddlePart, 0, 255}, hit);
     top = bottom;
-    return;
+    return false;
   }
-  const level::Sector& s = level_->sectors[near];
+  const level::SectorState& s = state_->sectors[near];
   const double scale = view_->d / hit.depth;
   auto row = [&](double z) { return view_->row_at(view_->half_h - (z - view_->eye) * scale); };
   const int far = w.two_sided() ? w.sides[1 - hit.side].sector : kNone;
-  const level::Sector* b = far != kNone ? &level_->sectors[far] : nullptr;
-  const bool both_sky = b && s.ceiling_texture == kSky && b->ceiling_texture == kSky;
+  const level::SectorState* b = far != kNone ? &state_->sectors[far] : nullptr;
+  const bool both_sky = b && level_->sectors[near].ceiling_texture == kSky && level_->sectors[far].ceiling_texture == kSky;
   const int light = side.light != kNone ? side.light : s.light;
   auto height_of = [&](int texture) { return texture >= 0 ? double(level_->textures[texture].height) : 0.0; };
 
@@ -219,7 +221,7 @@ void Canvas::draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom
       wall_span(x, wall_top, wall_bottom, {side.middle, level::kMiddlePart, anchor, light}, hit);
     }
     top = bottom;
-    return;
+    return false;
   }
   const int upper_end = std::clamp(row(b->ceiling), wall_top, wall_bottom);
   const int lower_start = std::clamp(row(b->floor), upper_end, wall_bottom);
@@ -235,10 +237,9 @@ void Canvas::draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom
     const double anchor = (w.flags & level::kUnpegLower) ? s.ceiling : b->floor;  // Doom's rule for unpegged lowers
     wall_span(x, lower_start, wall_bottom, {side.lower, level::kLowerPart, anchor, light}, hit);
   }
-  if (side.middle != kNone && upper_end < lower_start && !dry_)
-    masked_.push_back({x, hit, near, far, upper_end, lower_start});
   top = upper_end;
   bottom = lower_start;
+  return side.middle != kNone && upper_end < lower_start;
 }
 
 void Canvas::count(int x, int y0, int y1) {
@@ -247,8 +248,8 @@ void Canvas::count(int x, int y0, int y1) {
     for (int y = y0; y < y1; ++y) ++(*writes_)[size_t(y) * view_->width + x];
 }
 
-void Canvas::count_one(int x, int y) {
-  ++masked_pixels_;
+void Canvas::count_layer(int x, int y, uint64_t& counter) {
+  ++counter;
   if (writes_) ++(*writes_)[size_t(y) * view_->width + x];
 }
 
@@ -262,7 +263,7 @@ void Canvas::fill_span(int x, int y0, int y1, uint32_t color) {
 // The near sector's ceiling (or floor) in front of a wall: seen only from its open
 // side. An eye above the ceiling (or below the floor) looks into solid matter: fill it.
 void Canvas::near_plane(int x, int y0, int y1, int sector, bool ceiling) {
-  const level::Sector& s = level_->sectors[sector];
+  const level::SectorState& s = state_->sectors[sector];
   const bool open_side = ceiling ? view_->eye < s.ceiling : view_->eye > s.floor;
   if (open_side)
     plane_span(x, y0, y1, sector, ceiling);
@@ -307,11 +308,11 @@ void Canvas::wall_span(int x, int y0, int y1, const Part& part, const WallHit& h
 // A masked middle texture (Doom's R_RenderMaskedSegRange): hung from the lower of the
 // two ceilings, or stood on the higher floor when lower-unpegged; drawn once, not
 // tiled; its transparent texels leave what is behind.
-void Canvas::draw_masked(const Masked& m) {
+void Canvas::draw_masked(int x, const Step& m) {
   const level::Wall& w = level_->walls[m.hit.wall];
   const level::Side& side = w.sides[m.hit.side];
-  const level::Sector& s = level_->sectors[m.near];
-  const level::Sector& b = level_->sectors[m.far];
+  const level::SectorState& s = state_->sectors[m.near];
+  const level::SectorState& b = state_->sectors[m.far];
   const level::Texture& tex = level_->textures[side.middle];
   const double anchor = (w.flags & level::kUnpegLower) ? std::max(s.floor, b.floor) + tex.height
                                                        : std::min(s.ceiling, b.ceiling);
@@ -323,17 +324,113 @@ void Canvas::draw_masked(const Masked& m) {
   int64_t v = std::llround(v0 * kFix) + int64_t(m.top) * step;
   const int light = side.light != kNone ? side.light : s.light;
   const int map = wall_light_map(light_start(light, w.contrast), m.hit.depth);
-  const uint32_t* texels = tex.column(u);
-  const uint8_t* indices = level_->paletted() ? tex.index_column(u) : nullptr;
-  const uint32_t* light_map = level_->paletted() ? level_->light_maps.data() + size_t(map) * limits::kPaletteSize : nullptr;
-  const uint32_t mult = multiplier(map);
-  uint32_t* out = pixel(m.x, m.top);
+  const size_t column = size_t(tex.wrap_u(u)) * tex.height;
+  uint32_t* out = pixel(x, m.top);
   for (int y = m.top; y < m.bottom; ++y, out += view_->width, v += step) {
     const int64_t row = v >> 16;
-    if (row < 0 || row >= tex.height || !(texels[row] >> 24)) continue;
-    *out = indices ? light_map[indices[row]] : shade(texels[row], mult);
-    count_one(m.x, y);
+    if (row < 0 || row >= tex.height || !(tex.texels[column + size_t(row)] >> 24)) continue;
+    *out = lit(tex, column + size_t(row), map);
+    count_layer(x, y, masked_pixels_);
   }
+}
+
+// A texel under a light map: looked up in the level's light maps when paletted, else shaded.
+uint32_t Canvas::lit(const level::Texture& tex, size_t texel, int light_map) const {
+  return level_->paletted() ? level_->light_maps[size_t(light_map) * limits::kPaletteSize + tex.indices[texel]]
+                            : shade(tex.texels[texel], multiplier(light_map));
+}
+
+// ---- sprites ---------------------------------------------------------------------
+// A sprite is a picture facing the viewer at its thing's depth, one texel per map
+// unit (Doom's R_ProjectSprite): its rotation chosen by the angle between the
+// thing's facing and the view, standing on its sector's floor (or hanging from the
+// ceiling), lit by its sector's light and depth like a wall, or full bright.
+
+constexpr double kSpriteNearDepth = 4;  // Doom's MINZ: nearer things are not drawn
+
+void Canvas::add_sprite(uint32_t thing) {
+  if (!state_->things[thing]) return;
+  const level::Thing& t = level_->things[thing];
+  const double depth = view_->depth_of(t.pos);
+  if (depth < kSpriteNearDepth) return;
+  const level::SpriteFrame& frame = level_->sprite_frames[size_t(t.sprite)];
+  // Doom's rotation: the angle from the viewer to the thing, less its facing, in 45-degree steps.
+  const geom::Vec2 to_thing = t.pos - view_->pos;
+  const double seen_from = std::atan2(to_thing.y, to_thing.x) * (180 / M_PI) - t.angle + 22.5 * 9;
+  const int rotation = int(level::floor_mod(to_int(seen_from / 45), level::kRotations));
+  const level::SpriteImage& image = level_->sprite_images[size_t(frame.image[rotation])];
+  const level::Texture& tex = level_->textures[size_t(image.texture)];
+  Sprite s;
+  s.thing = thing;
+  s.depth = depth;
+  s.texture = &tex;
+  s.flip = frame.flip[rotation];
+  s.left = view_->lateral_of(t.pos) - image.left;
+  const level::SectorState& sector = state_->sectors[size_t(t.sector)];
+  const double origin = frame.hanging ? sector.ceiling - frame.drop : sector.floor;
+  s.top = origin + image.top;
+  // Columns whose centre's ray crosses the picture (one more on each side: draw_sprite_column checks).
+  const double scale = view_->d / depth;
+  s.x0 = std::max(0, int(std::floor(view_->half_w + s.left * scale)) - 1);
+  s.x1 = std::min(view_->width - 1, int(std::ceil(view_->half_w + (s.left + tex.width) * scale)) + 1);
+  if (s.x0 > s.x1) return;
+  s.light_map = frame.bright ? 0 : wall_light_map(light_start(sector.light, 0), depth);
+  sprites_.push_back(s);
+}
+
+// Column x of a sprite within open rows [top, bottom): its texel column by the ray
+// through the column's centre, texel rows as a wall's (16.16, from row 0), not tiled;
+// transparent texels skipped.
+void Canvas::draw_sprite_column(const Sprite& s, int x, int top, int bottom, bool& drew) {
+  const level::Texture& tex = *s.texture;
+  const double inv_scale = s.depth / view_->d;
+  const int64_t u = to_int((x + 0.5 - view_->half_w) * inv_scale - s.left);
+  if (u < 0 || u >= tex.width) return;
+  const size_t column = size_t(s.flip ? tex.width - 1 - u : u) * tex.height;
+  // Texel row at screen row y: top - z(y), z(y) = eye - (y + 0.5 - H/2) * inv_scale; from row 0, as walls.
+  const double v0 = s.top - view_->eye + (0.5 - view_->half_h) * inv_scale;
+  const int64_t step = std::llround(inv_scale * kFix);
+  int64_t v = std::llround(v0 * kFix) + int64_t(top) * step;
+  uint32_t* out = pixel(x, top);
+  for (int y = top; y < bottom; ++y, out += view_->width, v += step) {
+    const int64_t row = v >> 16;
+    if (row < 0) continue;
+    if (row >= tex.height) break;
+    if (!(tex.texels[column + size_t(row)] >> 24)) continue;
+    *out = lit(tex, column + size_t(row), s.light_map);
+    count_layer(x, y, sprite_pixels_);
+    drew = true;
+  }
+}
+
+void Canvas::draw_layers() {
+  // Farthest first; equal depths by thing index, a total order whatever the order things were added in.
+  std::sort(sprites_.begin(), sprites_.end(), [](const Sprite& a, const Sprite& b) {
+    return a.depth != b.depth ? a.depth > b.depth : a.thing < b.thing;
+  });
+  std::vector<int>& next_masked = layer_cursor_;  // per column: the farthest step not yet passed
+  next_masked.resize(view_->width);
+  for (int x = 0; x < view_->width; ++x) next_masked[x] = int(steps_[x].size()) - 1;
+  auto masked_down_to = [&](int x, double depth) {  // the masked steps of column x at depth >= `depth`
+    const std::vector<Step>& steps = steps_[x];
+    for (int& i = next_masked[x]; i >= 0 && steps[size_t(i)].hit.depth >= depth; --i)
+      if (steps[size_t(i)].masked) draw_masked(x, steps[size_t(i)]);
+  };
+  for (const Sprite& s : sprites_) {
+    bool drew = false;
+    for (int x = s.x0; x <= s.x1; ++x) {
+      masked_down_to(x, s.depth);
+      // The rows open at the sprite's depth: after the last wall in front of it.
+      const std::vector<Step>& steps = steps_[x];
+      const auto behind = std::lower_bound(steps.begin(), steps.end(), s.depth,
+                                           [](const Step& step, double d) { return step.hit.depth < d; });
+      int top = 0, bottom = view_->height;
+      if (behind != steps.begin()) top = std::prev(behind)->top, bottom = std::prev(behind)->bottom;
+      if (top < bottom) draw_sprite_column(s, x, top, bottom, drew);
+    }
+    sprites_drawn_ += drew;
+  }
+  for (int x = 0; x < view_->width; ++x) masked_down_to(x, -INFINITY);
 }
 
 // Floor or ceiling at height h: row y's ray meets the plane at k = (eye - h) / dy
@@ -342,8 +439,8 @@ void Canvas::draw_masked(const Masked& m) {
 // coordinates fit in 64 bits.)
 void Canvas::plane_span(int x, int y0, int y1, int sector, bool ceiling) {
   if (y0 >= y1 || dry_) return;
-  const level::Sector& s = level_->sectors[sector];
-  const int texture = ceiling ? s.ceiling_texture : s.floor_texture;
+  const level::SectorState& s = state_->sectors[sector];
+  const int texture = ceiling ? level_->sectors[sector].ceiling_texture : level_->sectors[sector].floor_texture;
   if (texture == kSky) return sky_span(x, y0, y1);
   count(x, y0, y1);
   const level::Texture& tex = level_->textures[texture];

@@ -2,9 +2,11 @@
 // open (Doom's ceilingclip/floorclip as one [top, bottom) range) and the sector
 // the column's ray is travelling through. Renderers hand it wall hits, column by
 // column, nearest first; it draws the wall's visible parts and the floor and
-// ceiling in front of it, then narrows (or closes) the column. Masked middle
-// textures of two-sided walls are recorded with the rows open through them (Doom's
-// drawsegs) and drawn last, farthest first, so what lies behind shows through.
+// ceiling in front of it, then narrows (or closes) the column, and remembers each
+// step (Doom's drawsegs, per column). Renderers also hand it the things that may be
+// seen; finish() then draws the layers over the solid picture farthest first: the
+// masked middle textures of two-sided walls and the sprites, each clipped to the
+// rows its column had open at its depth, so what lies behind shows through.
 #pragma once
 
 #include <span>
@@ -26,31 +28,42 @@ struct WallHit {
 class Canvas {
  public:
   // Resets every column to fully open, in `camera_sector` (may be kNone).
-  void begin(const level::Level& level, const View& view, Frame& frame, int camera_sector, Probe* probe);
+  void begin(const level::Level& level, const level::State& state, const View& view, Frame& frame, int camera_sector,
+             Probe* probe);
 
   // Front to back: draws what the hit shows in the column's open rows and narrows
   // them. Returns true when this hit closes the column.
   bool draw_wall(int x, const WallHit& hit);
 
-  // Like draw_wall, but only narrows the column (and records the closing hit): the
-  // painter replays its hits front to back with this to learn which wall closed a column.
+  // Like draw_wall, but only narrows the column (and records the step): the painter
+  // replays its hits front to back with this to learn what each column saw.
   bool clip_wall(int x, const WallHit& hit);
 
-  // Back to front (painter): draws the hit's wall parts, its masked texture and the
-  // planes in front of it over the whole column, ignoring and keeping the column's state.
+  // Back to front (painter): draws the hit's wall parts and the planes in front of
+  // it over the whole column, ignoring and keeping the column's state.
   void paint_wall(int x, const WallHit& hit);
   // Painter's first coat: the sector's planes out to the horizon over the whole column.
   void paint_background(int x, int sector);
 
-  // Fills the rows still open in every column with the planes of the column's sector,
-  // out to the horizon, then draws the recorded masked textures farthest first.
-  void finish();
+  // A thing that may be seen (the BSP renderers add those its walk reaches, the
+  // others all of them); things not present in the state are ignored.
+  void add_sprite(uint32_t thing);
 
-  // Copies the canvas's counts (columns closed, pixels written) into the frame's statistics.
+  // Fills the rows still open in every column with the planes of the column's
+  // sector, out to the horizon, then draws the layers (see draw_layers).
+  void finish();
+  // Masked middle textures and sprites, farthest first in every column, each clipped
+  // to the rows its column had open at its depth. Equal depths: the masked wall
+  // first, then sprites by thing index.
+  void draw_layers();
+
+  // Copies the canvas's counts into the frame's statistics.
   void count_into(RenderStats& stats) const {
     stats.columns_closed = closed_count_;
     stats.pixels_written = pixels_;
     stats.masked_pixels = masked_pixels_;
+    stats.sprites_drawn = sprites_drawn_;
+    stats.sprite_pixels = sprite_pixels_;
   }
 
  private:
@@ -58,12 +71,12 @@ class Canvas {
     int top, bottom;  // open rows [top, bottom)
     int sector;
   };
-  // A masked middle texture seen in one column, with the rows open through its wall.
-  struct Masked {
-    int x;
+  // One wall met by one column, front to back: what stays open behind it.
+  struct Step {
     WallHit hit;
-    int near, far;    // the sectors on the facing and the far side
-    int top, bottom;  // rows it may cover
+    int near, far;    // the sectors on the facing and the far side (far: kNone when one-sided)
+    int top, bottom;  // rows open behind the wall
+    bool masked;      // it shows a masked middle texture in that opening
   };
   // A wall part to draw: texture, which part (for its offsets), where its top texel row lies, light.
   struct Part {
@@ -72,33 +85,49 @@ class Canvas {
     double anchor;  // world height of the texture's row 0 (before the side's y offset)
     int light;      // 0..255
   };
+  // A thing's sprite as this view sees it.
+  struct Sprite {
+    uint32_t thing;
+    double depth;                 // of the thing's position along the view direction
+    int x0, x1;                   // columns it may cover
+    const level::Texture* texture;
+    bool flip;
+    double left;                  // lateral position (right of the view axis) of the picture's left edge
+    double top;                   // world height of the picture's top row
+    int light_map;                // 0 (full bright) .. 31
+  };
 
-  void draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom);
+  bool draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom);
   void close(int x, const WallHit& hit);
   void near_plane(int x, int y0, int y1, int sector, bool ceiling);
   void plane_span(int x, int y0, int y1, int sector, bool ceiling);
   void sky_span(int x, int y0, int y1);
   void wall_span(int x, int y0, int y1, const Part& part, const WallHit& hit);
-  void draw_masked(const Masked& m);
+  void draw_masked(int x, const Step& step);
+  void draw_sprite_column(const Sprite& s, int x, int top, int bottom, bool& drew);
   void fill_span(int x, int y0, int y1, uint32_t color);
   void planes_to_horizon(int x, int y0, int y1, int sector);
   int near_sector(const level::Wall& w, const WallHit& hit, int x) const;
   double texture_u(const WallHit& hit, int part) const;
+  uint32_t lit(const level::Texture& tex, size_t texel, int light_map) const;
   uint32_t* pixel(int x, int y) { return frame_->pixels.data() + size_t(y) * view_->width + x; }
   void count(int x, int y0, int y1);
-  void count_one(int x, int y);
+  void count_layer(int x, int y, uint64_t& counter);
 
   const level::Level* level_ = nullptr;
+  const level::State* state_ = nullptr;
   const View* view_ = nullptr;
   Frame* frame_ = nullptr;
   ColumnHits* hits_ = nullptr;         // from the probe, when asked for
   std::vector<uint16_t>* writes_ = nullptr;
   std::vector<Column> columns_;
-  std::vector<Masked> masked_;   // in the order met: per column, nearest first
+  std::vector<std::vector<Step>> steps_;  // per column, nearest first
+  std::vector<Sprite> sprites_;
+  std::vector<int> layer_cursor_;  // draw_layers: per column, the farthest step not yet passed
   std::vector<double> row_dy_;   // (y + 0.5) - H/2 per row
   std::vector<double> row_inv_;  // 1 / row_dy_
-  uint64_t pixels_ = 0, closed_count_ = 0, masked_pixels_ = 0;
-  bool dry_ = false;  // clip_wall: compute rows, write and record nothing
+  uint64_t pixels_ = 0, closed_count_ = 0, masked_pixels_ = 0, sprites_drawn_ = 0, sprite_pixels_ = 0;
+  bool dry_ = false;  // clip_wall: compute rows, write nothing
 };
 
 }  // namespace p3d::render

@@ -19,14 +19,17 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 class GridRayCaster final : public Renderer {
  public:
   std::string_view name() const override { return "dda"; }
+  using Renderer::render;
   bool supports(const level::Level& level) const override { return level.grid.has_value(); }
 
-  RenderStats render(const level::Level& level, const Camera& camera, Frame& frame, Probe* probe) override {
+  RenderStats render(const level::Level& level, const level::State& state, const Camera& camera, Frame& frame,
+                     Probe* probe) override {
     const View view(camera, frame.width, frame.height);
-    canvas_.begin(level, view, frame, level.sector_at(camera.pos), probe);
+    canvas_.begin(level, state, view, frame, level.sector_at(camera.pos), probe);
     RenderStats stats;
     if (level.grid)
       for (int x = 0; x < view.width; ++x) stats.add_ray(cast(level, *level.grid, view, x));
+    for (uint32_t i = 0; i < level.things.size(); ++i) canvas_.add_sprite(i);
     canvas_.finish();
     canvas_.count_into(stats);
     return stats;

@@ -14,14 +14,16 @@ namespace {
 class Painter final : public Renderer {
  public:
   std::string_view name() const override { return "painter"; }
+  using Renderer::render;
 
-  RenderStats render(const level::Level& level, const Camera& camera, Frame& frame, Probe* probe) override {
+  RenderStats render(const level::Level& level, const level::State& state, const Camera& camera, Frame& frame,
+                     Probe* probe) override {
     const View view(camera, frame.width, frame.height);
     const int camera_sector = level.sector_at(camera.pos);
-    canvas_.begin(level, view, frame, camera_sector, probe);
+    canvas_.begin(level, state, view, frame, camera_sector, probe);
     painted_.assign(view.width, false);
-    record_ = probe && probe->want_columns;
-    if (record_) column_hits_.assign(view.width, {});
+    column_hits_.resize(view.width);
+    for (auto& hits : column_hits_) hits.clear();
     order_ = probe && probe->want_order ? &probe->order : nullptr;
     if (order_) order_->clear();
     RenderStats stats;
@@ -48,7 +50,11 @@ class Painter final : public Renderer {
     }
     for (int x = 0; x < view.width; ++x)
       if (!painted_[x]) canvas_.paint_background(x, camera_sector);
-    if (record_) replay_front_to_back(view.width);
+    // Masked textures and sprites are layers over the walls: the replay tells each
+    // column's open rows at every depth, then they go on farthest first.
+    replay_front_to_back(view.width);
+    for (uint32_t i = 0; i < level.things.size(); ++i) canvas_.add_sprite(i);
+    canvas_.draw_layers();
 
     canvas_.count_into(stats);
     return stats;
@@ -79,7 +85,7 @@ class Painter final : public Renderer {
           if (wall.two_sided()) canvas_.paint_background(x, wall.sides[1 - side].sector);
         }
         canvas_.paint_wall(x, hit);
-        if (record_) column_hits_[x].push_back(hit);
+        column_hits_[x].push_back(hit);
         drew = true;
       }
       stats.fragments_drawn += drew;
@@ -88,7 +94,7 @@ class Painter final : public Renderer {
   }
 
   // The painter's hits arrive far to near; replaying them near to far through the
-  // canvas's clipping (no pixels) finds the wall that closes each column.
+  // canvas's clipping (no pixels) finds what each column saw at every depth.
   void replay_front_to_back(int width) {
     for (int x = 0; x < width; ++x)
       for (auto it = column_hits_[x].rbegin(); it != column_hits_[x].rend(); ++it)
@@ -98,7 +104,6 @@ class Painter final : public Renderer {
   Canvas canvas_;
   std::vector<Item> stack_;
   std::vector<bool> painted_;
-  bool record_ = false;
   std::vector<std::vector<WallHit>> column_hits_;
   std::vector<uint32_t>* order_ = nullptr;
 };

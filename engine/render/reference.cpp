@@ -13,10 +13,12 @@ namespace {
 class Reference final : public Renderer {
  public:
   std::string_view name() const override { return "reference"; }
+  using Renderer::render;
 
-  RenderStats render(const level::Level& level, const Camera& camera, Frame& frame, Probe* probe) override {
+  RenderStats render(const level::Level& level, const level::State& state, const Camera& camera, Frame& frame,
+                     Probe* probe) override {
     const View view(camera, frame.width, frame.height);
-    canvas_.begin(level, view, frame, level::sector_at_brute_force(level, camera.pos), probe);
+    canvas_.begin(level, state, view, frame, level::sector_at_brute_force(level, camera.pos), probe);
 
     walls_.clear();
     for (uint32_t i = 0; i < level.walls.size(); ++i) {
@@ -41,6 +43,7 @@ class Reference final : public Renderer {
       for (const Hit& h : column_hits_)
         if (canvas_.draw_wall(x, h.hit)) break;
     }
+    for (uint32_t i = 0; i < level.things.size(); ++i) canvas_.add_sprite(i);
     canvas_.finish();
 
     RenderStats stats;

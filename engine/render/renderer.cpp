@@ -7,8 +7,16 @@ namespace p3d::render {
 Camera camera_at(const level::Level& level, Vec2 pos, double angle, double eye_height, double fov) {
   int sector = level.sector_at(pos);
   if (sector == level::kNone) sector = level.default_sector;
-  const double floor = sector == level::kNone ? 0 : level.sectors[sector].floor;
+  const double floor = sector == level::kNone ? 0 : level.sectors[size_t(sector)].floor;
   return Camera{pos, floor + eye_height, angle, fov};
+}
+
+RenderStats Renderer::render(const level::Level& level, const Camera& camera, Frame& frame, Probe* probe) {
+  if (start_for_ != level.generation) {
+    start_ = level::start_state(level);
+    start_for_ = level.generation;
+  }
+  return render(level, start_, camera, frame, probe);
 }
 
 const std::vector<std::string>& renderer_names() {

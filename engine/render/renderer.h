@@ -26,10 +26,16 @@ class Renderer {
   virtual bool supports(const level::Level&) const { return true; }
   // Builds per-level acceleration data ahead of time (otherwise the first render does).
   virtual void prepare(const level::Level&) {}
-  // Draws the level seen by the camera into frame (whose size is the resolution).
-  // probe, when given, receives the optional outputs it asks for.
-  virtual RenderStats render(const level::Level& level, const Camera& camera, Frame& frame,
-                             Probe* probe = nullptr) = 0;
+  // Draws the level in a state seen by the camera into frame (whose size is the
+  // resolution). probe, when given, receives the optional outputs it asks for.
+  virtual RenderStats render(const level::Level& level, const level::State& state, const Camera& camera,
+                             Frame& frame, Probe* probe = nullptr) = 0;
+  // The level as it starts, at the default skill.
+  RenderStats render(const level::Level& level, const Camera& camera, Frame& frame, Probe* probe = nullptr);
+
+ private:
+  level::State start_;      // the start state of the level last drawn without one
+  uint64_t start_for_ = 0;  // that level's generation
 };
 
 // nullptr for an unknown name.

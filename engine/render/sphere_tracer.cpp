@@ -129,6 +129,7 @@ class SphereTracer final : public Renderer {
         max_steps_(std::max(options.sphere_max_steps, 1)), accelerated_(accelerated) {}
 
   std::string_view name() const override { return accelerated_ ? "sphere" : "sphere-naive"; }
+  using Renderer::render;
 
   void prepare(const level::Level& level) override {
     if (!accelerated_ || prepared_for_ == level.generation) return;
@@ -136,12 +137,14 @@ class SphereTracer final : public Renderer {
     prepared_for_ = level.generation;
   }
 
-  RenderStats render(const level::Level& level, const Camera& camera, Frame& frame, Probe* probe) override {
+  RenderStats render(const level::Level& level, const level::State& state, const Camera& camera, Frame& frame,
+                     Probe* probe) override {
     prepare(level);
     const View view(camera, frame.width, frame.height);
-    canvas_.begin(level, view, frame, level::sector_at_brute_force(level, camera.pos), probe);
+    canvas_.begin(level, state, view, frame, level::sector_at_brute_force(level, camera.pos), probe);
     RenderStats stats;
     for (int x = 0; x < view.width; ++x) stats.add_ray(trace(level, view, x));
+    for (uint32_t i = 0; i < level.things.size(); ++i) canvas_.add_sprite(i);
     canvas_.finish();
     canvas_.count_into(stats);
     return stats;

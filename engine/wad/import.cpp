@@ -10,6 +10,7 @@
 
 #include "engine/util/error.h"
 #include "engine/wad/art.h"
+#include "engine/wad/things.h"
 
 namespace p3d::wad {
 
@@ -29,7 +30,7 @@ struct Piece {
 class Importer {
  public:
   Importer(const Stack& stack, const MapData& data, const ImportOptions& options)
-      : data_(data), options_(options), art_(stack) {}
+      : stack_(stack), data_(data), options_(options), art_(stack) {}
 
   ImportResult run() {
     src_.path = data_.where;
@@ -367,15 +368,17 @@ class Importer {
     int start = -1;
     for (size_t i = 0; i < data_.things.size(); ++i) {
       const MapThing& m = data_.things[i];
+      const std::string record = "THINGS #" + std::to_string(i);
       if (!std::isfinite(m.x) || !std::isfinite(m.y) || std::fabs(m.x) > geom::kMaxCoord || std::fabs(m.y) > geom::kMaxCoord) {
-        warn("things out of range", "THINGS #" + std::to_string(i), "position is outside the map range (ignored)");
+        warn("things out of range", record, "position is outside the map range (ignored)");
         continue;
       }
       map::Thing t;
       t.type = m.type;
       t.pos = {m.x, m.y};
-      t.angle = m.angle;
+      t.angle = std::trunc(m.angle / 45) * 45;  // Doom faces things in 45-degree steps
       t.flags = m.flags;
+      t.sprite = sprite_for(m.type, record);
       src_.things.push_back(t);
       if (m.type == kPlayerOneStart) start = int(i);  // Doom spawns the player at the last one
     }
@@ -388,6 +391,88 @@ class Importer {
     src_.player = {inside_first_wall(), 90, FileLoc{data_.where + ": THINGS", 0}};
   }
 
+  // The sprite frame a thing type shows at the start, built from the WADs' sprite
+  // lumps; kNone for editor-only things, unknown types and missing sprites (warned).
+  int sprite_for(int type, const std::string& record) {
+    if (editor_only_thing(type)) return map::kNone;
+    const ThingInfo* info = thing_info(type);
+    if (!info) {
+      warn("unknown thing types", record, "thing type " + std::to_string(type) + " is not Doom's (not drawn)");
+      return map::kNone;
+    }
+    const std::string name = std::string(info->sprite) + info->frame;
+    if (const auto it = sprite_frames_.find(name); it != sprite_frames_.end()) return it->second;
+    const int frame = build_frame(*info, name, record);
+    sprite_frames_[name] = frame;
+    return frame;
+  }
+
+  // Doom's sprite lumps: PPPPFR, or PPPPFRFR where the second frame and rotation use
+  // the same picture mirrored; rotation 0 serves every direction.
+  int build_frame(const ThingInfo& info, const std::string& name, const std::string& record) {
+    int lumps[map::kRotations];
+    bool flips[map::kRotations] = {};
+    std::fill(std::begin(lumps), std::end(lumps), -1);
+    if (sprite_lumps_.empty())
+      for (const Lump* l : stack_.namespace_lumps({"S", "SS"})) sprite_lumps_.push_back(l);
+    auto install = [&](char rotation, int lump, bool flip) {
+      if (rotation == '0') {
+        for (int r = 0; r < map::kRotations; ++r)
+          if (lumps[r] < 0) lumps[r] = lump, flips[r] = flip;
+      } else if (rotation >= '1' && rotation <= '8') {
+        lumps[rotation - '1'] = lump, flips[rotation - '1'] = flip;
+      }
+    };
+    for (size_t k = 0; k < sprite_lumps_.size(); ++k) {
+      const std::string& lump = sprite_lumps_[k]->name;
+      if (lump.size() < 6 || lump.compare(0, 4, info.sprite) != 0) continue;
+      if (lump[4] == info.frame) install(lump[5], int(k), false);
+      if (lump.size() >= 8 && lump[6] == info.frame) install(lump[7], int(k), true);
+    }
+    const int any = *std::max_element(std::begin(lumps), std::end(lumps));
+    if (any < 0) {
+      warn("missing sprites", record, "sprite " + name + " does not exist (not drawn)");
+      return map::kNone;
+    }
+    if (std::count(std::begin(lumps), std::end(lumps), -1) > 0)
+      warn("missing sprites", record, "sprite " + name + " lacks some rotations (the others stand in)");
+    map::SpriteFrame frame;
+    frame.name = name;
+    frame.bright = info.bright;
+    frame.hanging = info.hanging;
+    frame.drop = info.height;
+    for (int r = 0; r < map::kRotations; ++r) {
+      const int lump = lumps[r] >= 0 ? lumps[r] : any;
+      const int image = sprite_image(*sprite_lumps_[size_t(lump)], record);
+      if (image < 0) return map::kNone;
+      frame.image[r] = image;
+      frame.flip[r] = lumps[r] >= 0 && flips[r];
+    }
+    src_.sprites.push_back(frame);
+    return int(src_.sprites.size()) - 1;
+  }
+
+  int sprite_image(const Lump& lump, const std::string& record) {
+    if (const auto it = sprite_images_.find(lump.name); it != sprite_images_.end()) return it->second;
+    int index = -1;
+    try {
+      const IndexedImage img = decode_picture(lump.bytes, "sprite " + lump.name);
+      map::SpriteImage out;
+      out.name = lump.name;
+      out.image = image::Image(img.width, img.height);
+      out.indices = img.indices;
+      for (size_t p = 0; p < img.indices.size(); ++p) out.image.pixels[p] = img.opaque[p] ? art_.palette()[img.indices[p]] : 0u;
+      out.left = img.left_offset;
+      out.top = img.top_offset;
+      src_.sprite_images.push_back(std::move(out));
+      index = int(src_.sprite_images.size()) - 1;
+    } catch (const Error& e) {
+      warn("broken sprites", record, std::string(e.what()) + " (not drawn)");
+    }
+    sprite_images_[lump.name] = index;
+    return index;
+  }
+
   // A point just in front of the first wall's middle.
   geom::Vec2 inside_first_wall() const {
     if (src_.walls.empty()) return {0, 0};
@@ -397,13 +482,15 @@ class Importer {
     return (a + b) * 0.5 + geom::Vec2(d.y, -d.x) * 8.0;  // the front is on the right
   }
 
+  const Stack& stack_;
   const MapData& data_;
   const ImportOptions& options_;
   Art art_;
   map::Source src_;
   std::vector<std::string> warnings_;
   std::map<std::string, size_t> warning_counts_;
-  std::unordered_map<std::string, int> wall_textures_, flats_;
+  std::unordered_map<std::string, int> wall_textures_, flats_, sprite_frames_, sprite_images_;
+  std::vector<const Lump*> sprite_lumps_;
 };
 
 }  // namespace

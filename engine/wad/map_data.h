@@ -58,7 +58,7 @@ struct MapThing {
   double x = 0, y = 0;
   double angle = 0;  // degrees, counter-clockwise from east
   int type = 0;
-  uint32_t flags = 0;  // map::ThingFlags
+  uint32_t flags = 0;  // doom::ThingFlags
 };
 
 struct MapData {

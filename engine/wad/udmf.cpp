@@ -306,13 +306,13 @@ class Parser {
       else if (k == "y") t.y = number(f);
       else if (k == "angle") t.angle = integer(f);
       else if (k == "type") t.type = integer(f);
-      else if (k == "skill1" || k == "skill2") add_flag(f, t.flags, map::kThingEasy);  // either skill sets the bit
-      else if (k == "skill3") add_flag(f, t.flags, map::kThingMedium);
-      else if (k == "skill4" || k == "skill5") add_flag(f, t.flags, map::kThingHard);
-      else if (k == "ambush") flag(f, t.flags, map::kThingAmbush);
+      else if (k == "skill1" || k == "skill2") add_flag(f, t.flags, doom::kThingEasy);  // either skill sets the bit
+      else if (k == "skill3") add_flag(f, t.flags, doom::kThingMedium);
+      else if (k == "skill4" || k == "skill5") add_flag(f, t.flags, doom::kThingHard);
+      else if (k == "ambush") flag(f, t.flags, doom::kThingAmbush);
       else if (k == "single") single = boolean(f);
     }
-    if (!single) t.flags |= map::kThingNotSingle;
+    if (!single) t.flags |= doom::kThingNotSingle;
     data_.things.push_back(t);
   }
 

@@ -1,7 +1,8 @@
 // Every map of Freedoom (Debian's freedoom package: freedoom1.wad and freedoom2.wad)
 // compiles without a rejection, passes the BSP invariants exactly, and renders
 // identically with the front-to-back renderer and the brute-force reference, pixel
-// for pixel and column for column, at the player start and at random cameras.
+// for pixel and column for column, things and all, at the player start and at
+// random cameras.
 // The Release build tries every map; the sanitizer build a sample (P3D_SANITIZE).
 #include <gtest/gtest.h>
 
@@ -17,6 +18,7 @@ namespace {
 
 struct Tally {
   size_t maps = 0, frames = 0, columns = 0, column_mismatches = 0, pixels = 0, pixel_mismatches = 0, masked = 0;
+  size_t sprites = 0, sprite_pixels = 0;
 };
 
 void compare_camera(const level::Level& level, const render::Camera& camera, int w, int h, Tally& t,
@@ -30,7 +32,11 @@ void compare_camera(const level::Level& level, const render::Camera& camera, int
   const render::RenderStats sb = ref->render(level, camera, b, &pb);
   EXPECT_EQ(sa.pixels_written, uint64_t(w) * h) << what;
   EXPECT_EQ(sa.masked_pixels, sb.masked_pixels) << what;
+  EXPECT_EQ(sa.sprites_drawn, sb.sprites_drawn) << what;
+  EXPECT_EQ(sa.sprite_pixels, sb.sprite_pixels) << what;
   t.masked += sa.masked_pixels;
+  t.sprites += sa.sprites_drawn;
+  t.sprite_pixels += sa.sprite_pixels;
   for (int x = 0; x < w; ++x) {
     ++t.columns;
     const render::ColumnHit &ha = pa.columns[size_t(x)], &hb = pb.columns[size_t(x)];
@@ -81,9 +87,11 @@ void check_wad(const std::string& file, size_t cameras_per_map, Tally& t) {
 void report(const Tally& t, const char* what) {
   EXPECT_EQ(t.column_mismatches, 0u) << what;
   EXPECT_EQ(t.pixel_mismatches, 0u) << what;
+  EXPECT_GT(t.sprites, t.frames) << what << ": crowded maps show more than a sprite a frame";
   std::printf("[ stats    ] %s: %zu maps, %zu frames, %zu columns (%zu differ), %zu pixels (%zu differ), "
-              "%zu masked pixels\n",
-              what, t.maps, t.frames, t.columns, t.column_mismatches, t.pixels, t.pixel_mismatches, t.masked);
+              "%zu masked pixels, %zu sprites drawn (%zu pixels)\n",
+              what, t.maps, t.frames, t.columns, t.column_mismatches, t.pixels, t.pixel_mismatches, t.masked, t.sprites,
+              t.sprite_pixels);
 }
 
 TEST(Freedoom, EveryMapOfFreedoom1CompilesAndRendersAsTheReference) {
