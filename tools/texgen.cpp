@@ -1,7 +1,8 @@
-// texgen: generates the bundled textures (maps/textures/*.png) procedurally and
-// deterministically, so their origin and licence (CC0) are plain.
+// texgen: generates the bundled textures and sprites (maps/textures/*.png)
+// procedurally and deterministically, so their origin and licence (CC0) are plain.
 #include <cmath>
 #include <functional>
+#include <optional>
 
 #include "engine/image/image.h"
 #include "engine/util/rng.h"
@@ -199,6 +200,86 @@ image::Image sky() {
   });
 }
 
+// ---- sprites: pictures for things, transparent around their shape ----------------
+
+// A sprite: the shader returns a colour, or nothing where the picture is transparent.
+template <typename Shader>
+image::Image make_sprite(int w, int h, const Shader& shader) {
+  image::Image img(w, h, 0u);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (const std::optional<Rgb> c = shader(x, y)) img.at(x, y) = pack(*c);
+  return img;
+}
+
+// Shading across a cylinder of half-width r at horizontal offset dx from its axis.
+double round_shade(double dx, double r) { return 0.55 + 0.45 * std::sqrt(std::max(0.0, 1 - (dx * dx) / (r * r))); }
+
+image::Image lamp() {  // a floor lamp: base, pole, glowing shade
+  return make_sprite(20, 64, [](int x, int y) -> std::optional<Rgb> {
+    const double dx = x - 9.5;
+    if (y >= 58 && std::fabs(dx) < 3 + (y - 58)) return Rgb{60, 60, 66} * round_shade(dx, 8);
+    if (y >= 16 && y < 58 && std::fabs(dx) < 1.2) return Rgb{90, 90, 96};
+    const double half = 5 + (y - 2) * 0.3;  // the shade widens downwards
+    if (y >= 2 && y < 16 && std::fabs(dx) < half) return mix(Rgb{255, 236, 170}, Rgb{255, 250, 230}, round_shade(dx, half));
+    return std::nullopt;
+  });
+}
+
+image::Image barrel() {  // a dented green barrel with dark bands and a hazard stripe
+  return make_sprite(24, 32, [](int x, int y) -> std::optional<Rgb> {
+    const double dx = x - 11.5;
+    if (std::fabs(dx) > 11) return std::nullopt;
+    const double shade = round_shade(dx, 11.5) * (0.9 + 0.2 * fbm(x, y, 32, 8, 131, 3));
+    if (y <= 2) return Rgb{70, 96, 64} * (0.8 + 0.2 * shade);
+    if ((y >= 5 && y <= 6) || (y >= 25 && y <= 26)) return Rgb{40, 44, 40} * shade;
+    if (y >= 13 && y <= 17) return ((x + y) / 3) % 2 ? Rgb{200, 170, 40} * shade : Rgb{30, 30, 30} * shade;
+    return Rgb{64, 110, 58} * shade;
+  });
+}
+
+image::Image column() {  // a fluted stone column with a capital and a base
+  return make_sprite(24, 72, [](int x, int y) -> std::optional<Rgb> {
+    const double dx = x - 11.5, grain = 0.9 + 0.2 * fbm(x, y, 72, 6, 141, 3);
+    if (y < 6 && std::fabs(dx) < 12) return Rgb{170, 164, 150} * (y == 5 ? 0.7 : 1.0) * grain;
+    if (y >= 64 && std::fabs(dx) < 11) return Rgb{150, 144, 132} * (y == 64 ? 0.7 : 1.0) * grain;
+    if (y >= 6 && y < 64 && std::fabs(dx) < 8) {
+      const double flute = 0.8 + 0.2 * std::cos(dx * 1.6);
+      return Rgb{180, 174, 160} * round_shade(dx, 8) * flute * grain;
+    }
+    return std::nullopt;
+  });
+}
+
+image::Image plant() {  // a potted plant: a terracotta pot, leaves above
+  return make_sprite(32, 44, [](int x, int y) -> std::optional<Rgb> {
+    const double dx = x - 15.5;
+    if (y >= 30) {
+      const double half = 8 + (44 - y) * 0.25;
+      if (std::fabs(dx) < half) return Rgb{170, 90, 50} * round_shade(dx, half) * (y == 30 ? 0.8 : 1.0);
+      return std::nullopt;
+    }
+    const double leaf = fbm(x, y, 32, 6, 151, 4);
+    const double cx = std::fabs(dx) / 15, cy = (y - 18) / 16.0;
+    if (cx * cx + cy * cy < 0.55 + 0.6 * (leaf - 0.5)) return mix(Rgb{30, 80, 26}, Rgb{96, 170, 60}, leaf);
+    return std::nullopt;
+  });
+}
+
+image::Image lantern() {  // a lantern hanging from a chain
+  return make_sprite(16, 40, [](int x, int y) -> std::optional<Rgb> {
+    const double dx = x - 7.5;
+    if (y < 14) return std::fabs(dx) < (y % 4 < 2 ? 0.6 : 1.6) ? std::optional<Rgb>(Rgb{80, 80, 84}) : std::nullopt;
+    if (y < 17 && std::fabs(dx) < 5) return Rgb{70, 60, 50};
+    if (y >= 36 && y < 39 && std::fabs(dx) < 6) return Rgb{70, 60, 50};
+    if (y >= 17 && y < 36 && std::fabs(dx) < 7) {
+      if (std::fabs(dx) > 5.5 || y == 26) return Rgb{70, 60, 50};  // the frame
+      return mix(Rgb{255, 200, 90}, Rgb{255, 250, 220}, round_shade(dx, 5.5));
+    }
+    return std::nullopt;
+  });
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -209,7 +290,8 @@ int main(int argc, char** argv) {
     const std::pair<const char*, image::Image (*)()> textures[] = {
         {"brick", brick}, {"stone", stone}, {"metal", metal}, {"wood", wood},   {"tech", tech},   {"hazard", hazard},
         {"tiles", tiles}, {"ceiling", ceiling_light},       {"grass", grass}, {"rock", rock},   {"water", water},
-        {"sky", sky}};
+        {"sky", sky},     {"lamp", lamp},    {"barrel", barrel}, {"column", column}, {"plant", plant},
+        {"lantern", lantern}};
     for (const auto& [name, make_texture] : textures)
       image::save_png(make_texture(), std::filesystem::path(dir) / (std::string(name) + ".png"));
     return 0;

@@ -97,6 +97,9 @@ class GridParser {
         s.fail("a tile is one character other than '.', space, '#', '=' and the player markers > ^ < v");
       if (!legend_.emplace(s.arg(0)[0], texture_ref(s, s.arg(1))).second)
         s.fail("tile '" + std::string(s.arg(0)) + "' is defined twice");
+    } else if (k == "sprite") {
+      sprites_.statement(s, src_);
+      return;
     } else if (k == "thing") {
       s.expect_args(4, "thing TYPE X Y ANGLE");
       Thing t;
@@ -162,6 +165,7 @@ class GridParser {
     if (ceiling_.texture == kNone) throw Error(file, "no ceiling (add 'ceiling HEIGHT TEXTURE')");
     if (legend_.empty()) throw Error(file, "no tiles (add 'tile CHARACTER TEXTURE')");
     if (ceiling_.height < floor_.height) throw Error(FileLoc{src_.path.string(), ceiling_.line}, "ceiling is below the floor");
+    sprites_.assign(src_);
 
     Sector sector;
     sector.name = "floor";
@@ -200,6 +204,7 @@ class GridParser {
   };
 
   Source src_;
+  detail::Sprites sprites_;
   std::unordered_map<std::string, int> textures_;
   std::map<char, int> legend_;  // ordered: the first tile textures the border
   double cell_ = 64;

@@ -34,6 +34,7 @@ class Parser {
     if (!have_player_) throw Error(FileLoc{source_.path.string(), 0}, "no player start (add 'player X Y ANGLE')");
     if (source_.walls.empty()) throw Error(FileLoc{source_.path.string(), 0}, "the map has no walls");
     if (source_.sectors.empty() && source_.default_sector == kNone) add_builtin_default_sector();
+    sprites_.assign(source_);
     return std::move(source_);
   }
 
@@ -50,6 +51,7 @@ class Parser {
     if (k == "segment") return segment(s);
     if (k == "player") return player(s);
     if (k == "thing") return thing(s);
+    if (k == "sprite") return sprites_.statement(s, source_);
     s.fail("unknown statement '" + std::string(k) + "'");
   }
 
@@ -236,6 +238,7 @@ class Parser {
   }
 
   Source source_;
+  detail::Sprites sprites_;
   bool have_player_ = false;
   std::unordered_map<std::string, int> vertex_index_, sector_index_, texture_index_;
 };

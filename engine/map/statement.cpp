@@ -2,20 +2,69 @@
 
 namespace p3d::map::detail {
 
-Texture load_texture(const Statement& s, const std::string& name, const std::filesystem::path& map_path,
-                     std::string_view file_name) {
+namespace {
+
+// kind: "texture" or "sprite"; name: what the map calls it.
+image::Image load_picture(const Statement& s, const std::string& kind, const std::string& name,
+                          const std::filesystem::path& map_path, std::string_view file_name) {
   const std::filesystem::path file = map_path.parent_path() / std::string(file_name);
-  if (!std::filesystem::exists(file)) s.fail("texture file '" + file.string() + "' does not exist");
-  Texture t{name, {}, {}, s.loc()};
+  if (!std::filesystem::exists(file)) s.fail(kind + " file '" + file.string() + "' does not exist");
+  const std::string what = kind + " '" + name + "'";
+  image::Image img;
   try {
-    t.image = image::load_png(file);
+    img = image::load_png(file);
   } catch (const Error& e) {
     s.fail(e.what());
   }
-  if (t.image.width > kMaxTextureSize || t.image.height > kMaxTextureSize)
-    s.fail("texture '" + name + "' is " + std::to_string(t.image.width) + "x" + std::to_string(t.image.height) +
-           ": sides must be at most " + std::to_string(kMaxTextureSize));
-  return t;
+  if (img.width > kMaxTextureSize || img.height > kMaxTextureSize)
+    s.fail(what + " is " + std::to_string(img.width) + "x" + std::to_string(img.height) + ": sides must be at most " +
+           std::to_string(kMaxTextureSize));
+  return img;
+}
+
+}  // namespace
+
+Texture load_texture(const Statement& s, const std::string& name, const std::filesystem::path& map_path,
+                     std::string_view file_name) {
+  return {name, load_picture(s, "texture", name, map_path, file_name), {}, s.loc()};
+}
+
+void Sprites::statement(Statement& s, Source& source) {
+  s.expect_args(2, "sprite TYPE FILE.png [anchor=X,Y] [place=floor|ceiling] [bright=yes|no]");
+  const int type = s.integer(s.arg(0), "thing type", 0, 1 << 30);
+  if (frame_of_type_.count(type)) s.fail("thing type " + std::to_string(type) + " already has a sprite");
+  SpriteImage picture;
+  picture.name = std::string(s.arg(1));
+  picture.image = load_picture(s, "sprite", picture.name, source.path, s.arg(1));
+  SpriteFrame frame;
+  frame.name = picture.name;
+  if (auto place = s.take("place")) {
+    if (*place != "floor" && *place != "ceiling") s.fail("place must be floor or ceiling");
+    frame.hanging = *place == "ceiling";
+  }
+  if (auto bright = s.take("bright")) {
+    if (*bright != "yes" && *bright != "no") s.fail("bright must be yes or no");
+    frame.bright = *bright == "yes";
+  }
+  picture.left = picture.image.width / 2;
+  picture.top = frame.hanging ? 0 : picture.image.height;
+  if (auto anchor = s.take("anchor")) {
+    const size_t comma = anchor->find(',');
+    if (comma == std::string_view::npos) s.fail("anchor must be X,Y (pixels of the picture)");
+    picture.left = s.integer(anchor->substr(0, comma), "anchor x", -kMaxTextureSize, kMaxTextureSize);
+    picture.top = s.integer(anchor->substr(comma + 1), "anchor y", -kMaxTextureSize, kMaxTextureSize);
+  }
+  s.finish();
+  const int image = int(source.sprite_images.size());
+  source.sprite_images.push_back(std::move(picture));
+  std::fill(std::begin(frame.image), std::end(frame.image), image);
+  frame_of_type_[type] = int(source.sprites.size());
+  source.sprites.push_back(frame);
+}
+
+void Sprites::assign(Source& source) const {
+  for (Thing& t : source.things)
+    if (auto it = frame_of_type_.find(t.type); it != frame_of_type_.end()) t.sprite = it->second;
 }
 
 }  // namespace p3d::map::detail

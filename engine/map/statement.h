@@ -107,4 +107,19 @@ inline std::vector<std::string_view> split_words(std::string_view line) {
 Texture load_texture(const Statement& s, const std::string& name, const std::filesystem::path& map_path,
                      std::string_view file);
 
+// Things' pictures, shared by the .map and .grid parsers:
+//   sprite TYPE FILE.png [anchor=X,Y] [place=floor|ceiling] [bright=yes|no]
+// gives every thing of TYPE that picture, seen alike from every side. The anchor
+// pixel (default: the middle of the bottom row, or of the top row when hanging)
+// lies at the thing's position, on its sector's floor or at its ceiling.
+class Sprites {
+ public:
+  void statement(Statement& s, Source& source);
+  // After parsing: every thing of a type with a sprite shows it.
+  void assign(Source& source) const;
+
+ private:
+  std::map<int, int> frame_of_type_;
+};
+
 }  // namespace p3d::map::detail
