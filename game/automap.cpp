@@ -1,5 +1,7 @@
 #include "game/automap.h"
 
+#include "engine/wad/things.h"
+
 #include <cmath>
 
 #include "engine/image/draw2d.h"
@@ -32,8 +34,27 @@ void Automap::set_level(const level::Level& level) {
   chords_ = level::node_chords(level, bounds_);
 }
 
-void Automap::draw(render::Frame& frame, const level::Level& level, const render::Camera& camera,
-                   const std::vector<uint32_t>& draw_order, const AutomapSettings& settings) const {
+namespace {
+
+uint32_t thing_colour(int type) {
+  const wad::ThingInfo* info = wad::thing_info(type);
+  if (!info) return image::rgba(150, 150, 150);
+  switch (info->kind) {
+    case wad::ThingKind::kMonster: return image::rgba(230, 60, 50);
+    case wad::ThingKind::kPickup: return image::rgba(80, 210, 90);
+    case wad::ThingKind::kKey:
+      return type == 5 || type == 40 ? image::rgba(70, 110, 255) : type == 6 || type == 39 ? image::rgba(240, 220, 40)
+                                                                                           : image::rgba(240, 40, 40);
+    case wad::ThingKind::kDecoration: break;
+  }
+  return image::rgba(150, 150, 150);
+}
+
+}  // namespace
+
+void Automap::draw(render::Frame& frame, const level::Level& level, const level::State& state,
+                   const render::Camera& camera, const std::vector<uint32_t>& draw_order,
+                   const AutomapSettings& settings) const {
   const double scale = settings.scale * frame.width / 640.0;
   const geom::Vec2 centre{frame.width / 2.0, frame.height / 2.0};
   auto screen = [&](geom::Vec2 p) { return geom::Vec2{centre.x + (p.x - camera.pos.x) * scale, centre.y - (p.y - camera.pos.y) * scale}; };
@@ -74,6 +95,20 @@ void Automap::draw(render::Frame& frame, const level::Level& level, const render
       image::draw_line(frame, a + geom::Vec2(-n.y, n.x) * double(offset), b + geom::Vec2(-n.y, n.x) * double(offset),
                        order_colour(k, draw_order.size()));
   }
+  if (settings.things)
+    for (size_t i = 0; i < level.things.size(); ++i) {
+      const level::Thing& t = level.things[i];
+      if (!state.things[i] || !visible(t.pos, t.pos)) continue;
+      const geom::Vec2 c = screen(t.pos);
+      const double a = t.angle * M_PI / 180, r = std::max(2.0, 10 * scale);
+      const geom::Vec2 tip = c + geom::Vec2(std::cos(a), -std::sin(a)) * r;  // a triangle facing its way
+      const geom::Vec2 left = c + geom::Vec2(std::cos(a + 2.4), -std::sin(a + 2.4)) * r;
+      const geom::Vec2 right = c + geom::Vec2(std::cos(a - 2.4), -std::sin(a - 2.4)) * r;
+      const uint32_t colour = thing_colour(t.type);
+      image::draw_line(frame, tip, left, colour);
+      image::draw_line(frame, left, right, colour);
+      image::draw_line(frame, right, tip, colour);
+    }
   const double angle = camera.angle * M_PI / 180, half_fov = camera.fov * M_PI / 360;
   const double reach = 2 * std::max(frame.width, frame.height);
   for (double side : {-1.0, 1.0}) {

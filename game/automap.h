@@ -1,6 +1,7 @@
 // The automap overlay: walls from above around the player (north up), the BSP's
-// splitting lines, the player's leaf, the view cone, and the fragments the last
-// frame drew, coloured in draw order.
+// splitting lines, the player's leaf, the view cone, the fragments the last frame
+// drew, coloured in draw order, and the things present (monsters red, keys in their
+// colour, pickups green, the rest grey).
 #pragma once
 
 #include <vector>
@@ -13,13 +14,14 @@ namespace p3d::game {
 struct AutomapSettings {
   double scale = 0.5;      // pixels per map unit (at a 640-pixel-wide frame)
   bool splitters = true;   // draw the BSP's splitting lines
+  bool things = true;      // draw the things present, coloured by kind
 };
 
 class Automap {
  public:
   // Caches what depends only on the level (the splitters' chords).
   void set_level(const level::Level& level);
-  void draw(render::Frame& frame, const level::Level& level, const render::Camera& camera,
+  void draw(render::Frame& frame, const level::Level& level, const level::State& state, const render::Camera& camera,
             const std::vector<uint32_t>& draw_order, const AutomapSettings& settings) const;
 
  private:

@@ -27,8 +27,11 @@ std::vector<std::string> hud_lines(std::string_view title, std::string_view rend
     stats += format("nodes %llu  culled %llu  fragments %llu  ", (unsigned long long)s.nodes_visited,
                     (unsigned long long)s.subtrees_culled, (unsigned long long)s.fragments_drawn);
   if (s.rays) stats += format("rays %llu  steps/ray %.1f  ", (unsigned long long)s.rays, double(s.steps) / double(s.rays));
-  stats += format("columns closed %llu  pixels %llu%s", (unsigned long long)s.columns_closed,
-                  (unsigned long long)s.pixels_written, s.early_exit ? "  early exit" : "");
+  stats += format("columns closed %llu  pixels %llu", (unsigned long long)s.columns_closed,
+                  (unsigned long long)s.pixels_written);
+  if (s.sprites_drawn) stats += format("  sprites %llu (%llu px)", (unsigned long long)s.sprites_drawn,
+                                       (unsigned long long)s.sprite_pixels);
+  if (s.early_exit) stats += "  early exit";
   lines.push_back(stats);
   lines.push_back(format("x %.1f  y %.1f  z %.1f  angle %.1f", p.pos.x, p.pos.y, p.z, p.angle));
   return lines;
@@ -42,7 +45,7 @@ std::vector<std::string> help_lines() {
       "mouse           turn (Esc frees it)",
       "Shift           run",
       "1-5             bsp painter dda sphere reference",
-      "Tab             automap (B: BSP lines, +/-: zoom)",
+      "Tab             automap (B: BSP lines, T: things, +/-: zoom)",
       "F2              heads-up text",
       "F11             fullscreen",
       "F12             screenshot (PNG)",

@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
   bool headless = false, fullscreen = false, no_vsync = false, map_reload = false, timedemo = false;
   int capture_every = 35;
   uint64_t quit_after = 0;
+  int skill = level::kDefaultSkill;
   double fov = 90, sensitivity = 24;
   cli::add_level_options(app, level_args);
   app.add_option("--warp", warp, "start on a WAD map as Doom's -warp: MAP (Doom II) or EPISODE [MAP]")
@@ -77,6 +78,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 10000.0))
       ->capture_default_str();
   app.add_option("--quit-after-tics", quit_after, "quit after this many tics (0: never)")->capture_default_str();
+  cli::add_skill_option(app, skill);
 
   return cli::run(app, argc, argv, [&] {
     if (!play.empty() && !autopilot.empty()) throw CLI::ValidationError("--play", "use either --play or --autopilot");
@@ -96,7 +98,7 @@ int main(int argc, char** argv) {
     if (!resolution.empty()) cli::parse_size(resolution, rw, rh);
     cli::parse_size(window, ww, wh);
 
-    game::Session session(source);
+    game::Session session(source, skill);
     session.fov = fov;
     const std::string& map_path = session.name();
     if (!session.select_renderer(renderer)) throw Error("renderer '" + renderer + "' cannot draw " + map_path);

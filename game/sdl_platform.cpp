@@ -162,6 +162,7 @@ class Window {
     if (k == SDLK_F2) session_.show_hud = !session_.show_hud;
     if (k == SDLK_TAB) session_.show_automap = !session_.show_automap;
     if (k == SDLK_b) session_.automap.splitters = !session_.automap.splitters;
+    if (k == SDLK_t) session_.automap.things = !session_.automap.things;
     if (k == SDLK_EQUALS || k == SDLK_PLUS || k == SDLK_KP_PLUS) session_.automap.scale = std::min(8.0, session_.automap.scale * 1.25);
     if (k == SDLK_MINUS || k == SDLK_KP_MINUS) session_.automap.scale = std::max(0.01, session_.automap.scale / 1.25);
     if (k == SDLK_F11) {

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   std::optional<double> angle;
   double eye = render::kEyeHeight, fov = 90;
   bool stats = false, all_warnings = false;
+  int skill = level::kDefaultSkill;
   render::RendererOptions ropt;
   cli::add_level_options(app, level_args);
   app.add_option("--pos", pos_text, "camera position X,Y (map units; default: the player start)");
@@ -51,6 +52,7 @@ int main(int argc, char** argv) {
   app.add_option("--cameras", cameras, "file of cameras: NAME X Y ANGLE [EYE [FOV]] per line")->check(CLI::ExistingFile);
   app.add_flag("--stats", stats, "print per-frame statistics and time per frame");
   app.add_flag("--all-warnings", all_warnings, "list every warning about a WAD map's quirks");
+  cli::add_skill_option(app, skill);
   cli::add_renderer_options(app, ropt);
 
   return cli::run(app, argc, argv, [&] {
@@ -79,13 +81,14 @@ int main(int argc, char** argv) {
     if (!renderer->supports(level))
       throw Error(opened.name + ": the " + renderer_name + " renderer cannot draw this level");
     renderer->prepare(level);
+    const level::State state = level::start_state(level, skill);
     render::Frame frame(width, height);
     render::Probe probe;
     probe.want_columns = !columns.empty();
     for (const render::CameraSpec& shot : shots) {
       const render::Camera camera = render::camera_at(level, shot.pos, shot.angle, shot.eye, shot.fov);
       const auto start = std::chrono::steady_clock::now();
-      const render::RenderStats s = renderer->render(level, camera, frame, &probe);
+      const render::RenderStats s = renderer->render(level, state, camera, frame, &probe);
       double ms = cli::seconds_since(start) * 1000;
 
       const bool many = !cameras.empty();
@@ -97,17 +100,19 @@ int main(int argc, char** argv) {
         std::vector<double> times{ms};  // median of a few more frames: one frame is too noisy to report
         for (int i = 0; i < 4; ++i) {
           const auto again = std::chrono::steady_clock::now();
-          renderer->render(level, camera, frame);
+          renderer->render(level, state, camera, frame);
           times.push_back(cli::seconds_since(again) * 1000);
         }
         std::nth_element(times.begin(), times.begin() + 2, times.end());
         ms = times[2];
         std::printf("%s%s renderer=%s nodes_visited=%llu subtrees_culled=%llu fragments_drawn=%llu "
-                    "columns_closed=%llu pixels_written=%llu early_exit=%s",
+                    "columns_closed=%llu pixels_written=%llu masked_pixels=%llu sprites_drawn=%llu sprite_pixels=%llu "
+                    "early_exit=%s",
                     shot.name.c_str(), shot.name.empty() ? "frame" : "", renderer_name.c_str(),
                     (unsigned long long)s.nodes_visited, (unsigned long long)s.subtrees_culled,
                     (unsigned long long)s.fragments_drawn, (unsigned long long)s.columns_closed,
-                    (unsigned long long)s.pixels_written, s.early_exit ? "yes" : "no");
+                    (unsigned long long)s.pixels_written, (unsigned long long)s.masked_pixels,
+                    (unsigned long long)s.sprites_drawn, (unsigned long long)s.sprite_pixels, s.early_exit ? "yes" : "no");
         if (s.rays)
           std::printf(" rays=%llu mean_steps=%.2f max_steps=%llu", (unsigned long long)s.rays,
                       double(s.steps) / double(s.rays), (unsigned long long)s.max_steps);

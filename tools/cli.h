@@ -83,6 +83,13 @@ inline void add_level_options(CLI::App& app, LevelArgs& a) {
   add_wad_options(app, a);
 }
 
+// Doom's -skill: which things are present (default: level::kDefaultSkill).
+inline void add_skill_option(CLI::App& app, int& skill) {
+  app.add_option("--skill", skill, "skill 1-5 as Doom's: the things present at it are drawn")
+      ->check(CLI::Range(1, 5))
+      ->capture_default_str();
+}
+
 // Whether a file starts like a WAD (IWAD or PWAD).
 inline bool is_wad_file(const std::string& path) {
   std::FILE* f = std::fopen(path.c_str(), "rb");

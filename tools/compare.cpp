@@ -51,12 +51,12 @@ double column_difference(const render::ColumnHits& a, const render::ColumnHits& 
 }
 
 // Median time of `frames` renders (after the probed one).
-double time_frames(render::Renderer& r, const level::Level& level, const render::Camera& camera, render::Frame& frame,
-                   int frames) {
+double time_frames(render::Renderer& r, const level::Level& level, const level::State& state,
+                   const render::Camera& camera, render::Frame& frame, int frames) {
   std::vector<double> ms;
   for (int i = 0; i < frames; ++i) {
     const auto start = Clock::now();
-    r.render(level, camera, frame);
+    r.render(level, state, camera, frame);
     ms.push_back(cli::seconds_since(start) * 1000);
   }
   return median(ms);
@@ -108,9 +108,10 @@ int main(int argc, char** argv) {
   std::vector<std::string> names;
   std::optional<double> angle;
   double eye = render::kEyeHeight, fov = 90;
-  int frames = 5;
+  int frames = 5, skill = level::kDefaultSkill;
   render::RendererOptions ropt;
   cli::add_level_options(app, level_args);
+  cli::add_skill_option(app, skill);
   app.add_option("--pos", pos_text, "camera position X,Y (default: the player start)");
   app.add_option("--angle", angle, "view angle, degrees counter-clockwise from east (default: the player's)");
   app.add_option("--eye", eye, "eye height above the floor")->capture_default_str();
@@ -144,6 +145,7 @@ int main(int argc, char** argv) {
     const bsp::OpenedLevel opened = bsp::open_level(source);
     cli::report_warnings(opened, false);
     const level::Level& level = opened.level;
+    const level::State state = level::start_state(level, skill);
     if (path_file.empty()) {  // one camera: where asked, else at the player start
       const geom::Vec2 pos = pos_text.empty() ? level.player_start : cli::parse_point(pos_text, "--pos");
       specs.push_back({"camera", pos, angle.value_or(pos_text.empty() ? level.player_angle : 0.0), eye, fov});
@@ -168,9 +170,9 @@ int main(int argc, char** argv) {
       for (size_t i = 0; i < rows.size(); ++i) {
         probes[i].want_columns = probes[i].want_writes = true;
         Result res;
-        res.stats = renderers[i]->render(level, camera, frames_out[i], &probes[i]);
+        res.stats = renderers[i]->render(level, state, camera, frames_out[i], &probes[i]);
         render::Frame scratch(w, h);
-        res.ms = time_frames(*renderers[i], level, camera, scratch, frames);
+        res.ms = time_frames(*renderers[i], level, state, camera, scratch, frames);
         rows[i].results.push_back(res);
       }
       for (size_t i = 0; i < rows.size(); ++i) {
