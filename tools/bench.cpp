@@ -31,6 +31,7 @@ namespace {
 
 struct Settings {
   cli::LevelArgs wads;         // the wad section: --iwad, --file, --map
+  int skill = level::kDefaultSkill;
   int cameras = 30;            // the wad section: random cameras per map
   int runs = 5;                // the wad section: compiles per map and tool (median)
   int width = 640, height = 400;
@@ -375,6 +376,44 @@ PeerTree read_peer_tree(const std::filesystem::path& wad_path, const std::string
   return t;
 }
 
+// The bsp renderer with every thing drawn and with none, camera by camera in turn
+// (interleaved, so the machine's noise falls on both alike): the median with things,
+// and the cost of things as a paired ratio: each camera's fastest render with things,
+// summed, over the same without.
+struct SpriteCost {
+  double with_things_ms = 0, without_things_ms = 0, ratio = 0, sprites = 0;
+};
+SpriteCost time_sprites(const level::Level& level, const std::vector<render::Camera>& cameras, int skill,
+                        const Settings& s) {
+  const level::State with = level::start_state(level, skill);
+  level::State without = with;
+  std::fill(without.things.begin(), without.things.end(), 0);
+  auto r = render::make_renderer("bsp");
+  render::Frame frame(s.width, s.height);
+  std::vector<double> a, b;
+  SpriteCost cost;
+  double fastest_with = 0, fastest_without = 0;
+  r->render(level, with, cameras.front(), frame);  // warm-up
+  for (const render::Camera& c : cameras) {
+    double best_a = INFINITY, best_b = INFINITY;
+    for (int i = 0; i < s.repeat; ++i) {
+      auto t0 = Clock::now();
+      cost.sprites += double(r->render(level, with, c, frame).sprites_drawn);
+      a.push_back(cli::seconds_since(t0) * 1000);
+      t0 = Clock::now();
+      r->render(level, without, c, frame);
+      b.push_back(cli::seconds_since(t0) * 1000);
+      best_a = std::min(best_a, a.back()), best_b = std::min(best_b, b.back());
+    }
+    fastest_with += best_a, fastest_without += best_b;
+  }
+  cost.with_things_ms = median(a);
+  cost.without_things_ms = median(b);
+  cost.ratio = fastest_with / fastest_without;
+  cost.sprites /= double(a.size());
+  return cost;
+}
+
 // Cameras at random points inside sectors, looking anywhere, eye 41 above the floor.
 std::vector<render::Camera> random_cameras(const level::Level& level, int count, uint64_t seed) {
   Rng rng(seed);
@@ -407,9 +446,10 @@ void bench_wad(const Settings& s) {
   std::printf("\n### %s: every map compiled (whole process, median of %d) beside ZDBSP, and rendered\n\n",
               source.wads.back().filename().c_str(), s.runs);
   std::printf("| map | lines | mapc ms | zdbsp ms | mapc / zdbsp | segs (2-sided x2) | zdbsp segs | segs / zdbsp | "
-              "depth | zdbsp depth | bsp ms/frame %dx%d | fps |\n", s.width, s.height);
-  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  std::vector<double> time_ratios, seg_ratios, frame_ms;
+              "depth | zdbsp depth | bsp ms/frame %dx%d | fps | sprites / frame | without things ms | with / without |\n",
+              s.width, s.height);
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  std::vector<double> time_ratios, seg_ratios, frame_ms, sprite_ratios;
   for (const std::string& map : maps) {
     bsp::Stats stats;
     const level::Level level = bsp::build_wad_map(wads, map, {}, nullptr, &stats);
@@ -431,19 +471,22 @@ void bench_wad(const Settings& s) {
     const PeerTree tree = zdbsp ? read_peer_tree(built, map) : PeerTree{};
 
     const auto cameras = random_cameras(level, s.cameras, 1);
-    const Timing t = time_renderer(*render::make_renderer("bsp"), level, cameras, s);
-    frame_ms.push_back(t.median_ms);
+    const SpriteCost t = time_sprites(level, cameras, s.skill, s);
+    frame_ms.push_back(t.with_things_ms);
+    sprite_ratios.push_back(t.ratio);
     if (zdbsp) time_ratios.push_back(ours_ms / peer_ms), seg_ratios.push_back(double(segs) / double(tree.segs));
-    std::printf("| %s | %zu | %s | %s | %s | %zu | %s | %s | %s | %s | %s | %s |\n", map.c_str(), stats.walls,
-                fixed(ours_ms, 1).c_str(), zdbsp ? fixed(peer_ms, 1).c_str() : "n/a",
+    std::printf("| %s | %zu | %s | %s | %s | %zu | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", map.c_str(),
+                stats.walls, fixed(ours_ms, 1).c_str(), zdbsp ? fixed(peer_ms, 1).c_str() : "n/a",
                 zdbsp ? fixed(ours_ms / peer_ms, 2).c_str() : "n/a", segs, zdbsp ? std::to_string(tree.segs).c_str() : "n/a",
                 zdbsp ? fixed(double(segs) / double(tree.segs), 3).c_str() : "n/a", fixed(stats.mean_depth, 1).c_str(),
-                zdbsp ? fixed(tree.mean_depth, 1).c_str() : "n/a", fixed(t.median_ms, 3).c_str(),
-                fixed(1000 / t.median_ms, 0).c_str());
+                zdbsp ? fixed(tree.mean_depth, 1).c_str() : "n/a", fixed(t.with_things_ms, 3).c_str(),
+                fixed(1000 / t.with_things_ms, 0).c_str(), fixed(t.sprites, 1).c_str(),
+                fixed(t.without_things_ms, 3).c_str(), fixed(t.ratio, 2).c_str());
     std::fflush(stdout);
   }
-  std::printf("| geomean | | | | %s | | | %s | | | %s | |\n", zdbsp ? fixed(geomean(time_ratios), 2).c_str() : "n/a",
-              zdbsp ? fixed(geomean(seg_ratios), 3).c_str() : "n/a", fixed(geomean(frame_ms), 3).c_str());
+  std::printf("| geomean | | | | %s | | | %s | | | %s | | | | %s |\n",
+              zdbsp ? fixed(geomean(time_ratios), 2).c_str() : "n/a", zdbsp ? fixed(geomean(seg_ratios), 3).c_str() : "n/a",
+              fixed(geomean(frame_ms), 3).c_str(), fixed(geomean(sprite_ratios), 2).c_str());
   std::filesystem::remove_all(dir);
 }
 
@@ -468,6 +511,7 @@ int main(int argc, char** argv) {
   cli::add_wad_options(app, s.wads);
   app.add_option("--cameras", s.cameras, "wad: random cameras per map")->check(CLI::Range(1, 100000))->capture_default_str();
   app.add_option("--runs", s.runs, "wad: compiles per map and tool (median)")->check(CLI::Range(1, 1000))->capture_default_str();
+  cli::add_skill_option(app, s.skill);
   app.add_option("--size", size_text, "resolution WxH")->capture_default_str();
   app.add_option("--repeat", s.repeat, "renders per camera")->check(CLI::Range(1, 1000))->capture_default_str();
   app.add_option("--budget", s.budget_seconds, "seconds per renderer and map before the path is cut short")

@@ -387,19 +387,33 @@ void Canvas::draw_sprite_column(const Sprite& s, int x, int top, int bottom, boo
   const int64_t u = to_int((x + 0.5 - view_->half_w) * inv_scale - s.left);
   if (u < 0 || u >= tex.width) return;
   const size_t column = size_t(s.flip ? tex.width - 1 - u : u) * tex.height;
-  // Texel row at screen row y: top - z(y), z(y) = eye - (y + 0.5 - H/2) * inv_scale; from row 0, as walls.
-  const double v0 = s.top - view_->eye + (0.5 - view_->half_h) * inv_scale;
-  const int64_t step = std::llround(inv_scale * kFix);
-  int64_t v = std::llround(v0 * kFix) + int64_t(top) * step;
-  uint32_t* out = pixel(x, top);
-  for (int y = top; y < bottom; ++y, out += view_->width, v += step) {
-    const int64_t row = v >> 16;
-    if (row < 0) continue;
-    if (row >= tex.height) break;
-    if (!(tex.texels[column + size_t(row)] >> 24)) continue;
-    *out = lit(tex, column + size_t(row), s.light_map);
-    count_layer(x, y, sprite_pixels_);
-    drew = true;
+  // Texel row at screen row y: (v0 + y * step) >> 16, v0 from top - z at row 0, as walls.
+  const int64_t v0 = std::llround((s.top - view_->eye + (0.5 - view_->half_h) * inv_scale) * kFix);
+  const int64_t step = std::max<int64_t>(1, std::llround(inv_scale * kFix));
+  // Only the rows where the picture is: 0 <= v0 + y * step < height << 16, exactly.
+  auto ceil_div = [](int64_t a, int64_t b) { return a >= 0 ? (a + b - 1) / b : -((-a) / b); };
+  const int y0 = int(std::clamp<int64_t>(ceil_div(-v0, step), top, bottom));
+  const int y1 = int(std::clamp<int64_t>(ceil_div((int64_t(tex.height) << 16) - v0, step), y0, bottom));
+  auto draw = [&](auto colour_of) {
+    const uint32_t* texels = tex.texels.data() + column;
+    uint32_t* out = pixel(x, y0);
+    int64_t v = v0 + int64_t(y0) * step;
+    for (int y = y0; y < y1; ++y, out += view_->width, v += step) {
+      const size_t row = size_t(v >> 16);
+      if (!(texels[row] >> 24)) continue;
+      *out = colour_of(row);
+      count_layer(x, y, sprite_pixels_);
+      drew = true;
+    }
+  };
+  if (level_->paletted()) {
+    const uint8_t* indices = tex.indices.data() + column;
+    const uint32_t* light_map = level_->light_maps.data() + size_t(s.light_map) * limits::kPaletteSize;
+    draw([&](size_t row) { return light_map[indices[row]]; });
+  } else {
+    const uint32_t* texels = tex.texels.data() + column;
+    const uint32_t mult = multiplier(s.light_map);
+    draw([&](size_t row) { return shade(texels[row], mult); });
   }
 }
 

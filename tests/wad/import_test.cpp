@@ -8,6 +8,7 @@
 
 #include "engine/bsp/check.h"
 #include "engine/bsp/load.h"
+#include "engine/image/image.h"
 #include "engine/render/renderer.h"
 #include "engine/util/error.h"
 #include "tests/support/support.h"
@@ -460,6 +461,58 @@ TEST(Import, MaskedMiddlesShowWhatIsBehindAndAreNotTiled) {
   EXPECT_GT(mesh, 0);
   EXPECT_GT(through, 0);  // the holes show the room behind
   expect_sound(b.level, "masked");
+}
+
+// ---- things and sprites --------------------------------------------------------------
+
+// A Zombieman (3004, sprite POSS frame A) with five pictures named as Doom names them:
+// POSSA1, POSSA2A8, POSSA3A7, POSSA4A6, POSSA5 (the A2A8 picture shows rotation 2, and
+// mirrored rotation 8). Picture n has palette index 20n on its left half and 20n + 1
+// on its right half, so a frame tells which picture shows and whether it is mirrored.
+TEST(Import, SpritesTurnAsDoomTurnsThem) {
+  test::WadWriter w(true);
+  test::add_test_art(w);
+  TestMap m;
+  m.add_room({{0, 0}, {0, 512}, {512, 512}, {512, 0}}, {0, 256, "FLOOR", "CEIL", 255});
+  m.things.push_back({256, 256, 0, 3004, 7});  // facing east
+  m.things.push_back({64, 64, 0, 1, 7});        // the player start: never drawn
+  m.things.push_back({300, 300, 0, 2035, 7});   // a barrel: no sprite in this WAD
+  m.things.push_back({310, 310, 0, 9999, 7});   // not a Doom thing
+  m.add_to(w, "MAP01");
+  w.lump("S_START");
+  const char* names[] = {"POSSA1", "POSSA2A8", "POSSA3A7", "POSSA4A6", "POSSA5"};
+  for (int n = 1; n <= 5; ++n) {
+    IndexedImage pic(16, 32);
+    pic.left_offset = 8, pic.top_offset = 32;
+    for (int y = 0; y < 32; ++y)
+      for (int x = 0; x < 16; ++x) pic.indices[pic.at(x, y)] = uint8_t(20 * n + (x >= 8)), pic.opaque[pic.at(x, y)] = 1;
+    w.lump(names[n - 1], test::encode_picture(pic));
+  }
+  w.lump("S_END");
+  Stack stack;
+  stack.add(Wad(w.bytes(), "test.wad"));
+  std::vector<std::string> warnings;
+  const level::Level level = bsp::build_wad_map(stack, "MAP01", {}, &warnings);
+  Built b{level, warnings};
+  EXPECT_TRUE(has_warning(b, "THINGS #2: warning: sprite BAR1A does not exist (not drawn)"));
+  EXPECT_TRUE(has_warning(b, "THINGS #3: warning: thing type 9999 is not Doom's (not drawn)"));
+  EXPECT_FALSE(has_warning(b, "THINGS #1"));
+  EXPECT_EQ(level.things[1].sprite, level::kNone);
+
+  // From direction k * 45 degrees (seen from the thing), Doom shows rotation k + 1.
+  const int picture[8] = {1, 2, 3, 4, 5, 4, 3, 2};
+  const bool mirrored[8] = {false, false, false, false, false, true, true, true};
+  auto renderer = render::make_renderer("bsp");
+  for (int k = 0; k < 8; ++k) {
+    const double a = k * M_PI / 4;
+    const geom::Vec2 eye = geom::Vec2(256, 256) + geom::Vec2(std::cos(a), std::sin(a)) * 96.0;
+    const render::Camera camera{eye, 24, k * 45.0 + 180, 90};
+    render::Frame frame(64, 40);
+    renderer->render(level, camera, frame);
+    const int left = int(image::red(frame.at(29, 20))), right = int(image::red(frame.at(34, 20)));
+    EXPECT_EQ(left, 20 * picture[k] + (mirrored[k] ? 1 : 0)) << "seen from " << k * 45 << " degrees";
+    EXPECT_EQ(right, 20 * picture[k] + (mirrored[k] ? 0 : 1)) << "seen from " << k * 45 << " degrees";
+  }
 }
 
 }  // namespace
