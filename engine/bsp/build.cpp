@@ -136,7 +136,7 @@ class Builder {
       lf.drop = f.drop;
       out_.sprite_frames.push_back(lf);
     }
-    for (const map::Thing& t : src_.things) out_.things.push_back({t.type, t.pos, t.angle, t.flags, t.sprite});
+    for (const map::Thing& t : src_.things) out_.things.push_back({t.type, t.pos, t.angle, t.flags, t.sprite, t.sector});
     out_.player_start = src_.player.pos;
     out_.player_angle = src_.player.angle;
     out_.default_sector = src_.default_sector;

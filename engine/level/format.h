@@ -21,7 +21,7 @@
 //     NODES    u32 n; n x { u32 splitter wall, i32 front, i32 back, u32 first frag, u32 frag count,
 //                           f64 bbox min x, min y, max x, max y }
 //     LEAVES   u32 n; n x { i32 sector }
-//     THINGS   u32 n; n x { i32 type, f64 x, y, angle, u32 flags, i32 sprite frame (-1: none) }
+//     THINGS   u32 n; n x { i32 type, f64 x, y, angle, u32 flags, i32 sprite frame (-1: none), i32 sector (-1: none) }
 //     GRID     u32 present (0 or 1); if 1: u32 cols, u32 rows, f64 cell,
 //              cols*rows u8 solid (row 0 south), cols*rows*4 i32 face walls (east, north, west, south)
 // All integers and IEEE doubles little-endian; str = u32 length + bytes.
@@ -52,7 +52,7 @@ constexpr size_t kWallRecord = 4 * 8 + 4 * 4 + 2 * kSideRecord;
 constexpr size_t kFragmentRecord = 4 * 3 + 8 * 2;
 constexpr size_t kNodeRecord = 4 * 5 + 8 * 4;
 constexpr size_t kSectorRecord = 4 + 8 * 2 + 4 * 5;
-constexpr size_t kThingRecord = 4 + 8 * 3 + 4 + 4;
+constexpr size_t kThingRecord = 4 + 8 * 3 + 4 + 4 + 4;
 constexpr size_t kSpriteImageRecord = 4 * 3;
 constexpr size_t kSpriteFrameRecord = 4 + 8 * (4 + 1) + 1 + 1 + 8;
 constexpr size_t kLeafRecord = 4;

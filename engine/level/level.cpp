@@ -135,7 +135,8 @@ void finalize(Level& level) {
   if (level.nodes.empty() || level.leaves.empty()) return;
   for (Wall& w : level.walls)
     if (w.segment()) w.segment_sector = level.sector_at((w.a + w.b) * 0.5);
-  for (Thing& t : level.things) t.sector = level.sector_at(t.pos);
+  for (Thing& t : level.things)
+    if (t.sector == kNone) t.sector = level.sector_at(t.pos);
   attach_things(level);
 }
 

@@ -162,8 +162,7 @@ struct Thing {
   double angle = 0;
   uint32_t flags = 0;  // doom::ThingFlags
   int32_t sprite = kNone;  // its frame in Level::sprite_frames, or kNone: never drawn (player starts...)
-  // Derived on load:
-  int32_t sector = kNone;  // the sector it stands in
+  int32_t sector = kNone;  // the sector it stands in (finalize finds it by point location when kNone)
 };
 
 // The tile grid of a level compiled from a .grid map, for the grid ray caster.

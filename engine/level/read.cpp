@@ -239,6 +239,7 @@ class Reader {
       t.flags = in_.u32();
       t.sprite = in_.i32();
       index(t.sprite, kNone, level_.sprite_frames.size(), "thing sprite");
+      t.sector = in_.i32();
     }
   }
 
@@ -329,6 +330,7 @@ class Reader {
       }
     }
     for (const Leaf& l : level_.leaves) index(l.sector, kNone, sectors, "leaf sector");
+    for (const Thing& t : level_.things) index(t.sector, kNone, sectors, "thing sector");
   }
 
   // A proper binary tree rooted at node 0 whose fragments partition the fragment

@@ -150,6 +150,7 @@ void write_payload(ByteWriter& out, const Level& level) {
     out.f64(t.angle);
     out.u32(t.flags);
     out.i32(t.sprite);
+    out.i32(t.sector);
   }
 
   out.u32(format::kGrid);

@@ -77,6 +77,7 @@ struct Thing {
   double angle = 0;  // degrees, counter-clockwise from east
   uint32_t flags = doom::kThingAllSkills;
   int sprite = kNone;  // index into Source::sprites, or kNone: not drawn
+  int sector = kNone;  // where it stands, when the source says (a WAD's own nodes); else the compiler finds it
 };
 
 // A picture for things: a .map `sprite` statement's PNG, or one of a WAD's sprite lumps.

@@ -10,6 +10,7 @@
 
 #include "engine/util/error.h"
 #include "engine/wad/art.h"
+#include "engine/wad/nodes.h"
 #include "engine/wad/things.h"
 
 namespace p3d::wad {
@@ -495,8 +496,16 @@ class Importer {
 
 }  // namespace
 
-ImportResult import_map_data(const Stack& stack, const MapData& data, const ImportOptions& options) {
-  return Importer(stack, data, options).run();
+ImportResult import_map_data(const Stack& stack, const MapData& data, const ImportOptions& options,
+                             const MapLumps* lumps) {
+  ImportResult result = Importer(stack, data, options).run();
+  if (lumps) {
+    std::vector<geom::Vec2> points;
+    for (const map::Thing& t : result.source.things) points.push_back(t.pos);
+    if (const auto sectors = sectors_by_doom_nodes(*lumps, data, points))
+      for (size_t i = 0; i < points.size(); ++i) result.source.things[i].sector = (*sectors)[i];
+  }
+  return result;
 }
 
 ImportResult import_map(const Stack& stack, std::string_view map_name, const ImportOptions& options) {
@@ -508,7 +517,7 @@ ImportResult import_map(const Stack& stack, std::string_view map_name, const Imp
     throw Error(wads + ": no map " + printable(normalize_name(map_name)) +
                 (names.empty() ? " (the WADs hold no maps)" : " (maps: " + names + ")"));
   }
-  return import_map_data(stack, read_map(*lumps), options);
+  return import_map_data(stack, read_map(*lumps), options, &*lumps);
 }
 
 }  // namespace p3d::wad

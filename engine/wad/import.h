@@ -36,7 +36,9 @@ struct ImportResult {
 // Throws Error("<wad>:<map>: ...") when the map does not exist or cannot be built.
 ImportResult import_map(const Stack& stack, std::string_view map_name, const ImportOptions& options = {});
 
-// The same from decoded records (tests write records directly).
-ImportResult import_map_data(const Stack& stack, const MapData& data, const ImportOptions& options = {});
+// The same from decoded records (tests write records directly). With the map's lumps,
+// things stand in the sectors the map's own nodes place them in, as in Doom.
+ImportResult import_map_data(const Stack& stack, const MapData& data, const ImportOptions& options = {},
+                             const MapLumps* lumps = nullptr);
 
 }  // namespace p3d::wad

@@ -210,7 +210,7 @@ TEST_F(LevelIo, PalettedLevelsAndDoomDataRoundTrip) {
   l.sectors[2].special = 9;
   l.sectors[2].tag = 7;
   l.sectors[2].ceiling = l.sectors[2].floor - 1;
-  l.things.push_back({2001, {10, 20}, 90, 16});
+  l.things.push_back({2001, {10, 20}, 90, 16, kNone, 0});
   const std::vector<uint8_t> bytes = encode(l);
   const Level back = decode(bytes, "x.bsp");
   EXPECT_EQ(encode(back), bytes);
