@@ -11,6 +11,7 @@
 #include "engine/bsp/check.h"
 #include "engine/bsp/load.h"
 #include "engine/render/renderer.h"
+#include "engine/wad/write.h"
 #include "tests/support/support.h"
 
 namespace p3d::wad {
@@ -104,6 +105,24 @@ TEST(Freedoom, EveryMapOfFreedoom2CompilesAndRendersAsTheReference) {
   Tally t;
   check_wad("freedoom2.wad", 20, t);
   report(t, "freedoom2");
+}
+
+// E3M4's hanging bodies stand exactly on lines between sectors 6 and 7 (ceilings 208
+// and 272), where our tree says 7: Doom's nodes put THINGS #28, #31 and #32 in sector
+// 6, and so must we (Chocolate Doom hangs them from the lower ceiling). THINGS #27 sits
+// on a splitter's origin, where Doom's sign-bit shortcut sends it to the front: 7.
+// Without node lumps, our own tree decides.
+TEST(Freedoom, ThingsOnLinesStandWhereDoomsNodesPutThem) {
+  const Stack wads = bsp::read_wads({test::freedoom_path("freedoom1.wad")});
+  const level::Level level = bsp::build_wad_map(wads, "E3M4", {}, nullptr);
+  EXPECT_EQ(level.things[27].sector, 7);
+  for (size_t i : {28, 31, 32}) EXPECT_EQ(level.things[i].sector, 6) << "THINGS #" << i;
+
+  Stack stripped;
+  stripped.add(wads.wads().front());
+  stripped.add(Wad(map_without_nodes(*wads.map("E3M4")), "no-nodes.wad"));
+  const level::Level ours = bsp::build_wad_map(stripped, "E3M4", {}, nullptr);
+  for (size_t i : {27, 28, 31, 32}) EXPECT_EQ(ours.things[i].sector, ours.sector_at(ours.things[i].pos));
 }
 
 }  // namespace
