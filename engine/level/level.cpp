@@ -142,7 +142,11 @@ void finalize(Level& level) {
 
 State start_state(const Level& level, int skill) {
   State s;
-  for (const Sector& sec : level.sectors) s.sectors.push_back({sec.floor, sec.ceiling, sec.light});
+  for (const Sector& sec : level.sectors)
+    s.sectors.push_back({sec.floor, sec.ceiling, sec.light, sec.floor_texture, sec.ceiling_texture, sec.special});
+  s.textures.reserve(level.walls.size() * 6);
+  for (const Wall& w : level.walls)
+    for (const Side& side : w.sides) s.textures.insert(s.textures.end(), {side.upper, side.middle, side.lower});
   s.things.resize(level.things.size());
   for (size_t i = 0; i < level.things.size(); ++i) {
     const Thing& t = level.things[i];

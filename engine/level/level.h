@@ -222,16 +222,23 @@ struct Level {
 // So culling never hides a visible sprite pixel.
 void finalize(Level& level);
 
-// What changes while a level is played, beside the immutable level: sector heights
-// and light (doors and lifts move), and which things are present (the skill played,
-// things picked up). Renderers draw the level with a state.
+// What changes while a level is played, beside the immutable level: sector heights,
+// flats, light and special (doors and lifts move, floors change their flat), wall
+// textures (switches flip), and which things are present (the skill played, keys
+// picked up). Renderers and the simulation read the level through a state.
 struct SectorState {
   double floor = 0, ceiling = 0;
   int light = 0;
+  int floor_texture = kNone, ceiling_texture = kNone;  // either may be kSky
+  int special = 0;
 };
 struct State {
   std::vector<SectorState> sectors;
-  std::vector<uint8_t> things;  // per thing: 1 when present
+  std::vector<uint8_t> things;    // per thing: 1 when present
+  std::vector<int32_t> textures;  // per wall, side and Part: [(wall * 2 + side) * 3 + part]
+
+  int texture(uint32_t wall, int side, int part) const { return textures[(size_t(wall) * 2 + size_t(side)) * 3 + size_t(part)]; }
+  int& texture(uint32_t wall, int side, int part) { return textures[(size_t(wall) * 2 + size_t(side)) * 3 + size_t(part)]; }
 };
 
 constexpr int kDefaultSkill = 3;  // Doom's "Hurt me plenty"

@@ -192,8 +192,11 @@ void Canvas::finish() {
 bool Canvas::draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom) {
   const level::Wall& w = level_->walls[hit.wall];
   const level::Side& side = w.sides[hit.side];
+  const int upper = state_->texture(hit.wall, hit.side, level::kUpperPart);
+  const int middle = state_->texture(hit.wall, hit.side, level::kMiddlePart);
+  const int lower = state_->texture(hit.wall, hit.side, level::kLowerPart);
   if (near == kNone) {  // no sector to measure heights from: a wall over every open row
-    wall_span(x, top, bottom, {side.middle, level::kMiddlePart, 0, 255}, hit);
+    wall_span(x, top, bottom, {middle, level::kMiddlePart, 0, 255}, hit);
     top = bottom;
     return false;
   }
@@ -202,7 +205,7 @@ bool Canvas::draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom
   auto row = [&](double z) { return view_->row_at(view_->half_h - (z - view_->eye) * scale); };
   const int far = w.two_sided() ? w.sides[1 - hit.side].sector : kNone;
   const level::SectorState* b = far != kNone ? &state_->sectors[far] : nullptr;
-  const bool both_sky = b && level_->sectors[near].ceiling_texture == kSky && level_->sectors[far].ceiling_texture == kSky;
+  const bool both_sky = b && s.ceiling_texture == kSky && b->ceiling_texture == kSky;
   const int light = side.light != kNone ? side.light : s.light;
   auto height_of = [&](int texture) { return texture >= 0 ? double(level_->textures[texture].height) : 0.0; };
 
@@ -214,32 +217,32 @@ bool Canvas::draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom
   near_plane(x, wall_bottom, bottom, near, false);
 
   if (!b) {
-    if (side.middle == kNone) {
+    if (middle == kNone) {
       planes_to_horizon(x, wall_top, wall_bottom, near);
     } else {
-      const double anchor = (w.flags & level::kUnpegLower) ? s.floor + height_of(side.middle) : s.ceiling;
-      wall_span(x, wall_top, wall_bottom, {side.middle, level::kMiddlePart, anchor, light}, hit);
+      const double anchor = (w.flags & level::kUnpegLower) ? s.floor + height_of(middle) : s.ceiling;
+      wall_span(x, wall_top, wall_bottom, {middle, level::kMiddlePart, anchor, light}, hit);
     }
     top = bottom;
     return false;
   }
   const int upper_end = std::clamp(row(b->ceiling), wall_top, wall_bottom);
   const int lower_start = std::clamp(row(b->floor), upper_end, wall_bottom);
-  if (side.upper == kNone) {
+  if (upper == kNone) {
     plane_span(x, wall_top, upper_end, far, true);
   } else {
-    const double anchor = (w.flags & level::kUnpegUpper) ? s.ceiling : b->ceiling + height_of(side.upper);
-    wall_span(x, wall_top, upper_end, {side.upper, level::kUpperPart, anchor, light}, hit);
+    const double anchor = (w.flags & level::kUnpegUpper) ? s.ceiling : b->ceiling + height_of(upper);
+    wall_span(x, wall_top, upper_end, {upper, level::kUpperPart, anchor, light}, hit);
   }
-  if (side.lower == kNone) {
+  if (lower == kNone) {
     plane_span(x, lower_start, wall_bottom, far, false);
   } else {
     const double anchor = (w.flags & level::kUnpegLower) ? s.ceiling : b->floor;  // Doom's rule for unpegged lowers
-    wall_span(x, lower_start, wall_bottom, {side.lower, level::kLowerPart, anchor, light}, hit);
+    wall_span(x, lower_start, wall_bottom, {lower, level::kLowerPart, anchor, light}, hit);
   }
   top = upper_end;
   bottom = lower_start;
-  return side.middle != kNone && upper_end < lower_start;
+  return middle != kNone && upper_end < lower_start;
 }
 
 void Canvas::count(int x, int y0, int y1) {
@@ -313,7 +316,7 @@ void Canvas::draw_masked(int x, const Step& m) {
   const level::Side& side = w.sides[m.hit.side];
   const level::SectorState& s = state_->sectors[m.near];
   const level::SectorState& b = state_->sectors[m.far];
-  const level::Texture& tex = level_->textures[side.middle];
+  const level::Texture& tex = level_->textures[state_->texture(m.hit.wall, m.hit.side, level::kMiddlePart)];
   const double anchor = (w.flags & level::kUnpegLower) ? std::max(s.floor, b.floor) + tex.height
                                                        : std::min(s.ceiling, b.ceiling);
   const int64_t u = to_int(texture_u(m.hit, level::kMiddlePart));
@@ -454,7 +457,7 @@ void Canvas::draw_layers() {
 void Canvas::plane_span(int x, int y0, int y1, int sector, bool ceiling) {
   if (y0 >= y1 || dry_) return;
   const level::SectorState& s = state_->sectors[sector];
-  const int texture = ceiling ? level_->sectors[sector].ceiling_texture : level_->sectors[sector].floor_texture;
+  const int texture = ceiling ? s.ceiling_texture : s.floor_texture;
   if (texture == kSky) return sky_span(x, y0, y1);
   count(x, y0, y1);
   const level::Texture& tex = level_->textures[texture];

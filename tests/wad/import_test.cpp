@@ -455,7 +455,9 @@ TEST(Import, MaskedMiddlesShowWhatIsBehindAndAreNotTiled) {
   for (int y = 0; y < frame.height; ++y)
     for (int x = 40; x < 120; ++x) {
       const bool is_mesh = image::red(frame.at(x, y)) == 40;
-      if (y > mesh_bottom + 1) EXPECT_FALSE(is_mesh) << "tiled below the texture at row " << y;
+      if (y > mesh_bottom + 1) {
+        EXPECT_FALSE(is_mesh) << "tiled below the texture at row " << y;
+      }
       if (y < mesh_bottom - 1 && y > 10) (is_mesh ? mesh : through)++;
     }
   EXPECT_GT(mesh, 0);
