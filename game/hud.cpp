@@ -40,7 +40,8 @@ std::vector<std::string> hud_lines(std::string_view title, std::string_view rend
 std::vector<std::string> help_lines() {
   return {
       "W/S, Up/Down    move",
-      "A/D, Q/E        strafe",
+      "A/D             strafe",
+      "Space, E        use: open doors, press switches",
       "Left/Right      turn (Alt: strafe)",
       "mouse           turn (Esc frees it)",
       "Shift           run",

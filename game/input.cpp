@@ -19,6 +19,7 @@ sim::TicCommand make_command(const Controls& c, int turn_held_tics, const InputS
   cmd.side = int8_t(std::clamp(strafe, -1, 1) * side);
   const double mouse = -c.mouse_dx * settings.mouse_sensitivity;
   cmd.turn = int16_t(std::clamp(turning * turn + std::lround(mouse), -32767L, 32767L));
+  cmd.buttons = c.use ? sim::kUse : 0;
   return cmd;
 }
 

@@ -9,7 +9,8 @@ namespace p3d::game {
 struct Controls {
   bool forward = false, back = false;           // W / S, Up / Down
   bool turn_left = false, turn_right = false;   // Left / Right
-  bool strafe_left = false, strafe_right = false;  // A / D, Q / E
+  bool strafe_left = false, strafe_right = false;  // A / D
+  bool use = false;                             // Space, E
   bool strafe_modifier = false;                 // Alt: the turn keys strafe instead
   bool run = false;                             // Shift
   int mouse_dx = 0;                             // pixels moved right since the last tic

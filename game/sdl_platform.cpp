@@ -24,8 +24,9 @@ Controls read_controls(int mouse_dx) {
   c.back = k[SDL_SCANCODE_S] || k[SDL_SCANCODE_DOWN];
   c.turn_left = k[SDL_SCANCODE_LEFT];
   c.turn_right = k[SDL_SCANCODE_RIGHT];
-  c.strafe_left = k[SDL_SCANCODE_A] || k[SDL_SCANCODE_Q];
-  c.strafe_right = k[SDL_SCANCODE_D] || k[SDL_SCANCODE_E];
+  c.strafe_left = k[SDL_SCANCODE_A];
+  c.strafe_right = k[SDL_SCANCODE_D];
+  c.use = k[SDL_SCANCODE_SPACE] || k[SDL_SCANCODE_E];
   c.strafe_modifier = k[SDL_SCANCODE_LALT] || k[SDL_SCANCODE_RALT];
   c.run = k[SDL_SCANCODE_LSHIFT] || k[SDL_SCANCODE_RSHIFT];
   c.mouse_dx = mouse_dx;

@@ -219,7 +219,8 @@ void World::tick(Player& p, const TicCommand& cmd) const {
 
 namespace {
 constexpr char kDemoMagic[8] = {'P', '3', 'D', 'D', 'E', 'M', 'O', '\n'};
-constexpr uint32_t kDemoVersion = 1;
+constexpr uint32_t kDemoVersion = 2;
+constexpr size_t kTicBytes = 5;
 constexpr size_t kMaxDemoTics = 35 * 60 * 60 * 24;  // a day of play
 }  // namespace
 
@@ -248,6 +249,7 @@ std::vector<uint8_t> encode_demo(const Demo& d) {
     out.u8(uint8_t(t.forward));
     out.u8(uint8_t(t.side));
     out.u16(uint16_t(t.turn));
+    out.u8(t.buttons);
   }
   out.u64(fnv1a64(out.bytes()));
   return std::move(out.bytes());
@@ -269,15 +271,17 @@ Demo decode_demo(std::span<const uint8_t> bytes, const std::string& what) {
   d.angle = in.f64();
   if (!std::isfinite(d.start.x) || !std::isfinite(d.start.y) || !std::isfinite(d.angle))
     throw Error(what + ": demo start is not finite");
-  const uint32_t count = in.count(4, "tics");
+  const uint32_t count = in.count(kTicBytes, "tics");
   if (count > kMaxDemoTics) throw Error(what + ": demo is longer than a day");
-  if (in.remaining() != size_t(count) * 4) throw Error(what + ": truncated or padded demo");
+  if (in.remaining() != size_t(count) * kTicBytes) throw Error(what + ": truncated or padded demo");
   if (tail.u64() != expected) throw Error(what + ": checksum mismatch (the demo is corrupted)");
   d.tics.resize(count);
   for (TicCommand& t : d.tics) {
     t.forward = int8_t(in.u8());
     t.side = int8_t(in.u8());
     t.turn = int16_t(in.u16());
+    t.buttons = in.u8();
+    if (t.buttons & ~uint8_t(kUse)) throw Error(what + ": unknown buttons in a tic");
   }
   return d;
 }

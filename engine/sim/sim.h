@@ -25,12 +25,16 @@ constexpr double kViewHeight = 41;
 
 // One tic of input, as in Doom's ticcmd_t. forward and side are Doom's move units
 // (walk 25 / run 50 forward, 24 / 40 sideways; side > 0 is to the right); turn is in
-// 1/65536 of a full turn, counter-clockwise.
+// 1/65536 of a full turn, counter-clockwise; buttons as Button.
 struct TicCommand {
   int8_t forward = 0;
   int8_t side = 0;
   int16_t turn = 0;
+  uint8_t buttons = 0;
   friend bool operator==(const TicCommand&, const TicCommand&) = default;
+};
+enum Button : uint8_t {
+  kUse = 1,  // act on the line in front (doors, switches)
 };
 
 struct Player {

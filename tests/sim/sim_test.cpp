@@ -189,7 +189,7 @@ TEST(Demo, RecordingThenReplayingGivesTheSamePlayerAtEveryTic) {
 }
 
 TEST(Demo, DamagedFilesAreRejected) {
-  Demo demo{42, {1, 2}, 90, {{50, 0, 100}, {-25, 24, -640}}};
+  Demo demo{42, {1, 2}, 90, {{50, 0, 100, 0}, {-25, 24, -640, kUse}}};
   const std::vector<uint8_t> good = encode_demo(demo);
   auto error = [](std::vector<uint8_t> bytes) {
     try {
@@ -208,7 +208,7 @@ TEST(Demo, DamagedFilesAreRejected) {
   EXPECT_NE(error(cut).find("x.demo:"), std::string::npos);
   std::vector<uint8_t> version = good;
   version[8] = 7;
-  EXPECT_EQ(error(version), "x.demo: demo version 7 is not supported (expected 1)");
+  EXPECT_EQ(error(version), "x.demo: demo version 7 is not supported (expected 2)");
   EXPECT_EQ(decode_demo(good, "x.demo").tics, demo.tics);
 }
 
