@@ -22,8 +22,7 @@ void Session::load() {
   bsp::OpenedLevel opened = bsp::open_level(source_);
   name_ = opened.name;
   level_ = std::make_unique<level::Level>(std::move(opened.level));
-  state_ = level::start_state(*level_, skill_);
-  world_ = std::make_unique<sim::World>(*level_);
+  world_ = std::make_unique<sim::World>(*level_, skill_);
   automap_view_.set_level(*level_);
 }
 
@@ -78,14 +77,14 @@ bool Session::select_renderer(const std::string& name) {
 
 const render::RenderStats& Session::render(render::Frame& frame, double alpha) {
   probe_.want_order = show_automap;
-  stats_ = renderer_->render(*level_, state_, camera(alpha), frame, &probe_);
+  stats_ = renderer_->render(*level_, world_->state(), camera(alpha), frame, &probe_);
   if (!show_automap) probe_.order.clear();
   return stats_;
 }
 
 void Session::draw_overlays(render::Frame& frame, const FrameTimes& times, double alpha) const {
   const int scale = frame.width >= 1280 ? 2 : 1;
-  if (show_automap) automap_view_.draw(frame, *level_, state_, camera(alpha), probe_.order, automap);
+  if (show_automap) automap_view_.draw(frame, *level_, world_->state(), camera(alpha), probe_.order, automap);
   if (show_hud) draw_panel(frame, 4 * scale, 4 * scale, hud_lines(title(), renderer_name_, stats_, times, player_), scale);
   if (show_help) {
     const auto lines = help_lines();
@@ -112,13 +111,13 @@ bool Session::reload() {
   const sim::Player keep = player_;
   std::unique_ptr<level::Level> old_level = std::move(level_);
   std::unique_ptr<sim::World> old_world = std::move(world_);
-  level::State old_state = state_;
+
   try {
     load();
   } catch (const std::exception& e) {
     level_ = std::move(old_level);
     world_ = std::move(old_world);
-    state_ = std::move(old_state);
+
     automap_view_.set_level(*level_);
     say(std::string("reload failed: ") + e.what());
     std::fprintf(stderr, "%s\n", e.what());

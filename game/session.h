@@ -27,7 +27,7 @@ class Session {
   explicit Session(const std::filesystem::path& map_path) : Session(bsp::LevelSource{map_path, {}, {}}) {}
 
   const level::Level& level() const { return *level_; }
-  const level::State& state() const { return state_; }
+  const level::State& state() const { return world_->state(); }
   const sim::World& world() const { return *world_; }
   // The level's name for messages: its file, or "<wad>:<map>".
   const std::string& name() const { return name_; }
@@ -70,7 +70,6 @@ class Session {
   bsp::LevelSource source_;
   std::string name_;
   int skill_;
-  level::State state_;
   std::unique_ptr<level::Level> level_;
   std::unique_ptr<sim::World> world_;
   sim::Player player_, previous_;

@@ -75,7 +75,8 @@ Blockmap::Blockmap(const level::Level& level) {
 
 // ---- world -------------------------------------------------------------------
 
-World::World(const level::Level& level) : level_(level), blockmap_(level) {}
+World::World(const level::Level& level, int skill)
+    : level_(level), blockmap_(level), state_(level::start_state(level, skill)) {}
 
 Player World::spawn() const { return spawn_at(level_.player_start, level_.player_angle); }
 
@@ -101,8 +102,8 @@ World::Heights World::heights_at(Vec2 pos) const {
   Heights h{-INFINITY, INFINITY};
   auto touch = [&](int s) {
     if (s == level::kNone) return;
-    h.floor = std::max(h.floor, level_.sectors[s].floor);
-    h.ceiling = std::min(h.ceiling, level_.sectors[s].ceiling);
+    h.floor = std::max(h.floor, state_.sectors[size_t(s)].floor);
+    h.ceiling = std::min(h.ceiling, state_.sectors[size_t(s)].ceiling);
   };
   touch(sector);
   for (uint32_t i : walls_near(box_around(pos, pos, kPlayerRadius))) {
@@ -119,7 +120,7 @@ bool World::blocks(uint32_t wall, Vec2 from, double z) const {
   const level::Wall& w = level_.walls[wall];
   if (!w.two_sided() || (w.flags & level::kImpassable)) return true;  // one-sided, plain segments, Doom's impassable
   const int near = geom::cross(w.b - w.a, from - w.a) > 0 ? 1 : 0;
-  const level::Sector& far = level_.sectors[w.sides[1 - near].sector];
+  const level::SectorState& far = state_.sectors[size_t(w.sides[1 - near].sector)];
   return far.floor - z > kMaxStep || far.ceiling - far.floor < kPlayerHeight ||
          far.ceiling - std::max(z, far.floor) < kPlayerHeight;
 }
@@ -199,7 +200,7 @@ void World::fall(Player& p) const {
   p.view_offset = std::fabs(p.view_offset) < 0.05 ? 0 : p.view_offset * 0.7;
 }
 
-void World::tick(Player& p, const TicCommand& cmd) const {
+void World::tick(Player& p, const TicCommand& cmd) {
   p.angle = std::fmod(p.angle + cmd.turn * (360.0 / 65536.0) + 360.0, 360.0);
   const bool on_ground = p.z <= heights_at(p.pos).floor;
   if (on_ground) {

@@ -72,14 +72,16 @@ class Blockmap {
 
 class World {
  public:
-  explicit World(const level::Level& level);
+  // The level as it starts at a skill (level::start_state); the world owns that state
+  // and changes it as the level is played.
+  explicit World(const level::Level& level, int skill = level::kDefaultSkill);
 
   // The player at the level's start, or at a given place (feet on the floor there).
   Player spawn() const;
   Player spawn_at(Vec2 pos, double angle) const;
 
   // Advances the player by one tic.
-  void tick(Player& player, const TicCommand& cmd) const;
+  void tick(Player& player, const TicCommand& cmd);
 
   // Floor and ceiling under a circle of the player's radius at pos: the highest floor
   // and the lowest ceiling of every sector it touches.
@@ -92,6 +94,8 @@ class World {
   bool blocks(uint32_t wall, Vec2 from, double z) const;
 
   const level::Level& level() const { return level_; }
+  // What the level looks like now: renderers draw it.
+  const level::State& state() const { return state_; }
 
  private:
   void move(Player& p) const;
@@ -101,6 +105,7 @@ class World {
 
   const level::Level& level_;
   Blockmap blockmap_;
+  level::State state_;
 };
 
 // Demos: the start state and the tic commands, in a small validated binary file.

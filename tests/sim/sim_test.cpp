@@ -41,7 +41,7 @@ struct WalkStats {
 // one-sided wall or a plain segment from where it was, never inside a segment,
 // never in the void, and never a step of more than 24 units above the last tic.
 void random_walks(const level::Level& level, uint64_t seed, int walks, int tics, WalkStats& stats, const std::string& what) {
-  const World world(level);
+  World world(level);
   Rng rng(seed);
   for (int w = 0; w < walks; ++w) {
     Player p = world.spawn();
@@ -110,7 +110,7 @@ TEST(Collision, RandomWalksNeverPassWallsOrClimbTooHigh) {
 
 TEST(Collision, HighSpeedIntoAWallStops) {
   const level::Level level = test::compile(map::load_grid(test::source_dir() / "maps/bunker.grid"));
-  const World world(level);
+  World world(level);
   for (double angle = 0; angle < 360; angle += 7.5) {
     Player p = world.spawn();
     p.momentum = Vec2(std::cos(angle * M_PI / 180), std::sin(angle * M_PI / 180)) * 1000.0;  // absurd speed
@@ -122,7 +122,7 @@ TEST(Collision, HighSpeedIntoAWallStops) {
 
 TEST(Movement, StepsUpTheStairsButNotOntoTheWindowSill) {
   const level::Level level = test::compile(map::load_map(test::source_dir() / "maps/outpost.map"));
-  const World world(level);
+  World world(level);
   Player p = world.spawn_at({460, 192}, 0);  // in the hall, facing the six 16-unit steps
   ASSERT_EQ(p.z, 0);
   double lowest_eye = kViewHeight;  // above the feet
@@ -143,7 +143,7 @@ TEST(Movement, StepsUpTheStairsButNotOntoTheWindowSill) {
 
 TEST(Movement, TurningAFullCircleIsExact) {
   const level::Level level = test::compile(map::load_grid(test::source_dir() / "maps/labyrinth.grid"));
-  const World world(level);
+  World world(level);
   Player p = world.spawn();
   // Turning 65536 units is a full turn.
   for (int t = 0; t < 32; ++t) world.tick(p, {0, 0, 2048});
@@ -154,7 +154,7 @@ TEST(Movement, RunningReachesDoomsTerminalSpeed) {
   // Across the open yard: thrust T = 50/32 a tic against friction f = 0.90625 gives
   // T f (1 - f^n) / (1 - f) after n tics, approaching about 15.1 units a tic.
   const level::Level level = test::compile(map::load_map(test::source_dir() / "maps/outpost.map"));
-  const World world(level);
+  World world(level);
   Player p = world.spawn_at({40, 500}, 0);
   const double thrust = 50.0 / 32, f = 0xE800 / 65536.0;
   for (int t = 0; t < 45; ++t) world.tick(p, {50, 0, 0});
@@ -167,7 +167,7 @@ TEST(Movement, RunningReachesDoomsTerminalSpeed) {
 
 TEST(Demo, RecordingThenReplayingGivesTheSamePlayerAtEveryTic) {
   const level::Level level = test::compile(test::random_rooms(500, 6));
-  const World world(level);
+  World world(level);
   Rng rng(11);
   Demo demo{fingerprint(level), level.player_start, level.player_angle, {}};
   std::vector<Player> trail;
