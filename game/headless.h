@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "engine/sim/sim.h"
+#include "engine/sim/demo.h"
 #include "game/session.h"
 
 namespace p3d::game {

@@ -104,7 +104,7 @@ void Session::advance_message() {
 
 void Session::start_recording() {
   recording_on_ = true;
-  recording_ = {sim::fingerprint(*level_), player_.pos, player_.angle, {}};
+  recording_ = {sim::fingerprint(*level_), player_.pos, player_.angle, skill_, player_.keys, {}};
 }
 
 bool Session::reload() {

@@ -12,7 +12,7 @@
 #include "engine/bsp/load.h"
 #include "engine/level/level.h"
 #include "engine/render/renderer.h"
-#include "engine/sim/sim.h"
+#include "engine/sim/demo.h"
 #include "game/automap.h"
 #include "game/hud.h"
 

@@ -147,10 +147,11 @@ State start_state(const Level& level, int skill) {
   s.textures.reserve(level.walls.size() * 6);
   for (const Wall& w : level.walls)
     for (const Side& side : w.sides) s.textures.insert(s.textures.end(), {side.upper, side.middle, side.lower});
+  for (const Wall& w : level.walls) s.specials.push_back(w.special);
   s.things.resize(level.things.size());
   for (size_t i = 0; i < level.things.size(); ++i) {
     const Thing& t = level.things[i];
-    s.things[i] = t.sprite != kNone && t.sector != kNone && (t.flags & doom::skill_bit(skill)) &&
+    s.things[i] = t.sector != kNone && (t.flags & doom::skill_bit(skill)) &&
                   !(t.flags & doom::kThingNotSingle);
   }
   return s;

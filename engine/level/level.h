@@ -224,8 +224,9 @@ void finalize(Level& level);
 
 // What changes while a level is played, beside the immutable level: sector heights,
 // flats, light and special (doors and lifts move, floors change their flat), wall
-// textures (switches flip), and which things are present (the skill played, keys
-// picked up). Renderers and the simulation read the level through a state.
+// textures (switches flip) and specials (used up), and which things are present
+// (the skill played, keys picked up). Renderers and the simulation read the level
+// through a state.
 struct SectorState {
   double floor = 0, ceiling = 0;
   int light = 0;
@@ -236,6 +237,7 @@ struct State {
   std::vector<SectorState> sectors;
   std::vector<uint8_t> things;    // per thing: 1 when present
   std::vector<int32_t> textures;  // per wall, side and Part: [(wall * 2 + side) * 3 + part]
+  std::vector<int32_t> specials;  // per wall: its line special, 0 once used up
 
   int texture(uint32_t wall, int side, int part) const { return textures[(size_t(wall) * 2 + size_t(side)) * 3 + size_t(part)]; }
   int& texture(uint32_t wall, int side, int part) { return textures[(size_t(wall) * 2 + size_t(side)) * 3 + size_t(part)]; }
@@ -243,7 +245,8 @@ struct State {
 
 constexpr int kDefaultSkill = 3;  // Doom's "Hurt me plenty"
 // The level as it starts at a skill (1..5, as Doom's -skill): things absent at that
-// skill, things only in multiplayer games, and things without a sprite are left out.
+// skill and things only in multiplayer games are left out (things without a sprite
+// are present but never drawn).
 State start_state(const Level& level, int skill = kDefaultSkill);
 
 // Side of p relative to a node's splitter: > 0 back (left), < 0 front (right).

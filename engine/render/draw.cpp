@@ -352,8 +352,8 @@ uint32_t Canvas::lit(const level::Texture& tex, size_t texel, int light_map) con
 constexpr double kSpriteNearDepth = 4;  // Doom's MINZ: nearer things are not drawn
 
 void Canvas::add_sprite(uint32_t thing) {
-  if (!state_->things[thing]) return;
   const level::Thing& t = level_->things[thing];
+  if (!state_->things[thing] || t.sprite == level::kNone) return;
   const double depth = view_->depth_of(t.pos);
   if (depth < kSpriteNearDepth) return;
   const level::SpriteFrame& frame = level_->sprite_frames[size_t(t.sprite)];

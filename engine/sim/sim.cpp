@@ -9,8 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
-#include "engine/util/bytes.h"
+#include "engine/util/doom.h"
 #include "engine/util/error.h"
 
 namespace p3d::sim {
@@ -76,7 +77,20 @@ Blockmap::Blockmap(const level::Level& level) {
 // ---- world -------------------------------------------------------------------
 
 World::World(const level::Level& level, int skill)
-    : level_(level), blockmap_(level), state_(level::start_state(level, skill)) {}
+    : level_(level), blockmap_(level), state_(level::start_state(level, skill)), movers_(level, state_) {
+  // Pieces of one LINEDEF share its special: used once, it is used up on all of them.
+  std::unordered_map<int32_t, std::vector<uint32_t>> by_source;
+  for (uint32_t w = 0; w < level.walls.size(); ++w) by_source[level.walls[w].source].push_back(w);
+  pieces_.resize(level.walls.size());
+  for (uint32_t w = 0; w < level.walls.size(); ++w) pieces_[w] = by_source[level.walls[w].source];
+  std::unordered_map<std::string, int> by_name;
+  for (size_t t = 0; t < level.textures.size(); ++t) by_name.emplace(level.textures[t].name, int(t));
+  switch_partner_.assign(level.textures.size(), level::kNone);
+  for (size_t t = 0; t < level.textures.size(); ++t)
+    if (const auto it = by_name.find(doom::switch_partner(level.textures[t].name)); it != by_name.end())
+      switch_partner_[t] = it->second;
+  for (const level::SectorState& s : state_.sectors) secrets_total_ += s.special == doom::kSecretSector;
+}
 
 Player World::spawn() const { return spawn_at(level_.player_start, level_.player_angle); }
 
@@ -88,6 +102,20 @@ Player World::spawn_at(Vec2 pos, double angle) const {
   return p;
 }
 
+std::vector<int> World::sectors_under(Vec2 pos) const {
+  std::vector<int> sectors;
+  int sector = level_.sector_at(pos);
+  if (sector == level::kNone) sector = level_.default_sector;
+  if (sector != level::kNone) sectors.push_back(sector);
+  for (uint32_t i : walls_near(box_around(pos, pos, kPlayerRadius))) {
+    const level::Wall& w = level_.walls[i];
+    if (!w.two_sided() || glm::length(pos - closest_point(pos, w.a, w.b)) >= kPlayerRadius) continue;
+    sectors.push_back(w.sides[0].sector);
+    sectors.push_back(w.sides[1].sector);
+  }
+  return sectors;
+}
+
 std::vector<uint32_t> World::walls_near(const geom::BBox& box) const {
   std::vector<uint32_t> walls;
   blockmap_.for_each_near(box, [&](uint32_t w) { walls.push_back(w); });
@@ -97,20 +125,10 @@ std::vector<uint32_t> World::walls_near(const geom::BBox& box) const {
 }
 
 World::Heights World::heights_at(Vec2 pos) const {
-  int sector = level_.sector_at(pos);
-  if (sector == level::kNone) sector = level_.default_sector;
   Heights h{-INFINITY, INFINITY};
-  auto touch = [&](int s) {
-    if (s == level::kNone) return;
+  for (int s : sectors_under(pos)) {
     h.floor = std::max(h.floor, state_.sectors[size_t(s)].floor);
     h.ceiling = std::min(h.ceiling, state_.sectors[size_t(s)].ceiling);
-  };
-  touch(sector);
-  for (uint32_t i : walls_near(box_around(pos, pos, kPlayerRadius))) {
-    const level::Wall& w = level_.walls[i];
-    if (!w.two_sided() || glm::length(pos - closest_point(pos, w.a, w.b)) >= kPlayerRadius) continue;
-    touch(w.sides[0].sector);
-    touch(w.sides[1].sector);
   }
   if (h.floor == -INFINITY) h = {0, 0};  // in the void of a level without a default sector
   return h;
@@ -125,7 +143,11 @@ bool World::blocks(uint32_t wall, Vec2 from, double z) const {
          far.ceiling - std::max(z, far.floor) < kPlayerHeight;
 }
 
-bool World::step(Player& p, Vec2 delta) const {
+bool World::step(Player& p, Vec2 delta) {
+  if (p.noclip) {  // through everything, feet on the floor below
+    p.pos += delta;
+    return true;
+  }
   Vec2 target = p.pos + delta;
   const std::vector<uint32_t> near = walls_near(box_around(p.pos, target, 2 * kPlayerRadius + 1));
   std::vector<uint32_t> blocking;
@@ -157,15 +179,18 @@ bool World::step(Player& p, Vec2 delta) const {
   const Heights h = heights_at(target);
   if (h.floor - p.z > kMaxStep || h.ceiling - h.floor < kPlayerHeight || h.ceiling - std::max(p.z, h.floor) < kPlayerHeight)
     return false;
+  const Vec2 from = p.pos;
   p.pos = target;
+  cross_lines(p, from);
   return true;
 }
 
-void World::move(Player& p) const {
+void World::move(Player& p) {
   const Vec2 delta{std::clamp(p.momentum.x, -kMaxMove, kMaxMove), std::clamp(p.momentum.y, -kMaxMove, kMaxMove)};
   const int steps = std::max(1, int(std::ceil(glm::length(delta) / kSubstep)));
   const Vec2 sub = delta / double(steps);
-  for (int i = 0; i < steps; ++i) {
+  teleported_ = false;
+  for (int i = 0; i < steps && !teleported_; ++i) {
     if (step(p, sub)) continue;
     // Blocked: slide along one axis (a ledge too high, a corner), else stop.
     if (sub.x != 0 && step(p, {sub.x, 0})) {
@@ -181,8 +206,9 @@ void World::move(Player& p) const {
   }
 }
 
-void World::fall(Player& p) const {
+void World::fall(Player& p) {
   const Heights h = heights_at(p.pos);
+  player_floor_ = h.floor;
   if (p.z < h.floor) {  // stepped up: the eye dips, then recovers
     p.view_offset -= h.floor - p.z;
     p.z = h.floor;
@@ -200,91 +226,53 @@ void World::fall(Player& p) const {
   p.view_offset = std::fabs(p.view_offset) < 0.05 ? 0 : p.view_offset * 0.7;
 }
 
+// Whether the player still fits after a plane of `sector` moved (Doom's
+// P_ThingHeightClip): standing on the floor, the player rides it; in the air, a
+// ceiling coming down pushes the player down.
+bool World::fits_after_move(Player& p, int sector) {
+  const std::vector<int> under = sectors_under(p.pos);
+  if (std::find(under.begin(), under.end(), sector) == under.end()) return true;
+  const Heights h = heights_at(p.pos);
+  if (p.z == player_floor_)
+    p.z = h.floor;
+  else if (p.z + kPlayerHeight > h.ceiling)
+    p.z = h.ceiling - kPlayerHeight;
+  player_floor_ = h.floor;
+  return h.ceiling - h.floor >= kPlayerHeight;
+}
+
+// Doom's order: the player thinks (turns, thrusts, finds secrets, uses), moves
+// (crossing lines), falls; then every mover and light; then switches flip back.
 void World::tick(Player& p, const TicCommand& cmd) {
-  p.angle = std::fmod(p.angle + cmd.turn * (360.0 / 65536.0) + 360.0, 360.0);
-  const bool on_ground = p.z <= heights_at(p.pos).floor;
-  if (on_ground) {
-    const double a = p.angle * (M_PI / 180);
-    const Vec2 forward{std::cos(a), std::sin(a)}, right{std::sin(a), -std::cos(a)};
-    p.momentum += forward * (cmd.forward * kThrustPerUnit) + right * (cmd.side * kThrustPerUnit);
+  events_.clear();
+  if (cmd.buttons & kNoclip) {
+    p.noclip = !p.noclip;
+    say(Event::Kind::kCheat, p.noclip ? "No Clipping Mode ON" : "No Clipping Mode OFF");
   }
+  const bool on_ground = p.z <= heights_at(p.pos).floor;
+  if (p.frozen > 0) {
+    --p.frozen;
+  } else {
+    p.angle = std::fmod(p.angle + cmd.turn * (360.0 / 65536.0) + 360.0, 360.0);
+    if (on_ground) {
+      const double a = p.angle * (M_PI / 180);
+      const Vec2 forward{std::cos(a), std::sin(a)}, right{std::sin(a), -std::cos(a)};
+      p.momentum += forward * (cmd.forward * kThrustPerUnit) + right * (cmd.side * kThrustPerUnit);
+    }
+  }
+  find_secret(p);
+  const bool use = cmd.buttons & kUse;
+  if (use && !p.use_held) use_lines(p);
+  p.use_held = use;
   move(p);
   if (on_ground) {
     p.momentum *= kFriction;
     if (glm::length(p.momentum) < kStopSpeed && cmd.forward == 0 && cmd.side == 0) p.momentum = {0, 0};
   }
   fall(p);
-}
-
-// ---- demos -------------------------------------------------------------------
-
-namespace {
-constexpr char kDemoMagic[8] = {'P', '3', 'D', 'D', 'E', 'M', 'O', '\n'};
-constexpr uint32_t kDemoVersion = 2;
-constexpr size_t kTicBytes = 5;
-constexpr size_t kMaxDemoTics = 35 * 60 * 60 * 24;  // a day of play
-}  // namespace
-
-uint64_t fingerprint(const level::Level& level) {
-  ByteWriter out;
-  for (const level::Wall& w : level.walls) {
-    out.i64(w.p1.x), out.i64(w.p1.y), out.i64(w.p2.x), out.i64(w.p2.y);
-    out.u32(w.flags);
-    out.i32(w.sides[0].sector), out.i32(w.sides[1].sector);
-  }
-  for (const level::Sector& s : level.sectors) out.f64(s.floor), out.f64(s.ceiling);
-  out.i32(level.default_sector);
-  return fnv1a64(out.bytes());
-}
-
-std::vector<uint8_t> encode_demo(const Demo& d) {
-  ByteWriter out;
-  out.raw(std::span(reinterpret_cast<const uint8_t*>(kDemoMagic), 8));
-  out.u32(kDemoVersion);
-  out.u64(d.level_fingerprint);
-  out.f64(d.start.x);
-  out.f64(d.start.y);
-  out.f64(d.angle);
-  out.u32(uint32_t(d.tics.size()));
-  for (const TicCommand& t : d.tics) {
-    out.u8(uint8_t(t.forward));
-    out.u8(uint8_t(t.side));
-    out.u16(uint16_t(t.turn));
-    out.u8(t.buttons);
-  }
-  out.u64(fnv1a64(out.bytes()));
-  return std::move(out.bytes());
-}
-
-Demo decode_demo(std::span<const uint8_t> bytes, const std::string& what) {
-  if (bytes.size() < 8 || std::memcmp(bytes.data(), kDemoMagic, 8) != 0) throw Error(what + ": not a demo (bad magic)");
-  if (bytes.size() < 8 + 4 + 8 + 24 + 4 + 8) throw Error(what + ": truncated demo");
-  const uint64_t expected = fnv1a64(bytes.subspan(0, bytes.size() - 8));
-  ByteReader tail(bytes.subspan(bytes.size() - 8), what);
-  ByteReader in(bytes.subspan(8, bytes.size() - 16), what);
-  const uint32_t version = in.u32();
-  if (version != kDemoVersion)
-    throw Error(what + ": demo version " + std::to_string(version) + " is not supported (expected " +
-                std::to_string(kDemoVersion) + ")");
-  Demo d;
-  d.level_fingerprint = in.u64();
-  d.start = {in.f64(), in.f64()};
-  d.angle = in.f64();
-  if (!std::isfinite(d.start.x) || !std::isfinite(d.start.y) || !std::isfinite(d.angle))
-    throw Error(what + ": demo start is not finite");
-  const uint32_t count = in.count(kTicBytes, "tics");
-  if (count > kMaxDemoTics) throw Error(what + ": demo is longer than a day");
-  if (in.remaining() != size_t(count) * kTicBytes) throw Error(what + ": truncated or padded demo");
-  if (tail.u64() != expected) throw Error(what + ": checksum mismatch (the demo is corrupted)");
-  d.tics.resize(count);
-  for (TicCommand& t : d.tics) {
-    t.forward = int8_t(in.u8());
-    t.side = int8_t(in.u8());
-    t.turn = int16_t(in.u16());
-    t.buttons = in.u8();
-    if (t.buttons & ~uint8_t(kUse)) throw Error(what + ": unknown buttons in a tic");
-  }
-  return d;
+  pick_up(p);
+  movers_.tick([&](int sector) { return fits_after_move(p, sector); });
+  tick_buttons();
 }
 
 }  // namespace p3d::sim

@@ -1,7 +1,10 @@
 // The game simulation: fixed 35 Hz tics, Doom's movement (thrust, friction,
 // gravity) and a player circle that slides along walls, climbs steps of at most
-// 24 units and needs 56 units of headroom. Deterministic: the same level, start
-// and tic commands give the same player at every tic.
+// 24 units and needs 56 units of headroom; and Doom's level mechanics, which move
+// the player through a level: the use key, lines walked over, switches, doors,
+// lifts, floors, crushers, stairs, teleporters, keys and locks, secrets, exits.
+// Deterministic: the same level, start and tic commands give the same player and
+// level state at every tic.
 #pragma once
 
 #include <algorithm>
@@ -12,6 +15,7 @@
 #include <vector>
 
 #include "engine/level/level.h"
+#include "engine/sim/movers.h"
 
 namespace p3d::sim {
 
@@ -34,7 +38,20 @@ struct TicCommand {
   friend bool operator==(const TicCommand&, const TicCommand&) = default;
 };
 enum Button : uint8_t {
-  kUse = 1,  // act on the line in front (doors, switches)
+  kUse = 1,     // act on the line in front (doors, switches): on the tic it goes down
+  kNoclip = 2,  // the idclip cheat: walls stop blocking, or start again
+};
+constexpr uint8_t kButtons = kUse | kNoclip;
+
+// Doom's six keys; a lock opens with the card or the skull of its colour.
+enum KeyBits : uint8_t {
+  kBlueCard = 1,
+  kYellowCard = 2,
+  kRedCard = 4,
+  kBlueSkull = 8,
+  kYellowSkull = 16,
+  kRedSkull = 32,
+  kAllKeys = 63,
 };
 
 struct Player {
@@ -44,8 +61,21 @@ struct Player {
   double momz = 0;       // vertical speed, units per tic
   Vec2 momentum{0, 0};   // units per tic
   double view_offset = 0;  // squat after a step up, recovering to 0
+  uint8_t keys = 0;      // KeyBits
+  bool noclip = false;
+  bool use_held = false;   // use was down last tic
+  int frozen = 0;          // tics left without control (after a teleport, as Doom's)
   double view_z() const { return z + kViewHeight + view_offset; }
 };
+
+// What happened during a tic, for messages and tests.
+struct Event {
+  enum class Kind : uint8_t { kKey, kLocked, kSecret, kTeleport, kSwitch, kExit, kCheat };
+  Kind kind;
+  std::string message;  // Doom's words where Doom has them; empty when nothing is said
+};
+
+enum class Exit : uint8_t { kNone, kNormal, kSecret };
 
 // Walls listed by 128-unit cells (Doom's blockmap): the collision queries.
 class Blockmap {
@@ -80,8 +110,14 @@ class World {
   Player spawn() const;
   Player spawn_at(Vec2 pos, double angle) const;
 
-  // Advances the player by one tic.
+  // Advances the player and the level by one tic; events() tells what happened.
   void tick(Player& player, const TicCommand& cmd);
+  const std::vector<Event>& events() const { return events_; }
+  // Set once the player takes an exit; the level keeps running.
+  Exit exit() const { return exit_; }
+  int secrets_found() const { return secrets_found_; }
+  int secrets_total() const { return secrets_total_; }
+  const Movers& movers() const { return movers_; }
 
   // Floor and ceiling under a circle of the player's radius at pos: the highest floor
   // and the lowest ceiling of every sector it touches.
@@ -98,29 +134,44 @@ class World {
   const level::State& state() const { return state_; }
 
  private:
-  void move(Player& p) const;
-  bool step(Player& p, Vec2 delta) const;
-  void fall(Player& p) const;
+  // Movement and collision (sim.cpp)
+  void move(Player& p);
+  bool step(Player& p, Vec2 delta);
+  void fall(Player& p);
+  bool fits_after_move(Player& p, int sector);
   std::vector<uint32_t> walls_near(const geom::BBox& box) const;
+  std::vector<int> sectors_under(Vec2 pos) const;
+
+  // Lines, things and sectors the player acts on (lines.cpp)
+  void use_lines(Player& p);
+  void use_line(Player& p, uint32_t wall);
+  void cross_lines(Player& p, Vec2 from);
+  void cross_line(Player& p, uint32_t wall, int side);
+  bool unlocked(const Player& p, Lock lock, bool door);
+  void flip_switch(uint32_t wall, bool repeat);
+  void clear_special(uint32_t wall);
+  bool teleport(Player& p, uint32_t wall);
+  void pick_up(Player& p);
+  void find_secret(Player& p);
+  void tick_buttons();
+  void say(Event::Kind kind, std::string message = {});
 
   const level::Level& level_;
   Blockmap blockmap_;
   level::State state_;
+  Movers movers_;
+  std::vector<std::vector<uint32_t>> pieces_;  // per wall: every wall of its LINEDEF (or statement)
+  std::vector<int> switch_partner_;            // per texture: its switch pair, or kNone
+  struct Button {
+    uint32_t wall;
+    int part, texture, tics;
+  };
+  std::vector<Button> buttons_;  // repeatable switches flipping back
+  std::vector<Event> events_;
+  Exit exit_ = Exit::kNone;
+  bool teleported_ = false;  // during a move
+  double player_floor_ = 0;  // the floor the player last stood on or over (Doom's floorz)
+  int secrets_found_ = 0, secrets_total_ = 0;
 };
-
-// Demos: the start state and the tic commands, in a small validated binary file.
-struct Demo {
-  uint64_t level_fingerprint = 0;  // the level's geometry, so a demo is not replayed on another
-  Vec2 start;
-  double angle = 0;
-  std::vector<TicCommand> tics;
-};
-
-// A checksum of everything the simulation depends on (walls, sides, sector heights).
-uint64_t fingerprint(const level::Level& level);
-
-std::vector<uint8_t> encode_demo(const Demo& demo);
-// Throws Error("<what>: message") for a truncated, corrupted or foreign file.
-Demo decode_demo(std::span<const uint8_t> bytes, const std::string& what);
 
 }  // namespace p3d::sim

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <string_view>
 
 namespace p3d::doom {
 
@@ -15,7 +17,44 @@ enum ThingFlags : uint32_t {
   kThingAllSkills = kThingEasy | kThingMedium | kThingHard,
 };
 
+// Thing types (editor numbers) the simulation acts on.
+enum ThingType : int {
+  kPlayerOneStart = 1,
+  kBlueCardThing = 5,
+  kYellowCardThing = 6,
+  kRedCardThing = 13,
+  kTeleportDestination = 14,
+  kRedSkullThing = 38,
+  kYellowSkullThing = 39,
+  kBlueSkullThing = 40,
+};
+
+// Sector specials (SECTORS' special field) that the simulation acts on.
+enum SectorSpecial : int {
+  kLightFlicker = 1,
+  kStrobeFast = 2,
+  kStrobeSlow = 3,
+  kStrobeHurt = 4,     // strobes (and hurts, in Doom)
+  kGlow = 8,
+  kSecretSector = 9,   // counts as found when the player stands on its floor
+  kDoorCloseIn30 = 10,
+  kStrobeSlowSync = 12,
+  kStrobeFastSync = 13,
+  kDoorRaiseIn5Min = 14,
+  kFireFlicker = 17,
+};
+
 // The skill bit of a skill 1..5 (Doom's -skill).
 constexpr uint32_t skill_bit(int skill) { return skill <= 2 ? kThingEasy : skill == 3 ? kThingMedium : kThingHard; }
+
+// The texture a switch texture flips to when the switch is used, by Doom's naming
+// (SW1xxx <-> SW2xxx: Doom's own pairs follow it, as do most PWADs'); empty if the
+// name is not a switch's.
+inline std::string switch_partner(std::string_view name) {
+  if (name.size() <= 3 || name[0] != 'S' || name[1] != 'W' || (name[2] != '1' && name[2] != '2')) return {};
+  std::string partner(name);
+  partner[2] = name[2] == '1' ? '2' : '1';
+  return partner;
+}
 
 }  // namespace p3d::doom

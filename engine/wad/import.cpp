@@ -88,17 +88,19 @@ class Importer {
     return int(src_.textures.size()) - 1;
   }
 
-  // A wall texture by name: its index, kNone for "-" or an unknown name (warned about once).
-  int wall_texture(const std::string& name, const std::string& record) {
+  // A wall texture by name: its index, kNone for "-" or an unknown name (warned about
+  // once). A switch texture brings its pair along, which the level shows once used.
+  int wall_texture(const std::string& name, const std::string& record, bool must_exist = true) {
     if (name.empty() || name == "-") return map::kNone;
     const auto it = wall_textures_.find(name);
     if (it != wall_textures_.end()) return it->second;
     std::vector<std::string> problems;
-    const auto img = art_.texture(name, problems);
+    const auto img = must_exist || art_.has_texture(name) ? art_.texture(name, problems) : std::nullopt;
     for (const std::string& p : problems) warn("broken patches", record, p);
     const int index = img ? add_texture(name, *img) : map::kNone;
-    if (!img) warn("unknown textures", record, "texture " + printable(name) + " does not exist (drawn as missing)");
+    if (!img && must_exist) warn("unknown textures", record, "texture " + printable(name) + " does not exist (drawn as missing)");
     wall_textures_[name] = index;
+    if (const std::string pair = doom::switch_partner(name); img && !pair.empty()) wall_texture(pair, record, false);
     return index;
   }
 

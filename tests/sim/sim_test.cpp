@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "engine/map/source.h"
-#include "engine/sim/sim.h"
+#include "engine/sim/demo.h"
 #include "tests/support/support.h"
 
 namespace p3d::sim {
@@ -169,7 +169,7 @@ TEST(Demo, RecordingThenReplayingGivesTheSamePlayerAtEveryTic) {
   const level::Level level = test::compile(test::random_rooms(500, 6));
   World world(level);
   Rng rng(11);
-  Demo demo{fingerprint(level), level.player_start, level.player_angle, {}};
+  Demo demo{fingerprint(level), level.player_start, level.player_angle, level::kDefaultSkill, 0, {}};
   std::vector<Player> trail;
   Player p = world.spawn();
   for (int t = 0; t < 700; ++t) {
@@ -189,7 +189,7 @@ TEST(Demo, RecordingThenReplayingGivesTheSamePlayerAtEveryTic) {
 }
 
 TEST(Demo, DamagedFilesAreRejected) {
-  Demo demo{42, {1, 2}, 90, {{50, 0, 100, 0}, {-25, 24, -640, kUse}}};
+  Demo demo{42, {1, 2}, 90, 4, kBlueSkull, {{50, 0, 100, 0}, {-25, 24, -640, kUse}}};
   const std::vector<uint8_t> good = encode_demo(demo);
   auto error = [](std::vector<uint8_t> bytes) {
     try {
@@ -208,8 +208,17 @@ TEST(Demo, DamagedFilesAreRejected) {
   EXPECT_NE(error(cut).find("x.demo:"), std::string::npos);
   std::vector<uint8_t> version = good;
   version[8] = 7;
-  EXPECT_EQ(error(version), "x.demo: demo version 7 is not supported (expected 2)");
-  EXPECT_EQ(decode_demo(good, "x.demo").tics, demo.tics);
+  EXPECT_EQ(error(version), "x.demo: demo version 7 is not supported (expected 3)");
+  const Demo back = decode_demo(good, "x.demo");
+  EXPECT_EQ(back.tics, demo.tics);
+  EXPECT_EQ(back.skill, 4);
+  EXPECT_EQ(back.keys, kBlueSkull);
+  Demo bad_skill = demo;
+  bad_skill.skill = 9;
+  EXPECT_EQ(error(encode_demo(bad_skill)), "x.demo: demo skill 9 is not 1..5");
+  Demo bad_button = demo;
+  bad_button.tics[0].buttons = 0x80;
+  EXPECT_EQ(error(encode_demo(bad_button)), "x.demo: unknown buttons in a tic");
 }
 
 TEST(Demo, FingerprintFollowsTheGeometry) {

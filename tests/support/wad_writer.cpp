@@ -1,5 +1,9 @@
 #include "tests/support/wad_writer.h"
 
+#include <algorithm>
+#include <stdexcept>
+
+#include "engine/bsp/load.h"
 #include "engine/util/bytes.h"
 #include "engine/wad/write.h"
 
@@ -44,12 +48,34 @@ int TestMap::add_room(const std::vector<Vertex>& corners, const Sector& sector, 
   const int s = int(sectors.size()) - 1;
   for (size_t i = 0; i < corners.size(); ++i) {
     const Vertex a = corners[i], b = corners[(i + 1) % corners.size()];
+    const int v1 = add_vertex(a.x, a.y), v2 = add_vertex(b.x, b.y);
+    const auto shared = std::find_if(lines.begin(), lines.end(), [&](const Line& l) { return l.v1 == v2 && l.v2 == v1; });
+    if (shared != lines.end() && shared->back == kNoSide) {  // an earlier room's wall: open it into this room
+      Side& front = sides[size_t(shared->front)];
+      front.upper = front.lower = wall;
+      front.middle = "-";
+      Side back;
+      back.upper = back.lower = wall;
+      back.sector = s;
+      shared->back = add_side(back);
+      shared->flags = kTwoSided;
+      continue;
+    }
     Side side;
     side.middle = wall;
     side.sector = s;
-    lines.push_back({add_vertex(a.x, a.y), add_vertex(b.x, b.y), 1, 0, 0, add_side(side), kNoSide});
+    lines.push_back({v1, v2, kBlocking, 0, 0, add_side(side), kNoSide});
   }
   return s;
+}
+
+TestMap::Line& TestMap::line_at(Vertex a, Vertex b) {
+  for (Line& l : lines) {
+    const Vertex p = vertices[size_t(l.v1)], q = vertices[size_t(l.v2)];
+    if ((p.x == a.x && p.y == a.y && q.x == b.x && q.y == b.y) || (p.x == b.x && p.y == b.y && q.x == a.x && q.y == a.y))
+      return l;
+  }
+  throw std::logic_error("no line between these points");
 }
 
 void TestMap::add_to(WadWriter& wad, const std::string& name) const {
@@ -180,11 +206,13 @@ void add_test_art(WadWriter& wad) {
     const char* name;
     int w, h, patch;
   };
-  const Def defs[] = {{"WALL", 64, 72, 0}, {"MESH", 32, 32, 1}, {"SKY1", 256, 128, 2}};
+  const Def defs[] = {{"WALL", 64, 72, 0}, {"MESH", 32, 32, 1}, {"SKY1", 256, 128, 2},
+                      {"SW1TEST", 64, 72, 0}, {"SW2TEST", 64, 72, 2}};
+  constexpr int kDefs = int(std::size(defs));
   ByteWriter textures;
-  textures.u32(3);
+  textures.u32(kDefs);
   const size_t table = textures.size();
-  for (int i = 0; i < 3; ++i) textures.u32(0);
+  for (int i = 0; i < kDefs; ++i) textures.u32(0);
   std::vector<uint32_t> offsets;
   for (const Def& d : defs) {
     offsets.push_back(uint32_t(textures.size()));
@@ -201,12 +229,25 @@ void add_test_art(WadWriter& wad) {
   wad.lump("TEXTURE1", tex);
 
   wad.lump("F_START");
-  for (const char* flat : {"FLOOR", "CEIL", "F_SKY1"}) {
+  for (const char* flat : {"FLOOR", "CEIL", "F_SKY1", "STEP"}) {
     std::vector<uint8_t> pixels(64 * 64);
     for (size_t p = 0; p < pixels.size(); ++p) pixels[p] = uint8_t(flat[0] == 'F' ? 20 + p % 8 : 60 + p % 8);
     wad.lump(flat, pixels);
   }
   wad.lump("F_END");
+}
+
+wad::Stack test_stack(const std::vector<std::pair<std::string, TestMap>>& maps) {
+  WadWriter w(true);
+  add_test_art(w);
+  for (const auto& [name, map] : maps) map.add_to(w, name);
+  wad::Stack stack;
+  stack.add(wad::Wad(w.bytes(), "test.wad"));
+  return stack;
+}
+
+level::Level compile_test_map(const TestMap& map, std::vector<std::string>* warnings) {
+  return bsp::build_wad_map(test_stack({{"MAP01", map}}), "MAP01", {}, warnings);
 }
 
 }  // namespace p3d::test

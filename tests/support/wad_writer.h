@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "engine/level/level.h"
 #include "engine/wad/picture.h"
+#include "engine/wad/wad.h"
 
 namespace p3d::test {
 
@@ -25,6 +27,7 @@ class WadWriter {
 // Doom's binary map records; index fields use 0xFFFF (kNoSide) for "none".
 struct TestMap {
   static constexpr int kNoSide = 0xFFFF;
+  static constexpr int kBlocking = 1, kTwoSided = 4;  // line flags
   struct Vertex { int x, y; };
   struct Line { int v1, v2, flags = 0, special = 0, tag = 0, front = 0, back = kNoSide; };
   struct Side {
@@ -46,8 +49,12 @@ struct TestMap {
   std::vector<Thing> things;
 
   // A sector bounded by one-sided walls through these points (clockwise seen from
-  // above, so the walls face in); returns its index.
+  // above, so the walls face in); returns its index. An edge on an earlier room's
+  // one-sided wall opens that wall into this room: two-sided, this room at its back,
+  // `wall` as upper and lower textures on both sides.
   int add_room(const std::vector<Vertex>& corners, const Sector& sector, const std::string& wall = "WALL");
+  // The line between two points (either way round); throws if there is none.
+  Line& line_at(Vertex a, Vertex b);
   int add_vertex(int x, int y);  // reuses an existing vertex at the same place
   int add_side(const Side& side);
 
@@ -62,8 +69,14 @@ std::vector<uint8_t> encode_picture(const wad::IndexedImage& image);
 //   WALL  64x72 (one patch), a texel's palette index is its row (so rows can be read off a frame)
 //   MESH  32x32 with transparent holes (every other column), for masked middles
 //   SKY1  256x128
-//   FLOOR and CEIL flats, F_SKY1
+//   SW1TEST and SW2TEST, a switch and its pair
+//   FLOOR, CEIL and STEP flats, F_SKY1
 // Palette index i is rgb(i, 255 - i, 128) and light map m darkens by m/32.
 void add_test_art(WadWriter& wad);
+
+// An IWAD of the test art and these maps.
+wad::Stack test_stack(const std::vector<std::pair<std::string, TestMap>>& maps);
+// The map compiled as MAP01 of such a WAD, as the tools compile WAD maps.
+level::Level compile_test_map(const TestMap& map, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace p3d::test

@@ -1,0 +1,117 @@
+// What moves by itself in a Doom level: doors, lifts, floors, ceilings, stairs and
+// crushers (Doom's sector thinkers, one per sector at a time), and flickering,
+// glowing and strobing lights. They change only the level's State, never the level.
+//
+// Doom's rules, from its p_doors.c, p_plats.c, p_floor.c, p_ceilng.c and p_lights.c:
+// a tagged action starts on every sector with the line's tag that no other mover
+// owns; a plane moves by its speed each tic and lands exactly on its destination;
+// a plane that would leave the player no room goes back where it was, and then a
+// door reverses, a lift returns, a floor or crusher waits (crushers stop at the
+// player rather than hurt: this is not a shooter). Deterministic: randomness (which
+// way a perpetual lift starts, lights) comes from a generator seeded alike for every
+// level.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <unordered_map>
+#include <vector>
+
+#include "engine/level/level.h"
+#include "engine/sim/specials.h"
+
+namespace p3d::sim {
+
+// Asked after a plane of `sector` moved: clip whatever stands in the sector to its new
+// heights (the player rides floors) and answer whether it all still fits.
+using FitsAfterMove = std::function<bool(int sector)>;
+
+class Movers {
+ public:
+  // Starts the lights and the timed doors of the level's sector specials.
+  Movers(const level::Level& level, level::State& state);
+
+  // A tagged special acting on every sector with the line's tag, as if the line
+  // `wall` triggered it (some actions read the line's front sector). True if it
+  // started or changed anything (switches flip only then).
+  bool activate(const LineSpecial& special, uint32_t wall);
+  // A manual door (D specials): the sector behind the line. A raise door used while
+  // it moves reverses (closing) or closes at once (opening or waiting).
+  bool use_door(const LineSpecial& special, uint32_t wall);
+
+  // One tic of every mover, in the order they started, then every light.
+  void tick(const FitsAfterMove& fits);
+
+  bool busy(int sector) const { return busy_[size_t(sector)] != 0; }
+  size_t active() const { return movers_.size(); }
+
+  // Neighbour queries (Doom's P_Find*Surrounding), over the sectors across the
+  // sector's two-sided walls, at the current heights.
+  double lowest_floor_around(int sector) const;    // including its own floor
+  double highest_floor_around(int sector) const;   // -500 when it has no neighbour
+  double next_higher_floor(int sector, double height) const;  // `height` when none is higher
+  double lowest_ceiling_around(int sector) const;  // its own ceiling when it has no neighbour
+  double highest_ceiling_around(int sector) const; // 0 when it has no neighbour
+  int darkest_around(int sector, int start) const;
+  int brightest_around(int sector) const;
+
+ private:
+  enum class Kind : uint8_t { kDoor, kFloor, kPlat, kCeiling };
+  enum class Status : uint8_t { kUp, kDown, kWaiting, kStopped };
+  struct Mover {
+    Kind kind;
+    Action action;       // which door, floor, plat or ceiling
+    int sector;
+    int tag = 0;
+    int direction = 0;   // +1 up, -1 down, 0 waiting (doors, ceilings), 2 waiting before opening (doors)
+    int old_direction = 0;  // a stopped crusher's
+    Status status = Status::kUp, old_status = Status::kUp;  // plats
+    double speed = 0, base_speed = 0;
+    double low = 0, high = 0;  // destinations: floor (low) and ceiling or plat top (high)
+    int wait = 0, count = 0;
+    bool crush = false, blaze = false;
+    int change_texture = level::kNone, change_special = -1;  // applied on arrival when set
+    bool finished = false;
+  };
+  struct Light {
+    enum class Kind : uint8_t { kFlash, kStrobe, kGlow, kFlicker } kind;
+    int sector;
+    int low, high;
+    int low_time = 0, high_time = 0, count = 0, direction = -1;
+  };
+  enum class Plane : uint8_t { kFloor, kCeiling };
+  enum class Moved : uint8_t { kOk, kBlocked, kArrived };
+
+  Moved move_plane(Mover& m, Plane plane, double dest, int direction, const FitsAfterMove& fits);
+  void tick_door(Mover& m, const FitsAfterMove& fits);
+  void tick_floor(Mover& m, const FitsAfterMove& fits);
+  void tick_plat(Mover& m, const FitsAfterMove& fits);
+  void tick_ceiling(Mover& m, const FitsAfterMove& fits);
+  void tick_light(Light& l);
+
+  Mover& add(Kind kind, Action action, int sector, double speed);
+  bool start_door(const LineSpecial& s, int sector);
+  bool start_floor(const LineSpecial& s, int sector, uint32_t wall);
+  bool start_plat(const LineSpecial& s, int sector, uint32_t wall);
+  bool start_ceiling(const LineSpecial& s, int sector);
+  bool build_stairs(const LineSpecial& s, int sector);
+  bool start_donut(const LineSpecial& s, int sector);
+  bool change_light(const LineSpecial& s, int sector);
+  void start_lights_and_timers();
+  void add_strobe(int sector, int dark_time, bool in_sync);
+
+  int other_side(uint32_t wall, int sector) const;
+  int next_random();  // 0..255
+
+  const level::Level& level_;
+  level::State& state_;
+  std::vector<Mover> movers_;
+  std::vector<Light> lights_;
+  std::vector<uint8_t> busy_;
+  std::vector<std::vector<uint32_t>> sector_walls_;  // two-sided walls touching each sector, in wall order
+  std::unordered_map<int, std::vector<int>> tagged_;  // sectors by tag, in sector order
+  const std::vector<int>& tagged(int tag) const;
+  uint32_t random_ = 0x2545F491;
+};
+
+}  // namespace p3d::sim
