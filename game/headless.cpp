@@ -8,35 +8,52 @@
 
 namespace p3d::game {
 
-int replay_headless(Session& session, const sim::Demo& demo, const HeadlessOptions& o) {
+const char* exit_name(sim::Exit exit) {
+  switch (exit) {
+    case sim::Exit::kNormal: return "normal";
+    case sim::Exit::kSecret: return "secret";
+    case sim::Exit::kNone: break;
+  }
+  return "none";
+}
+
+HeadlessResult replay_headless(Session& session, const sim::Demo& demo, const HeadlessOptions& o) {
   if (demo.level_fingerprint != sim::fingerprint(session.level()))
     throw Error("the demo was recorded on a different level than " + session.name());
   std::filesystem::create_directories(o.out_dir);
   session.spawn(demo.start, demo.angle);
+  session.set_keys(demo.keys);
   render::Frame frame(o.width, o.height);
   std::string csv = "frame,tic,x,y,z,angle,renderer,nodes_visited,subtrees_culled,fragments_drawn,columns_closed,"
-                    "pixels_written,early_exit\n";
-  int frames = 0;
+                    "pixels_written,early_exit,sprites_drawn,keys,secrets,exit\n";
+  HeadlessResult result;
   for (size_t tic = 0;; ++tic) {
-    if (tic % size_t(o.capture_every) == 0) {
+    const bool last = tic == demo.tics.size() || session.exited() != sim::Exit::kNone;
+    if (tic % size_t(o.capture_every) == 0 || last) {
       const render::RenderStats& s = session.render(frame, 1.0);
       char name[32];
-      std::snprintf(name, sizeof name, "frame%05d.png", frames);
+      std::snprintf(name, sizeof name, "frame%05d.png", result.frames);
       image::save_png(frame, o.out_dir / name);
       const sim::Player& p = session.player();
-      char line[320];
-      std::snprintf(line, sizeof line, "%d,%zu,%.6f,%.6f,%.6f,%.6f,%s,%llu,%llu,%llu,%llu,%llu,%d\n", frames, tic, p.pos.x,
-                    p.pos.y, p.z, p.angle, session.renderer_name().c_str(), (unsigned long long)s.nodes_visited,
-                    (unsigned long long)s.subtrees_culled, (unsigned long long)s.fragments_drawn,
-                    (unsigned long long)s.columns_closed, (unsigned long long)s.pixels_written, int(s.early_exit));
+      char line[400];
+      std::snprintf(line, sizeof line, "%d,%zu,%.6f,%.6f,%.6f,%.6f,%s,%llu,%llu,%llu,%llu,%llu,%d,%llu,%d,%d,%s\n",
+                    result.frames, tic, p.pos.x, p.pos.y, p.z, p.angle, session.renderer_name().c_str(),
+                    (unsigned long long)s.nodes_visited, (unsigned long long)s.subtrees_culled,
+                    (unsigned long long)s.fragments_drawn, (unsigned long long)s.columns_closed,
+                    (unsigned long long)s.pixels_written, int(s.early_exit), (unsigned long long)s.sprites_drawn,
+                    int(p.keys), session.world().secrets_found(), exit_name(session.exited()));
       csv += line;
-      ++frames;
+      ++result.frames;
     }
-    if (tic == demo.tics.size()) break;
+    if (last) {
+      result.tics = tic;
+      break;
+    }
     session.tic(demo.tics[tic]);
   }
+  result.exit = session.exited();
   write_file_atomically(o.out_dir / "stats.csv", csv);
-  return frames;
+  return result;
 }
 
 }  // namespace p3d::game

@@ -16,7 +16,18 @@ struct HeadlessOptions {
   int width = 640, height = 400;
 };
 
-// Throws Error if the demo was recorded on another level. Returns the frames written.
-int replay_headless(Session& session, const sim::Demo& demo, const HeadlessOptions& options);
+struct HeadlessResult {
+  int frames = 0;     // PNG files written
+  size_t tics = 0;    // tics replayed: all of them, or up to the exit
+  sim::Exit exit = sim::Exit::kNone;
+};
+
+// Replays from the demo's start (its skill is the session's, its keys given); stops
+// at the level's exit, whose tic gets a last frame. Throws Error if the demo was
+// recorded on another level.
+HeadlessResult replay_headless(Session& session, const sim::Demo& demo, const HeadlessOptions& options);
+
+// "normal", "secret" or "none".
+const char* exit_name(sim::Exit exit);
 
 }  // namespace p3d::game

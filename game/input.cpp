@@ -19,8 +19,19 @@ sim::TicCommand make_command(const Controls& c, int turn_held_tics, const InputS
   cmd.side = int8_t(std::clamp(strafe, -1, 1) * side);
   const double mouse = -c.mouse_dx * settings.mouse_sensitivity;
   cmd.turn = int16_t(std::clamp(turning * turn + std::lround(mouse), -32767L, 32767L));
-  cmd.buttons = c.use ? sim::kUse : 0;
+  cmd.buttons = uint8_t((c.use ? sim::kUse : 0) | (c.noclip ? sim::kNoclip : 0));
   return cmd;
+}
+
+bool Cheats::noclip(char letter) {
+  typed_ += letter;
+  if (typed_.size() > 16) typed_.erase(0, typed_.size() - 16);
+  auto ends_with = [&](std::string_view s) { return typed_.size() >= s.size() && typed_.ends_with(s); };
+  if (ends_with("idclip") || ends_with("idspispopd")) {
+    typed_.clear();
+    return true;
+  }
+  return false;
 }
 
 }  // namespace p3d::game

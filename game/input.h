@@ -2,6 +2,8 @@
 // here: the platform fills Controls, the simulation receives TicCommands.
 #pragma once
 
+#include <string>
+
 #include "engine/sim/sim.h"
 
 namespace p3d::game {
@@ -11,6 +13,7 @@ struct Controls {
   bool turn_left = false, turn_right = false;   // Left / Right
   bool strafe_left = false, strafe_right = false;  // A / D
   bool use = false;                             // Space, E
+  bool noclip = false;                          // the idclip cheat was just typed
   bool strafe_modifier = false;                 // Alt: the turn keys strafe instead
   bool run = false;                             // Shift
   int mouse_dx = 0;                             // pixels moved right since the last tic
@@ -18,6 +21,16 @@ struct Controls {
 
 struct InputSettings {
   double mouse_sensitivity = 24;  // turn units (1/65536 of a turn) per pixel
+};
+
+// Doom's typed cheats: letters typed in sequence, whatever keys they also are.
+class Cheats {
+ public:
+  // Feeds one typed letter; true when it completes idclip (or Doom 1's idspispopd).
+  bool noclip(char letter);
+
+ private:
+  std::string typed_;
 };
 
 // Doom's speeds: forward 25 (walk) / 50 (run), sideways 24 / 40; keyboard turns

@@ -14,16 +14,16 @@ using namespace p3d;
 
 namespace {
 
-std::vector<geom::Vec2> waypoints(const std::string& path) {
-  std::vector<geom::Vec2> points;
-  for (const auto& c : render::read_camera_list(path)) points.push_back(c.pos);
-  return points;
+std::vector<game::Waypoint> route(const std::string& path) {
+  return game::route_from_cameras(render::read_camera_list(path));
 }
 
-// Walks the waypoints with no window at all; returns the tics recorded.
-size_t autopilot_headless(game::Session& session, const std::vector<geom::Vec2>& points, uint64_t max_tics) {
-  game::Autopilot pilot(points);
-  while (!pilot.done() && (!max_tics || session.tics() < max_tics)) session.tic(pilot.next(session.player()));
+// Walks the waypoints with no window at all, until the last or the level's exit;
+// returns the tics recorded.
+size_t autopilot_headless(game::Session& session, const std::vector<game::Waypoint>& route, uint64_t max_tics) {
+  game::Autopilot pilot(route);
+  while (!pilot.done() && session.exited() == sim::Exit::kNone && (!max_tics || session.tics() < max_tics))
+    session.tic(pilot.next(session.player()));
   return session.recording().tics.size();
 }
 
@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
   cli::LevelArgs level_args;
   std::vector<int> warp;
   std::string record, play, out_dir, resolution, window = "960x600", renderer = "bsp", autopilot;
-  bool headless = false, fullscreen = false, no_vsync = false, map_reload = false, timedemo = false;
+  bool headless = false, fullscreen = false, no_vsync = false, map_reload = false, timedemo = false, all_keys = false;
   int capture_every = 35;
   uint64_t quit_after = 0;
   int skill = level::kDefaultSkill;
@@ -72,13 +72,16 @@ int main(int argc, char** argv) {
   app.add_option("--renderer", renderer, "bsp, painter, dda, sphere, sphere-naive or reference")->capture_default_str();
   app.add_option("--fov", fov, "horizontal field of view")->check(CLI::Range(30.0, 160.0))->capture_default_str();
   app.add_flag("--map-reload", map_reload, "recompile and reload the level when its source or WAD changes on disk");
-  app.add_option("--autopilot", autopilot, "walk through these waypoints (a camera list) instead of reading input")
+  app.add_option("--autopilot", autopilot,
+                 "walk through these waypoints (a camera list; a camera named 'use' presses use there, 'wait' waits) "
+                 "instead of reading input")
       ->check(CLI::ExistingFile);
   app.add_option("--sensitivity", sensitivity, "mouse turn per pixel, in 1/65536 of a turn")
       ->check(CLI::Range(0.0, 10000.0))
       ->capture_default_str();
   app.add_option("--quit-after-tics", quit_after, "quit after this many tics (0: never)")->capture_default_str();
   cli::add_skill_option(app, skill);
+  app.add_flag("--all-keys", all_keys, "start every map with every key (recorded in demos)");
 
   return cli::run(app, argc, argv, [&] {
     if (!play.empty() && !autopilot.empty()) throw CLI::ValidationError("--play", "use either --play or --autopilot");
@@ -98,28 +101,32 @@ int main(int argc, char** argv) {
     if (!resolution.empty()) cli::parse_size(resolution, rw, rh);
     cli::parse_size(window, ww, wh);
 
-    game::Session session(source, skill);
-    session.fov = fov;
-    const std::string& map_path = session.name();
-    if (!session.select_renderer(renderer)) throw Error("renderer '" + renderer + "' cannot draw " + map_path);
     std::optional<sim::Demo> demo;
     if (!play.empty()) {
       demo = sim::decode_demo(read_file_bytes(play), play);
-      if (demo->level_fingerprint != sim::fingerprint(session.level()))
-        throw Error(play + ": the demo was recorded on a different level than " + map_path);
+      skill = demo->skill;  // the demo's things, as recorded
     }
+    game::Session session(source, skill);
+    session.fov = fov;
+    session.give_all_keys(all_keys);
+    const std::string& map_path = session.name();
+    if (!session.select_renderer(renderer)) throw Error("renderer '" + renderer + "' cannot draw " + map_path);
+    if (demo && demo->level_fingerprint != sim::fingerprint(session.level()))
+      throw Error(play + ": the demo was recorded on a different level than " + map_path);
 
     if (headless) {
       if (demo) {
         game::HeadlessOptions o{capture_every, out_dir, rw ? rw : 640, rh ? rh : 400};
-        const int frames = game::replay_headless(session, *demo, o);
-        std::printf("replayed %zu tics, wrote %d frames and stats.csv to %s\n", demo->tics.size(), frames, out_dir.c_str());
+        const game::HeadlessResult r = game::replay_headless(session, *demo, o);
+        std::printf("replayed %zu of %zu tics (exit: %s), wrote %d frames and stats.csv to %s\n", r.tics,
+                    demo->tics.size(), game::exit_name(r.exit), r.frames, out_dir.c_str());
         return 0;
       }
       session.start_recording();
-      const size_t tics = autopilot_headless(session, waypoints(autopilot), quit_after);
+      const size_t tics = autopilot_headless(session, route(autopilot), quit_after);
       if (!record.empty()) write_file_atomically(record, sim::encode_demo(session.recording()));
-      std::printf("autopilot walked %zu tics%s\n", tics, record.empty() ? "" : (", recorded to " + record).c_str());
+      std::printf("autopilot walked %zu tics (exit: %s)%s\n", tics, game::exit_name(session.exited()),
+                  record.empty() ? "" : (", recorded to " + record).c_str());
       return 0;
     }
 
@@ -132,7 +139,7 @@ int main(int argc, char** argv) {
     o.play = demo;
     o.timedemo = timedemo;
     if (timedemo) o.vsync = false;
-    if (!autopilot.empty()) o.autopilot = waypoints(autopilot);
+    if (!autopilot.empty()) o.autopilot = route(autopilot);
     o.input.mouse_sensitivity = sensitivity;
     o.quit_after_tics = quit_after;
     return game::run_window(session, o);

@@ -158,6 +158,7 @@ class Window {
   }
 
   void key(SDL_Keycode k) {
+    if (k >= SDLK_a && k <= SDLK_z && cheats_.noclip(char(k))) noclip_typed_ = true;
     if (k == SDLK_ESCAPE) SDL_SetRelativeMouseMode(SDL_GetRelativeMouseMode() ? SDL_FALSE : SDL_TRUE);
     if (k == SDLK_F1) session_.show_help = !session_.show_help;
     if (k == SDLK_F2) session_.show_hud = !session_.show_hud;
@@ -194,12 +195,18 @@ class Window {
       cmd = autopilot_->next(session_.player());
       if (autopilot_->done()) running_ = false;
     } else {
-      const Controls c = read_controls(mouse_dx_);
+      Controls c = read_controls(mouse_dx_);
+      c.noclip = noclip_typed_;
+      noclip_typed_ = false;
       mouse_dx_ = 0;
       turn_held_ = c.turn_left || c.turn_right ? turn_held_ + 1 : 0;
       cmd = make_command(c, turn_held_, o_.input);
     }
     session_.tic(cmd);
+    if (session_.exited() != sim::Exit::kNone) {
+      if (o_.play || autopilot_) running_ = false;  // a demo or a route holds one level
+      else session_.enter_next_map();
+    }
     if (o_.quit_after_tics && session_.tics() >= o_.quit_after_tics) running_ = false;
   }
 
@@ -231,6 +238,8 @@ class Window {
   double summed_start_ = now_seconds();
   bool running_ = true;
   int mouse_dx_ = 0, turn_held_ = 0;
+  Cheats cheats_;
+  bool noclip_typed_ = false;
   size_t played_ = 0;
   std::optional<Autopilot> autopilot_;
   std::filesystem::file_time_type mtime_;

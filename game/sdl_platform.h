@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "game/input.h"
+#include "game/autopilot.h"
 #include "game/session.h"
 
 namespace p3d::game {
@@ -20,7 +21,7 @@ struct WindowOptions {
   std::filesystem::path record;             // write the tics played to this demo on exit
   std::optional<sim::Demo> play;            // replay this demo, then quit
   bool timedemo = false;                    // replay one tic per frame, as fast as possible (Doom's -timedemo)
-  std::optional<std::vector<geom::Vec2>> autopilot;  // walk these waypoints, then quit
+  std::optional<std::vector<Waypoint>> autopilot;  // walk these waypoints, then quit
   InputSettings input;
   uint64_t quit_after_tics = 0;             // 0: play until the window closes
 };

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "engine/bsp/load.h"
+#include "engine/util/doom.h"
 
 namespace p3d::game {
 
@@ -37,15 +38,42 @@ std::vector<std::filesystem::path> Session::files() const {
 
 void Session::spawn(geom::Vec2 pos, double angle) {
   player_ = previous_ = world_->spawn_at(pos, angle);
+  player_.keys = previous_.keys = all_keys_ ? sim::kAllKeys : 0;
   tics_ = 0;
 }
 
 void Session::tic(const sim::TicCommand& cmd) {
+  if (world_->exit() != sim::Exit::kNone) return;  // the level is over: waiting for the next one
   previous_ = player_;
   world_->tick(player_, cmd);
   ++tics_;
   if (recording_on_) recording_.tics.push_back(cmd);
   advance_message();
+  for (const sim::Event& e : world_->events())
+    if (!e.message.empty()) say(e.message);
+  if (world_->exit() != sim::Exit::kNone) {
+    recording_on_ = false;  // a demo holds one level: it ends at its exit
+    say(world_->exit() == sim::Exit::kSecret ? "secret exit" : "exit");
+  }
+}
+
+bool Session::enter_next_map() {
+  std::string next, why;
+  if (source_.is_wad()) {
+    const wad::Stack wads = bsp::read_wads(source_.wads);
+    const std::string current = bsp::resolve_map_name(wads, source_.map);
+    next = doom::next_map(current, world_->exit() == sim::Exit::kSecret,
+                          [&](const std::string& name) { return wads.map(name).has_value(); });
+    if (next.empty()) why = "no map after " + current;
+  } else {
+    why = "a hand-made level has no next map";
+  }
+  if (!next.empty()) source_.map = next;
+  load();
+  spawn(level_->player_start, level_->player_angle);
+  if (!select_renderer(renderer_name_)) select_renderer("bsp");
+  say(next.empty() ? why + ": starting it again" : "entered " + next);
+  return !next.empty();
 }
 
 render::Camera Session::camera(double alpha) const {

@@ -37,7 +37,19 @@ class Session {
 
   // ---- simulation
   void spawn(geom::Vec2 pos, double angle);
+  // One tic; what happened shows as messages. After an exit, exited() tells which.
   void tic(const sim::TicCommand& cmd);
+  sim::Exit exited() const { return world_->exit(); }
+  // Loads the map the exit leads to in Doom's order, the player at its start with no
+  // keys. When there is none (a hand-made level, the end of an episode or game, a map
+  // missing from the WADs), starts this level again and returns false.
+  bool enter_next_map();
+  // Every key at every start (--all-keys).
+  void give_all_keys(bool all) {
+    all_keys_ = all;
+    set_keys(all ? sim::kAllKeys : 0);
+  }
+  void set_keys(uint8_t keys) { player_.keys = previous_.keys = keys; }
   const sim::Player& player() const { return player_; }
   uint64_t tics() const { return tics_; }
   // The camera between the previous tic (alpha 0) and this one (alpha 1).
@@ -70,6 +82,7 @@ class Session {
   bsp::LevelSource source_;
   std::string name_;
   int skill_;
+  bool all_keys_ = false;
   std::unique_ptr<level::Level> level_;
   std::unique_ptr<sim::World> world_;
   sim::Player player_, previous_;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -56,5 +57,12 @@ inline std::string switch_partner(std::string_view name) {
   partner[2] = name[2] == '1' ? '2' : '1';
   return partner;
 }
+
+// The map an exit leads to, in Doom's order (ExMy: M8 ends the episode, a secret
+// exit goes to M9, M9 returns where its episode's secret exit left; MAPxx: MAP15's
+// secret exit goes to MAP31, MAP31's to MAP32, both return to MAP16, MAP30 ends the
+// game, other secret exits are normal ones). Empty when the game or episode ends,
+// the name is not Doom's, or `exists` says the map is not there.
+std::string next_map(std::string_view map, bool secret, const std::function<bool(const std::string&)>& exists);
 
 }  // namespace p3d::doom

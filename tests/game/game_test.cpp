@@ -149,7 +149,7 @@ TEST(Headless, ReplayIsByteForByteReproducible) {
   const auto dir = test::temp_dir("headless");
   Session recorder(test::source_dir() / "maps/outpost.map");
   recorder.start_recording();
-  Autopilot pilot({{300, 110}, {440, 192}, {700, 192}});
+  Autopilot pilot({{{300, 110}}, {{440, 192}}, {{700, 192}}});
   for (int t = 0; t < 150 && !pilot.done(); ++t) recorder.tic(pilot.next(recorder.player()));
   const sim::Demo demo = sim::decode_demo(sim::encode_demo(recorder.recording()), "d");
   EXPECT_GT(demo.tics.size(), 60u);
@@ -157,8 +157,10 @@ TEST(Headless, ReplayIsByteForByteReproducible) {
 
   for (const char* run : {"a", "b"}) {
     Session s(test::source_dir() / "maps/outpost.map");
-    const int frames = replay_headless(s, demo, {20, dir / run, 96, 60});
-    EXPECT_EQ(frames, int(demo.tics.size() / 20 + 1));
+    const HeadlessResult r = replay_headless(s, demo, {20, dir / run, 96, 60});
+    EXPECT_EQ(r.frames, int(demo.tics.size() / 20 + 1 + (demo.tics.size() % 20 != 0))) << "and one at the last tic";
+    EXPECT_EQ(r.tics, demo.tics.size());
+    EXPECT_EQ(r.exit, sim::Exit::kNone);
     EXPECT_EQ(s.player().pos, recorder.player().pos) << "replay ends where the recording did";
   }
   for (const auto& entry : std::filesystem::directory_iterator(dir / "a"))
@@ -166,11 +168,86 @@ TEST(Headless, ReplayIsByteForByteReproducible) {
   const std::string csv = read_file_text(dir / "a/stats.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "frame,tic,x,y,z,angle,renderer,nodes_visited,subtrees_culled,fragments_drawn,columns_closed,pixels_written,"
-            "early_exit");
+            "early_exit,sprites_drawn,keys,secrets,exit");
 
   Session other(test::source_dir() / "maps/soup.map");
   EXPECT_THROW(replay_headless(other, demo, {20, dir / "c", 96, 60}), Error);
   std::filesystem::remove_all(dir);
+}
+
+// MAP01: a room whose east wall is an exit switch; MAP02: a plain room.
+void two_map_wad(const std::filesystem::path& dir) {
+  test::TestMap one, two;
+  one.add_room({{0, 0}, {0, 256}, {256, 256}, {256, 0}}, {});
+  one.line_at({256, 256}, {256, 0}).special = 11;
+  one.things.push_back({200, 128, 0, 1});
+  two.add_room({{1000, 0}, {1000, 512}, {1512, 512}, {1512, 0}}, {});
+  two.things.push_back({1100, 100, 90, 1});
+  test::WadWriter w(true);
+  test::add_test_art(w);
+  one.add_to(w, "MAP01");
+  two.add_to(w, "MAP02");
+  write_file_atomically(dir / "two.wad", w.bytes());
+
+}
+
+TEST(Session, AnExitLoadsTheNextMapInDoomsOrder) {
+  const auto dir = test::temp_dir("exit");
+  two_map_wad(dir);
+  Session s(bsp::LevelSource{{}, {dir / "two.wad"}, ""});
+  s.give_all_keys(true);
+  s.start_recording();
+  s.tic({});
+  s.tic({0, 0, 0, sim::kUse});
+  EXPECT_EQ(s.exited(), sim::Exit::kNormal);
+  EXPECT_EQ(s.recording().tics.size(), 2u) << "the demo ends at the exit";
+  const sim::Player before = s.player();
+  s.tic({50, 0, 0, 0});
+  EXPECT_EQ(s.player().pos, before.pos) << "nothing moves once the level is over";
+  EXPECT_TRUE(s.enter_next_map());
+  EXPECT_EQ(s.name(), "two.wad:MAP02");
+  EXPECT_EQ(s.player().pos, geom::Vec2(1100, 100));
+  EXPECT_EQ(s.player().keys, sim::kAllKeys) << "--all-keys holds on every map";
+  EXPECT_EQ(s.exited(), sim::Exit::kNone);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Session, TheLastMapStartsAgain) {
+  Session s(test::source_dir() / "maps/outpost.map");
+  EXPECT_FALSE(s.enter_next_map()) << "a hand-made level has no next map";
+  EXPECT_EQ(s.player().pos, s.level().player_start);
+}
+
+TEST(Autopilot, UseWaypointsOpenDoors) {
+  const auto dir = test::temp_dir("route");
+  test::TestMap m;
+  m.add_room({{0, 0}, {0, 256}, {256, 256}, {256, 160}, {256, 96}, {256, 0}}, {0, 128});
+  m.add_room({{256, 96}, {256, 160}, {288, 160}, {288, 96}}, {0, 0});
+  m.add_room({{288, 0}, {288, 96}, {288, 160}, {288, 256}, {544, 256}, {544, 0}}, {0, 128});
+  m.line_at({256, 160}, {256, 96}).special = 1;
+  m.things.push_back({64, 200, 0, 1});
+  test::WadWriter w(true);
+  test::add_test_art(w);
+  m.add_to(w, "MAP01");
+  write_file_atomically(dir / "door.wad", w.bytes());
+  Session s(bsp::LevelSource{{}, {dir / "door.wad"}, ""});
+  Autopilot pilot(route_from_cameras(render::parse_camera_list("use 220 128 0\nthrough 400 128 0\n", "route")));
+  for (int t = 0; t < 600 && !pilot.done(); ++t) s.tic(pilot.next(s.player()));
+  EXPECT_TRUE(pilot.done());
+  EXPECT_GT(s.player().pos.x, 380) << "through the door the route opened";
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Input, TypingIdclipTogglesNoclip) {
+  Cheats cheats;
+  std::string typed = "xxidcli";
+  for (char c : typed) EXPECT_FALSE(cheats.noclip(c));
+  EXPECT_TRUE(cheats.noclip('p'));
+  for (char c : std::string("idspispop")) EXPECT_FALSE(cheats.noclip(c));
+  EXPECT_TRUE(cheats.noclip('d'));
+  Controls c;
+  c.noclip = true;
+  EXPECT_EQ(make_command(c, 0).buttons, sim::kNoclip);
 }
 
 }  // namespace

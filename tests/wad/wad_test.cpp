@@ -2,6 +2,7 @@
 // lump lookup with later WADs overriding, Doom's post format, composite textures.
 #include <gtest/gtest.h>
 
+#include "engine/util/doom.h"
 #include "engine/util/error.h"
 #include "engine/image/image.h"
 #include "engine/wad/art.h"
@@ -167,3 +168,30 @@ TEST(Art, MissingArtIsAClearError) {
 
 }  // namespace
 }  // namespace p3d::wad
+
+namespace p3d::doom {
+namespace {
+
+TEST(MapOrder, NextMapFollowsDoomsOrder) {
+  const auto all = [](const std::string&) { return true; };
+  EXPECT_EQ(next_map("E1M1", false, all), "E1M2");
+  EXPECT_EQ(next_map("e1m3", true, all), "E1M9") << "a secret exit goes to M9";
+  EXPECT_EQ(next_map("E1M9", false, all), "E1M4");
+  EXPECT_EQ(next_map("E2M9", false, all), "E2M6");
+  EXPECT_EQ(next_map("E3M9", false, all), "E3M7");
+  EXPECT_EQ(next_map("E4M9", false, all), "E4M3");
+  EXPECT_EQ(next_map("E1M8", false, all), "") << "the episode ends";
+  EXPECT_EQ(next_map("MAP01", false, all), "MAP02");
+  EXPECT_EQ(next_map("MAP01", true, all), "MAP02") << "Doom II's other secret exits are normal ones";
+  EXPECT_EQ(next_map("MAP15", true, all), "MAP31");
+  EXPECT_EQ(next_map("MAP31", true, all), "MAP32");
+  EXPECT_EQ(next_map("MAP31", false, all), "MAP16");
+  EXPECT_EQ(next_map("MAP32", false, all), "MAP16");
+  EXPECT_EQ(next_map("MAP30", false, all), "") << "the game ends";
+  EXPECT_EQ(next_map("MAP15", true, [](const std::string& n) { return n != "MAP31"; }), "MAP16");
+  EXPECT_EQ(next_map("MAP07", false, [](const std::string& n) { return n != "MAP08"; }), "") << "a missing map";
+  EXPECT_EQ(next_map("START", false, all), "") << "not one of Doom's names";
+}
+
+}  // namespace
+}  // namespace p3d::doom
