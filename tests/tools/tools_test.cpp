@@ -244,7 +244,8 @@ TEST_F(Tools, HeadlessReplayWritesTheSameFramesEveryTime) {
     EXPECT_EQ(read_file_bytes(entry.path()), read_file_bytes(out("b") + "/" + entry.path().filename().string()));
     ++files;
   }
-  EXPECT_EQ(files, 5 + 1) << "frames at tics 0, 150, 300, 450, 600 and stats.csv";
+  EXPECT_EQ(files, 6 + 1) << "frames at tics 0, 150, 300, 450, 600, the last (661) and stats.csv";
+  EXPECT_NE(o.find("replayed 661 of 661 tics (exit: none)"), std::string::npos) << o;
 
   std::vector<uint8_t> demo = read_file_bytes(test::source_dir() / "maps/outpost.demo");
   demo[demo.size() / 2] ^= 1;
