@@ -132,6 +132,14 @@ bool World::unlocked(const Player& p, Lock lock, bool door) {
   return false;
 }
 
+bool World::trigger(uint32_t wall) {
+  const LineSpecial* s = line_special(state_.specials[wall]);
+  if (!s) return false;
+  if (s->trigger == Trigger::kManual) return movers_.use_door(*s, wall);
+  if (s->action == Action::kTeleport || s->action == Action::kExit || s->action == Action::kSecretExit) return false;
+  return movers_.activate(*s, wall);
+}
+
 // ---- switches ------------------------------------------------------------------
 
 void World::clear_special(uint32_t wall) {

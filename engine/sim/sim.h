@@ -118,6 +118,10 @@ class World {
   int secrets_found() const { return secrets_found_; }
   int secrets_total() const { return secrets_total_; }
   const Movers& movers() const { return movers_; }
+  // Starts what a line's special does to sectors, as if its trigger fired, with no
+  // lock, player or side involved (tests and tools set levels moving so). True if
+  // anything started; teleporters, exits and unknown specials do nothing.
+  bool trigger(uint32_t wall);
 
   // Floor and ceiling under a circle of the player's radius at pos: the highest floor
   // and the lowest ceiling of every sector it touches.

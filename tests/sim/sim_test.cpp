@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "engine/bsp/load.h"
 #include "engine/map/source.h"
 #include "engine/sim/demo.h"
 #include "tests/support/support.h"
@@ -106,6 +107,65 @@ TEST(Collision, RandomWalksNeverPassWallsOrClimbTooHigh) {
     }
   }
   EXPECT_GE(walks, 1000u);
+}
+
+// Freedoom maps with every door, lift, floor and crusher set moving at the start, and
+// random walks that press use: the player never passes a wall, never lands in the
+// void, never has a ceiling in its head, and climbs more than a step only riding a
+// floor that rose. The sanitizer build walks a sample.
+TEST(Collision, FreedoomWalksWithSectorsMoving) {
+  struct Stats {
+    size_t tics = 0, moving = 0, rode = 0, teleports = 0;
+  } stats;
+  int maps = 0;
+  for (const auto& [iwad, names] : {std::pair{"freedoom1.wad", std::vector<std::string>{"E1M1", "E1M5", "E2M2", "E3M3", "E4M4"}},
+                                    std::pair{"freedoom2.wad", std::vector<std::string>{"MAP01", "MAP05", "MAP09", "MAP13",
+                                                                                        "MAP18", "MAP22", "MAP27", "MAP31"}}}) {
+    const wad::Stack wads = bsp::read_wads({test::freedoom_path(iwad)});
+    for (size_t k = 0; k < names.size(); ++k) {
+#ifdef P3D_SANITIZE
+      if (k % 3 != 0) continue;
+#endif
+      const std::string what = std::string(iwad) + ":" + names[k];
+      const level::Level level = bsp::build_wad_map(wads, names[k], {}, nullptr);
+      World world(level);
+      int started = 0;
+      Rng rng(std::hash<std::string>()(what));
+      Player p = world.spawn();
+      for (int t = 0; t < 3000; ++t) {
+        if (t % 400 == 0)  // everything again, as the doors have closed
+          for (uint32_t w = 0; w < level.walls.size(); ++w) started += world.trigger(w);
+        TicCommand cmd = random_command(rng);
+        if (rng.below(10) == 0) cmd.buttons = kUse;
+        const Player before = p;
+        const double floor_then = world.heights_at(before.pos).floor;
+        world.tick(p, cmd);
+        ++stats.tics;
+        stats.moving += world.movers().active() > 0;
+        bool teleported = false;
+        for (const Event& e : world.events()) teleported = teleported || e.kind == Event::Kind::kTeleport;
+        stats.teleports += teleported;
+        const World::Heights h = world.heights_at(p.pos);
+        if (!teleported && p.z > before.z + kMaxStep) {  // only a floor rising under the player lifts it more
+          ++stats.rode;
+          const double lift = world.heights_at(before.pos).floor - floor_then;
+          ASSERT_LE(p.z - before.z, kMaxStep + lift) << what << " tic " << t << ": climbed too high";
+        }
+        ASSERT_NE(level.sector_at(p.pos), level::kNone) << what << " tic " << t << ": in the void";
+        ASSERT_GE(h.ceiling - p.z, kPlayerHeight - 1e-9) << what << " tic " << t << ": head in the ceiling";
+        if (teleported) continue;
+        for (const level::Wall& wall : level.walls)
+          if (!wall.two_sided())
+            ASSERT_FALSE(path_crosses(before.pos, p.pos, wall.a, wall.b))
+                << what << " tic " << t << ": through the wall at (" << wall.a.x << "," << wall.a.y << ")";
+      }
+      EXPECT_GT(started, 0) << what;
+      ++maps;
+    }
+  }
+  std::printf("[ stats    ] %d maps, %zu tics, %zu with sectors moving, %zu climbs riding a floor, %zu teleports\n", maps,
+              stats.tics, stats.moving, stats.rode, stats.teleports);
+  EXPECT_GT(stats.moving, stats.tics / 2);
 }
 
 TEST(Collision, HighSpeedIntoAWallStops) {

@@ -326,6 +326,30 @@ TEST_F(Tools, GameWarpsToAWadMap) {
   EXPECT_EQ(run_in_source(game + " maps/outpost.map --warp 2", o), 2);
   EXPECT_NE(o.find("--warp: picks a map in WADs: use it with --iwad"), std::string::npos) << o;
 }
+
+// The bundled demo walks freedoom2's MAP01 through its doors to the exit switch:
+// replayed headless twice, it reports the exit and writes the same files.
+TEST_F(Tools, BundledFreedoomDemoReachesTheExit) {
+  const std::string iwad = test::freedoom_path("freedoom2.wad").string();
+  std::string o;
+  for (const char* run : {"a", "b"}) {
+    ASSERT_EQ(run_in_source(std::string(P3D_GAME) + " --iwad " + iwad + " --map MAP01 --play maps/freedoom2_map01.demo " +
+                                "--headless --capture-every 100 --resolution 160x100 --out " + out(run), o), 0) << o;
+    EXPECT_NE(o.find("(exit: normal)"), std::string::npos) << o;
+  }
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(out("a"))) {
+    EXPECT_EQ(read_file_bytes(entry.path()), read_file_bytes(out("b") + "/" + entry.path().filename().string()));
+    ++files;
+  }
+  EXPECT_GT(files, 5);
+  const std::string csv = read_file_text(out("a") + "/stats.csv");
+  EXPECT_NE(csv.rfind(",normal\n"), std::string::npos) << "the last row reports the exit";
+  // The route records the same demo again, byte for byte.
+  ASSERT_EQ(run_in_source(std::string(P3D_GAME) + " --iwad " + iwad + " --map MAP01 --headless --autopilot " +
+                              "maps/freedoom2_map01.route --record " + out("again.demo"), o), 0) << o;
+  EXPECT_EQ(read_file_bytes(out("again.demo")), read_file_bytes(test::source_dir() / "maps/freedoom2_map01.demo"));
+}
 #endif
 
 TEST_F(Tools, GeneratedMapsCompile) {
