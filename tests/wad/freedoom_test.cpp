@@ -2,7 +2,7 @@
 // compiles without a rejection, passes the BSP invariants exactly, and renders
 // identically with the front-to-back renderer and the brute-force reference, pixel
 // for pixel and column for column, things and all, at the player start and at
-// random cameras.
+// random cameras, also with its doors, lifts and crushers set moving.
 // The Release build tries every map; the sanitizer build a sample (P3D_SANITIZE).
 #include <gtest/gtest.h>
 
@@ -11,6 +11,7 @@
 #include "engine/bsp/check.h"
 #include "engine/bsp/load.h"
 #include "engine/render/renderer.h"
+#include "engine/sim/sim.h"
 #include "engine/wad/write.h"
 #include "tests/support/support.h"
 
@@ -22,15 +23,15 @@ struct Tally {
   size_t sprites = 0, sprite_pixels = 0;
 };
 
-void compare_camera(const level::Level& level, const render::Camera& camera, int w, int h, Tally& t,
-                    const std::string& what) {
+void compare_camera(const level::Level& level, const level::State& state, const render::Camera& camera, int w, int h,
+                    Tally& t, const std::string& what) {
   auto bsp = render::make_renderer("bsp");
   auto ref = render::make_renderer("reference");
   render::Frame a(w, h), b(w, h);
   render::Probe pa, pb;
   pa.want_columns = pb.want_columns = true;
-  const render::RenderStats sa = bsp->render(level, camera, a, &pa);
-  const render::RenderStats sb = ref->render(level, camera, b, &pb);
+  const render::RenderStats sa = bsp->render(level, state, camera, a, &pa);
+  const render::RenderStats sb = ref->render(level, state, camera, b, &pb);
   EXPECT_EQ(sa.pixels_written, uint64_t(w) * h) << what;
   EXPECT_EQ(sa.masked_pixels, sb.masked_pixels) << what;
   EXPECT_EQ(sa.sprites_drawn, sb.sprites_drawn) << what;
@@ -74,13 +75,24 @@ void check_wad(const std::string& file, size_t cameras_per_map, Tally& t) {
     EXPECT_TRUE(problems.empty()) << file << ":" << map << ": " << (problems.empty() ? "" : problems.front());
     ++t.maps;
     const std::string what = file + ":" + map;
-    compare_camera(level, render::camera_at(level, level.player_start, level.player_angle), 160, 100, t,
+    const level::State start = level::start_state(level);
+    compare_camera(level, start, render::camera_at(level, level.player_start, level.player_angle), 160, 100, t,
                    what + " player start");
     Rng rng(std::hash<std::string>()(map) & 0xFFFF);
     for (size_t i = 0; i < cameras_per_map; ++i) {
       const render::Camera c = test::random_camera(level, rng);
       const int w = 48 + int(rng.below(64)), h = 30 + int(rng.below(40));
-      compare_camera(level, c, w, h, t, what + " camera " + std::to_string(i));
+      compare_camera(level, start, c, w, h, t, what + " camera " + std::to_string(i));
+    }
+    // Half-open doors, lowered lifts, crushers half way, flipped switches, lights
+    // changed: a second set of cameras on the level in motion.
+    sim::World world(level);
+    for (uint32_t w = 0; w < level.walls.size(); ++w) world.trigger(w);
+    sim::Player player = world.spawn();
+    for (int tic = 0; tic < 40; ++tic) world.tick(player, {});
+    for (size_t i = 0; i < cameras_per_map / 2; ++i) {
+      const render::Camera c = test::random_camera(level, rng);
+      compare_camera(level, world.state(), c, 64, 40, t, what + " moving camera " + std::to_string(i));
     }
   }
 }
