@@ -1,5 +1,6 @@
 #include "game/automap.h"
 
+#include "engine/sim/specials.h"
 #include "engine/wad/things.h"
 
 #include <cmath>
@@ -35,6 +36,29 @@ void Automap::set_level(const level::Level& level) {
 }
 
 namespace {
+
+uint32_t key_colour(sim::Lock lock) {
+  switch (lock) {
+    case sim::Lock::kBlue: return image::rgba(70, 110, 255);
+    case sim::Lock::kYellow: return image::rgba(240, 220, 40);
+    case sim::Lock::kRed: return image::rgba(240, 40, 40);
+    case sim::Lock::kNone: break;
+  }
+  return image::rgba(230, 230, 230);
+}
+
+// The colour of a line by its special: doors, locked doors in their key's colour,
+// teleporters, exits. False for other lines (colour unchanged).
+bool special_colour(int special, uint32_t& colour) {
+  switch (sim::line_kind(special)) {
+    case sim::LineKind::kDoor: colour = image::rgba(240, 140, 40); return true;
+    case sim::LineKind::kLockedDoor: colour = key_colour(sim::line_special(special)->lock); return true;
+    case sim::LineKind::kTeleporter: colour = image::rgba(60, 230, 100); return true;
+    case sim::LineKind::kExit: colour = image::rgba(255, 90, 200); return true;
+    case sim::LineKind::kPlain: break;
+  }
+  return false;
+}
 
 uint32_t thing_colour(int type) {
   const wad::ThingInfo* info = wad::thing_info(type);
@@ -85,7 +109,13 @@ void Automap::draw(render::Frame& frame, const level::Level& level, const level:
       colour = f.floor != b.floor ? image::rgba(200, 150, 80) : f.ceiling != b.ceiling ? image::rgba(220, 220, 90)
                                                                                        : image::rgba(110, 110, 110);
     }
+    const bool special = special_colour(w.special, colour);
     image::draw_line(frame, screen(w.a), screen(w.b), colour);
+    if (special) {  // doors, locks, teleporters and exits twice as thick
+      const geom::Vec2 d = screen(w.b) - screen(w.a);
+      const geom::Vec2 n = glm::length(d) > 0 ? geom::Vec2(-d.y, d.x) / glm::length(d) : geom::Vec2(0);
+      image::draw_line(frame, screen(w.a) + n, screen(w.b) + n, colour);
+    }
   }
   for (size_t k = 0; k < draw_order.size(); ++k) {  // the last frame's fragments, in the order drawn
     if (draw_order[k] >= level.fragments.size()) continue;

@@ -1,7 +1,8 @@
 // The automap overlay: walls from above around the player (north up), the BSP's
 // splitting lines, the player's leaf, the view cone, the fragments the last frame
 // drew, coloured in draw order, and the things present (monsters red, keys in their
-// colour, pickups green, the rest grey).
+// colour, pickups green, the rest grey). Doors are orange, locked doors in their
+// key's colour, teleporters green and exits pink, drawn thick.
 #pragma once
 
 #include <vector>

@@ -37,11 +37,25 @@ std::vector<std::string> hud_lines(std::string_view title, std::string_view rend
   return lines;
 }
 
+std::string progress_line(uint8_t keys, int secrets_found, int secrets_total, bool noclip) {
+  static constexpr std::pair<uint8_t, const char*> kNames[] = {
+      {sim::kBlueCard, "blue card"},   {sim::kYellowCard, "yellow card"},   {sim::kRedCard, "red card"},
+      {sim::kBlueSkull, "blue skull"}, {sim::kYellowSkull, "yellow skull"}, {sim::kRedSkull, "red skull"}};
+  std::string held;
+  for (const auto& [bit, name] : kNames)
+    if (keys & bit) held += (held.empty() ? "" : ", ") + std::string(name);
+  std::string line = "keys: " + (held.empty() ? std::string("none") : held);
+  if (secrets_total > 0) line += format("  secrets %d/%d", secrets_found, secrets_total);
+  if (noclip) line += "  noclip";
+  return line;
+}
+
 std::vector<std::string> help_lines() {
   return {
       "W/S, Up/Down    move",
       "A/D             strafe",
       "Space, E        use: open doors, press switches",
+      "idclip          (typed) walk through walls",
       "Left/Right      turn (Alt: strafe)",
       "mouse           turn (Esc frees it)",
       "Shift           run",

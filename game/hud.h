@@ -20,6 +20,9 @@ std::vector<std::string> hud_lines(std::string_view title, std::string_view rend
                                    const FrameTimes& times, const sim::Player& player);
 std::vector<std::string> help_lines();
 
+// "keys: blue card, red skull  secrets 1/3  noclip": what the player has found.
+std::string progress_line(uint8_t keys, int secrets_found, int secrets_total, bool noclip);
+
 // Lines of text on a dark translucent box with its top-left corner at (x, y); lines
 // wider than the frame wrap at spaces.
 void draw_panel(render::Frame& frame, int x, int y, const std::vector<std::string>& lines, int scale);

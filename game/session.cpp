@@ -113,7 +113,11 @@ const render::RenderStats& Session::render(render::Frame& frame, double alpha) {
 void Session::draw_overlays(render::Frame& frame, const FrameTimes& times, double alpha) const {
   const int scale = frame.width >= 1280 ? 2 : 1;
   if (show_automap) automap_view_.draw(frame, *level_, world_->state(), camera(alpha), probe_.order, automap);
-  if (show_hud) draw_panel(frame, 4 * scale, 4 * scale, hud_lines(title(), renderer_name_, stats_, times, player_), scale);
+  if (show_hud) {
+    std::vector<std::string> lines = hud_lines(title(), renderer_name_, stats_, times, player_);
+    lines.push_back(progress_line(player_.keys, world_->secrets_found(), world_->secrets_total(), player_.noclip));
+    draw_panel(frame, 4 * scale, 4 * scale, lines, scale);
+  }
   if (show_help) {
     const auto lines = help_lines();
     draw_panel(frame, 4 * scale, frame.height / 2 - int(lines.size()) * 4 * scale, lines, scale);

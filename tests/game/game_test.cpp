@@ -70,6 +70,11 @@ TEST(Hud, LinesNameTheRendererTheWorkAndThePlace) {
   EXPECT_GE(help_lines().size(), 6u);
 }
 
+TEST(Hud, ProgressNamesKeysAndSecrets) {
+  EXPECT_EQ(progress_line(0, 0, 0, false), "keys: none");
+  EXPECT_EQ(progress_line(sim::kBlueCard | sim::kRedSkull, 1, 3, true), "keys: blue card, red skull  secrets 1/3  noclip");
+}
+
 TEST(Hud, LongLinesWrapAtSpaces) {
   EXPECT_EQ(wrap_lines({"one two three four"}, 9), (std::vector<std::string>{"one two", "three", "four"}));
   EXPECT_EQ(wrap_lines({"abcdefghij"}, 4), (std::vector<std::string>{"abcd", "efgh", "ij"}));
