@@ -92,7 +92,7 @@ void Automap::draw(render::Frame& frame, const level::Level& level, const level:
            std::min(a.y, b.y) <= view.max.y;
   };
 
-  image::fill_rect(frame, 0, 0, frame.width, frame.height, image::rgba(0, 0, 0), 190);
+  image::fill_rect(frame, 0, 0, frame.width, frame.height, image::rgba(0, 0, 0), settings.overlay ? 190 : 255);
   std::vector<geom::Vec2> leaf = level::cell_at(level, camera.pos, bounds_);
   for (geom::Vec2& p : leaf) p = screen(p);
   image::fill_convex(frame, leaf, image::rgba(230, 200, 60), 70);

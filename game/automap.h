@@ -1,8 +1,9 @@
-// The automap overlay: walls from above around the player (north up), the BSP's
-// splitting lines, the player's leaf, the view cone, the fragments the last frame
-// drew, coloured in draw order, and the things present (monsters red, keys in their
-// colour, pickups green, the rest grey). Doors are orange, locked doors in their
-// key's colour, teleporters green and exits pink, drawn thick.
+// The automap, its own screen as Doom's (or over the dimmed view): walls from above
+// around the player (north up), the BSP's splitting lines, the player's leaf, the
+// view cone, the fragments the last frame drew, coloured in draw order, and the
+// things present (monsters red, keys in their colour, pickups green, the rest grey).
+// Doors are orange, locked doors in their key's colour, teleporters green and exits
+// pink, drawn thick.
 #pragma once
 
 #include <vector>
@@ -16,6 +17,7 @@ struct AutomapSettings {
   double scale = 0.5;      // pixels per map unit (at a 640-pixel-wide frame)
   bool splitters = true;   // draw the BSP's splitting lines
   bool things = true;      // draw the things present, coloured by kind
+  bool overlay = false;    // over the dimmed view instead of on black
 };
 
 class Automap {

@@ -60,11 +60,12 @@ std::vector<std::string> help_lines() {
       "mouse           turn (Esc frees it)",
       "Shift           run",
       "1-5             bsp painter dda sphere reference",
-      "Tab             automap (B: BSP lines, T: things, +/-: zoom)",
+      "Tab             automap (O: over the view, B: BSP lines, T: things, +/-: zoom)",
       "F2              heads-up text",
       "F11             fullscreen",
-      "F12             screenshot (PNG)",
-      "F1              this help; close the window to quit",
+      "F12             screenshot (PNG, in out/screenshots/)",
+      "Esc             menu: Resume, Keys, Quit (F10 quits at once)",
+      "F1              this help",
   };
 }
 
@@ -83,7 +84,7 @@ std::vector<std::string> wrap_lines(const std::vector<std::string>& lines, size_
   return out;
 }
 
-void draw_panel(render::Frame& frame, int x, int y, const std::vector<std::string>& unwrapped, int scale) {
+int draw_panel(render::Frame& frame, int x, int y, const std::vector<std::string>& unwrapped, int scale) {
   const auto lines = wrap_lines(unwrapped, size_t(std::max(1, (frame.width - x - 8 * scale) / (image::kGlyphWidth * scale))));
   int width = 0;
   for (const std::string& l : lines) width = std::max(width, image::text_width(l, scale));
@@ -91,6 +92,7 @@ void draw_panel(render::Frame& frame, int x, int y, const std::vector<std::strin
   image::fill_rect(frame, x, y, width + 2 * pad, int(lines.size()) * line_h + 2 * pad, image::rgba(0, 0, 0), 150);
   for (size_t i = 0; i < lines.size(); ++i)
     image::draw_text(frame, x + pad, y + pad + int(i) * line_h, lines[i], image::rgba(235, 235, 220), scale);
+  return int(lines.size()) * line_h + 2 * pad;
 }
 
 }  // namespace p3d::game

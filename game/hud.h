@@ -24,8 +24,8 @@ std::vector<std::string> help_lines();
 std::string progress_line(uint8_t keys, int secrets_found, int secrets_total, bool noclip);
 
 // Lines of text on a dark translucent box with its top-left corner at (x, y); lines
-// wider than the frame wrap at spaces.
-void draw_panel(render::Frame& frame, int x, int y, const std::vector<std::string>& lines, int scale);
+// wider than the frame wrap at spaces. Returns the box's height.
+int draw_panel(render::Frame& frame, int x, int y, const std::vector<std::string>& lines, int scale);
 
 // Breaks lines longer than `columns` characters at spaces (a word longer than that is cut).
 std::vector<std::string> wrap_lines(const std::vector<std::string>& lines, size_t columns);

@@ -4,6 +4,8 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <string_view>
 
 #include "engine/image/image.h"
 #include "engine/util/file.h"
@@ -33,14 +35,34 @@ Controls read_controls(int mouse_dx) {
   return c;
 }
 
-// The next free screenshotNNNN.png in the working directory.
+// The next free out/screenshots/screenshotNNNN.png.
 std::filesystem::path screenshot_path() {
+  const std::filesystem::path dir = "out/screenshots";
+  std::filesystem::create_directories(dir);
   for (int n = 0;; ++n) {
     char name[32];
     std::snprintf(name, sizeof name, "screenshot%04d.png", n);
-    if (!std::filesystem::exists(name)) return name;
+    if (!std::filesystem::exists(dir / name)) return dir / name;
   }
 }
+
+// Without a display SDL falls back to an invisible offscreen driver and the game
+// would run unseen for ever: refuse instead, unless a driver was asked for by name
+// (SDL_VIDEODRIVER=dummy runs the game in tests).
+const char* why_no_display() {
+  if (std::getenv("SDL_VIDEODRIVER")) return nullptr;
+  if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY")) return "DISPLAY and WAYLAND_DISPLAY are unset";
+  return nullptr;
+}
+
+bool offscreen_driver() {
+  const char* driver = SDL_GetCurrentVideoDriver();
+  return !std::getenv("SDL_VIDEODRIVER") && driver &&
+         (std::string_view(driver) == "offscreen" || std::string_view(driver) == "dummy");
+}
+
+constexpr const char* kHeadlessHint =
+    "to render without a display: game LEVEL --headless --play DEMO --out DIR (or --autopilot ROUTE)";
 
 class Window {
  public:
@@ -53,7 +75,15 @@ class Window {
   }
 
   int run() {
+    if (const char* why = why_no_display()) {
+      std::fprintf(stderr, "game: no display to open a window on (%s); %s\n", why, kHeadlessHint);
+      return 1;
+    }
     if (SDL_Init(SDL_INIT_VIDEO) != 0) return fail("cannot start SDL video");
+    if (offscreen_driver()) {
+      std::fprintf(stderr, "game: SDL found no display, only its offscreen driver; %s\n", kHeadlessHint);
+      return 1;
+    }
     SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "nearest");  // a fixed low resolution stays crisp
     window_ = SDL_CreateWindow(("pseudo3d: " + session_.title()).c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
                                o_.window_width, o_.window_height,
@@ -77,6 +107,7 @@ class Window {
       const double t0 = now_seconds();
       accumulator = std::min(accumulator + (t0 - last), 0.25);  // after a stall, do not race to catch up
       if (o_.timedemo) accumulator = kTicSeconds;              // exactly one tic per frame
+      if (session_.menu.is_open()) accumulator = 0;             // the game waits while the menu is open
       summed_.frame_ms += (t0 - last) * 1000;
       last = t0;
       while (accumulator >= kTicSeconds && running_) {
@@ -153,13 +184,46 @@ class Window {
       if (e.type == SDL_QUIT) running_ = false;
       if (e.type == SDL_WINDOWEVENT && e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED && !resize()) running_ = false;
       if (e.type == SDL_MOUSEMOTION && SDL_GetRelativeMouseMode()) mouse_dx_ += e.motion.xrel;
-      if (e.type == SDL_KEYDOWN && !e.key.repeat) key(e.key.keysym.sym);
+      if (e.type == SDL_MOUSEBUTTONDOWN && !session_.menu.is_open()) SDL_SetRelativeMouseMode(SDL_TRUE);
+      if (e.type == SDL_KEYDOWN && !e.key.repeat) {
+        if (session_.menu.is_open())
+          menu_key(e.key.keysym.sym);
+        else
+          key(e.key.keysym.sym);
+      }
+    }
+  }
+
+  void open_menu() {
+    session_.menu.open();
+    SDL_SetRelativeMouseMode(SDL_FALSE);
+  }
+
+  void resume() {
+    session_.menu.close();
+    session_.show_help = false;
+    SDL_SetRelativeMouseMode(SDL_TRUE);
+  }
+
+  void menu_key(SDL_Keycode k) {
+    Menu& menu = session_.menu;
+    if (k == SDLK_ESCAPE) resume();
+    if (k == SDLK_UP || k == SDLK_w) menu.up();
+    if (k == SDLK_DOWN || k == SDLK_s) menu.down();
+    if (k == SDLK_F10) running_ = false;
+    if (k != SDLK_RETURN && k != SDLK_KP_ENTER && k != SDLK_SPACE) return;
+    switch (menu.selected()) {
+      case Menu::Item::kResume: resume(); break;
+      case Menu::Item::kKeys: session_.show_help = !session_.show_help; break;
+      case Menu::Item::kQuit: running_ = false; break;
     }
   }
 
   void key(SDL_Keycode k) {
     if (k >= SDLK_a && k <= SDLK_z && cheats_.noclip(char(k))) noclip_typed_ = true;
-    if (k == SDLK_ESCAPE) SDL_SetRelativeMouseMode(SDL_GetRelativeMouseMode() ? SDL_FALSE : SDL_TRUE);
+    if (k == SDLK_ESCAPE) open_menu();
+    if (k == SDLK_F10) running_ = false;
+    if (k == SDLK_o && session_.show_automap) session_.automap.overlay = !session_.automap.overlay;
     if (k == SDLK_F1) session_.show_help = !session_.show_help;
     if (k == SDLK_F2) session_.show_hud = !session_.show_hud;
     if (k == SDLK_TAB) session_.show_automap = !session_.show_automap;

@@ -17,6 +17,7 @@ Session::Session(const bsp::LevelSource& source, int skill) : source_(source), s
   load();
   player_ = previous_ = world_->spawn();
   select_renderer("bsp");
+  message_tics_ = 0;  // nothing to say at the start
 }
 
 void Session::load() {
@@ -112,17 +113,31 @@ const render::RenderStats& Session::render(render::Frame& frame, double alpha) {
 
 void Session::draw_overlays(render::Frame& frame, const FrameTimes& times, double alpha) const {
   const int scale = frame.width >= 1280 ? 2 : 1;
+  const int margin = 4 * scale;
   if (show_automap) automap_view_.draw(frame, *level_, world_->state(), camera(alpha), probe_.order, automap);
+  int y = margin;
   if (show_hud) {
-    std::vector<std::string> lines = hud_lines(title(), renderer_name_, stats_, times, player_);
-    lines.push_back(progress_line(player_.keys, world_->secrets_found(), world_->secrets_total(), player_.noclip));
-    draw_panel(frame, 4 * scale, 4 * scale, lines, scale);
+    std::vector<std::string> lines;
+    const std::string progress = progress_line(player_.keys, world_->secrets_found(), world_->secrets_total(), player_.noclip);
+    if (frame.width < kCompactWidth) {  // a low resolution: one short line
+      char fps[32];
+      std::snprintf(fps, sizeof fps, "%.0f fps  ", times.fps);
+      lines = {fps + progress};
+    } else {
+      lines = hud_lines(title(), renderer_name_, stats_, times, player_);
+      lines.push_back(progress);
+    }
+    y += draw_panel(frame, margin, y, lines, scale) + margin;
   }
+  if (message_tics_ > 0) draw_panel(frame, margin, y, {message_}, scale);  // Doom's messages, top left
   if (show_help) {
     const auto lines = help_lines();
-    draw_panel(frame, 4 * scale, frame.height / 2 - int(lines.size()) * 4 * scale, lines, scale);
+    draw_panel(frame, margin, std::max(margin, frame.height / 2 - int(lines.size()) * 4 * scale), lines, scale);
   }
-  if (message_tics_ > 0) draw_panel(frame, 4 * scale, frame.height - 18 * scale, {message_}, scale);
+  if (menu.is_open() && !show_help) {  // the menu's Keys shows the help in its place
+    const auto lines = menu.lines();
+    draw_panel(frame, frame.width / 2 - 60 * scale, frame.height / 2 - int(lines.size()) * 4 * scale, lines, scale);
+  }
 }
 
 void Session::say(const std::string& text) {

@@ -15,6 +15,7 @@
 #include "engine/sim/demo.h"
 #include "game/automap.h"
 #include "game/hud.h"
+#include "game/menu.h"
 
 namespace p3d::game {
 
@@ -23,6 +24,8 @@ const std::vector<std::string>& key_renderers();
 
 class Session {
  public:
+  static constexpr int kCompactWidth = 480;  // narrower frames get a one-line heads-up text
+
   explicit Session(const bsp::LevelSource& source, int skill = level::kDefaultSkill);
   explicit Session(const std::filesystem::path& map_path) : Session(bsp::LevelSource{map_path, {}, {}}) {}
 
@@ -63,8 +66,9 @@ class Session {
   void draw_overlays(render::Frame& frame, const FrameTimes& times, double alpha) const;
 
   // ---- what the keys toggle
-  bool show_automap = false, show_hud = true, show_help = false;
+  bool show_automap = false, show_hud = false, show_help = false;
   AutomapSettings automap;
+  Menu menu;
   double fov = 90;
   void say(const std::string& text);  // a message shown on screen for a few seconds
   void advance_message();             // once per tic

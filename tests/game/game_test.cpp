@@ -75,6 +75,42 @@ TEST(Hud, ProgressNamesKeysAndSecrets) {
   EXPECT_EQ(progress_line(sim::kBlueCard | sim::kRedSkull, 1, 3, true), "keys: blue card, red skull  secrets 1/3  noclip");
 }
 
+TEST(Menu, ChoosesWithUpAndDown) {
+  Menu m;
+  EXPECT_FALSE(m.is_open());
+  m.open();
+  EXPECT_EQ(m.selected(), Menu::Item::kResume);
+  m.up();
+  EXPECT_EQ(m.selected(), Menu::Item::kQuit) << "up from the top wraps to the bottom";
+  m.down();
+  m.down();
+  EXPECT_EQ(m.selected(), Menu::Item::kKeys);
+  const auto lines = m.lines();
+  EXPECT_NE(std::find(lines.begin(), lines.end(), "> Keys"), lines.end());
+  m.close();
+  m.open();
+  EXPECT_EQ(m.selected(), Menu::Item::kResume) << "opens on Resume";
+}
+
+TEST(Hud, OffByDefaultAndOneLineAtLowResolutions) {
+  Session s(test::source_dir() / "maps/outpost.map");
+  EXPECT_FALSE(s.show_hud);
+  for (int t = 0; t < 4 * sim::kTicRate; ++t) s.tic({});  // the start's message fades
+  render::Frame small(320, 200);
+  s.render(small, 1);
+  const render::Frame bare = small;
+  s.show_hud = true;
+  s.draw_overlays(small, {}, 1);
+  int rows = 0;  // rows the panel changed
+  for (int y = 0; y < small.height; ++y) {
+    bool changed = false;
+    for (int x = 0; x < small.width; ++x) changed |= small.pixels[size_t(y) * small.width + x] != bare.pixels[size_t(y) * small.width + x];
+    rows += changed;
+  }
+  EXPECT_GT(rows, 0);
+  EXPECT_LT(rows, small.height / 10) << "a compact heads-up text at 320x200";
+}
+
 TEST(Hud, LongLinesWrapAtSpaces) {
   EXPECT_EQ(wrap_lines({"one two three four"}, 9), (std::vector<std::string>{"one two", "three", "four"}));
   EXPECT_EQ(wrap_lines({"abcdefghij"}, 4), (std::vector<std::string>{"abcd", "efgh", "ij"}));

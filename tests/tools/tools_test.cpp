@@ -3,6 +3,8 @@
 // and byte-for-byte reproducible outputs.
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include <fstream>
 
 #include "engine/image/image.h"
@@ -232,6 +234,17 @@ TEST_F(Tools, GamePlaysTheBundledDemoWithoutADisplay) {
   EXPECT_NE(o.find("661 tics, 66"), std::string::npos) << o << " (one frame per tic, plus the first)";
   ASSERT_EQ(run_in_source(game + " maps/bunker.grid --renderer dda --resolution 160x100 --quit-after-tics 35 --no-vsync", o), 0)
       << o;
+}
+
+// Without a display the game says so and exits 1 at once, rather than running unseen.
+TEST_F(Tools, GameWithoutADisplayFailsAtOnce) {
+  std::string o;
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(run_in_source("env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER " + std::string(P3D_GAME) +
+                              " maps/outpost.map", o), 1) << o;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+  EXPECT_NE(o.find("game: no display to open a window on (DISPLAY and WAYLAND_DISPLAY are unset); to render "
+                   "without a display: game LEVEL --headless --play DEMO"), std::string::npos) << o;
 }
 
 TEST_F(Tools, HeadlessReplayWritesTheSameFramesEveryTime) {
