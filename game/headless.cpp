@@ -24,8 +24,9 @@ HeadlessResult replay_headless(Session& session, const sim::Demo& demo, const He
   session.spawn(demo.start, demo.angle);
   session.set_keys(demo.keys);
   render::Frame frame(o.width, o.height);
-  std::string csv = "frame,tic,x,y,z,angle,renderer,nodes_visited,subtrees_culled,fragments_drawn,columns_closed,"
-                    "pixels_written,early_exit,sprites_drawn,keys,secrets,exit\n";
+  std::string csv = "frame,tic,x,y,z,angle,renderer";
+  for (const Stat& f : render::stat_fields({})) csv += "," + f.name;
+  csv += ",keys,secrets,exit\n";
   HeadlessResult result;
   for (size_t tic = 0;; ++tic) {
     const bool last = tic == demo.tics.size() || session.exited() != sim::Exit::kNone;
@@ -35,13 +36,13 @@ HeadlessResult replay_headless(Session& session, const sim::Demo& demo, const He
       std::snprintf(name, sizeof name, "frame%05d.png", result.frames);
       image::save_png(frame, o.out_dir / name);
       const sim::Player& p = session.player();
-      char line[400];
-      std::snprintf(line, sizeof line, "%d,%zu,%.6f,%.6f,%.6f,%.6f,%s,%llu,%llu,%llu,%llu,%llu,%d,%llu,%d,%d,%s\n",
-                    result.frames, tic, p.pos.x, p.pos.y, p.z, p.angle, session.renderer_name().c_str(),
-                    (unsigned long long)s.nodes_visited, (unsigned long long)s.subtrees_culled,
-                    (unsigned long long)s.fragments_drawn, (unsigned long long)s.columns_closed,
-                    (unsigned long long)s.pixels_written, int(s.early_exit), (unsigned long long)s.sprites_drawn,
-                    int(p.keys), session.world().secrets_found(), exit_name(session.exited()));
+      char line[200];
+      std::snprintf(line, sizeof line, "%d,%zu,%.6f,%.6f,%.6f,%.6f,%s", result.frames, tic, p.pos.x, p.pos.y, p.z,
+                    p.angle, session.renderer_name().c_str());
+      csv += line;
+      for (const Stat& f : render::stat_fields(s)) csv += "," + stat_number(f.value);
+      std::snprintf(line, sizeof line, ",%d,%d,%s\n", int(p.keys), session.world().secrets_found(),
+                    exit_name(session.exited()));
       csv += line;
       ++result.frames;
     }

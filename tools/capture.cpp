@@ -30,7 +30,7 @@ std::string columns_csv(const level::Level& level, const render::ColumnHits& hit
 int main(int argc, char** argv) {
   CLI::App app{"capture: render frames of a compiled level (.bsp) to PNG files", "capture"};
   cli::LevelArgs level_args;
-  std::string output, pos_text, size_text = "640x400", renderer_name = "bsp", columns, cameras;
+  std::string output, pos_text, size_text = "640x400", renderer_name = "bsp", columns, cameras, json;
   std::optional<double> angle;
   double eye = render::kEyeHeight, fov = 90;
   bool stats = false, all_warnings = false;
@@ -50,7 +50,8 @@ int main(int argc, char** argv) {
   app.add_option("-o,--output", output, "PNG to write (a directory with --cameras)")->required();
   app.add_option("--columns", columns, "CSV of x,wall,dist per column (a directory with --cameras)");
   app.add_option("--cameras", cameras, "file of cameras: NAME X Y ANGLE [EYE [FOV]] per line")->check(CLI::ExistingFile);
-  app.add_flag("--stats", stats, "print per-frame statistics and time per frame");
+  app.add_flag("--stats", stats, "print per-frame statistics (a statdump line) and time per frame (apart)");
+  app.add_option("--json", json, "with --stats: also write them as JSON, with the same names");
   app.add_flag("--all-warnings", all_warnings, "list every warning about a WAD map's quirks");
   cli::add_skill_option(app, skill);
   cli::add_renderer_options(app, ropt);
@@ -63,6 +64,7 @@ int main(int argc, char** argv) {
 
     const bsp::LevelSource source = cli::level_source(level_args);
     std::vector<render::CameraSpec> shots;
+    if (!json.empty() && !stats) throw CLI::ValidationError("--json", "writes the --stats: add --stats");
     if (!cameras.empty()) {
       if (!pos_text.empty()) throw CLI::ValidationError("--pos", "use either --pos or --cameras");
       shots = render::read_camera_list(cameras);
@@ -85,6 +87,7 @@ int main(int argc, char** argv) {
     render::Frame frame(width, height);
     render::Probe probe;
     probe.want_columns = !columns.empty();
+    std::vector<std::string> json_frames;
     for (const render::CameraSpec& shot : shots) {
       const render::Camera camera = render::camera_at(level, shot.pos, shot.angle, shot.eye, shot.fov);
       const auto start = std::chrono::steady_clock::now();
@@ -105,19 +108,18 @@ int main(int argc, char** argv) {
         }
         std::nth_element(times.begin(), times.begin() + 2, times.end());
         ms = times[2];
-        std::printf("%s%s renderer=%s nodes_visited=%llu subtrees_culled=%llu fragments_drawn=%llu "
-                    "columns_closed=%llu pixels_written=%llu masked_pixels=%llu sprites_drawn=%llu sprite_pixels=%llu "
-                    "early_exit=%s",
-                    shot.name.c_str(), shot.name.empty() ? "frame" : "", renderer_name.c_str(),
-                    (unsigned long long)s.nodes_visited, (unsigned long long)s.subtrees_culled,
-                    (unsigned long long)s.fragments_drawn, (unsigned long long)s.columns_closed,
-                    (unsigned long long)s.pixels_written, (unsigned long long)s.masked_pixels,
-                    (unsigned long long)s.sprites_drawn, (unsigned long long)s.sprite_pixels, s.early_exit ? "yes" : "no");
-        if (s.rays)
-          std::printf(" rays=%llu mean_steps=%.2f max_steps=%llu", (unsigned long long)s.rays,
-                      double(s.steps) / double(s.rays), (unsigned long long)s.max_steps);
-        std::printf(" ms_per_frame=%.3f\n", ms);
+        const std::string name = shot.name.empty() ? "frame" : shot.name;
+        std::printf("%s stats: %s\n%s time: ms_per_frame=%s\n", name.c_str(), statdump(render::stat_fields(s)).c_str(),
+                    name.c_str(), stat_number(std::round(ms * 1000) / 1000).c_str());
+        json_frames.push_back("{\"name\": " + json_string(name) + ", \"stats\": " + stats_json(render::stat_fields(s)) +
+                              ", \"time\": " + stats_json({{"ms_per_frame", std::round(ms * 1000) / 1000}}) + "}");
       }
+    }
+    if (!json.empty()) {
+      std::string j = "{\"level\": " + json_string(opened.name) + ", \"renderer\": " + json_string(renderer_name) +
+                      ", \"frames\": [\n";
+      for (size_t i = 0; i < json_frames.size(); ++i) j += "  " + json_frames[i] + (i + 1 < json_frames.size() ? ",\n" : "\n");
+      write_file_atomically(json, j + "]}\n");
     }
     return 0;
   });

@@ -93,12 +93,6 @@ image::Image compose(const std::vector<Row>& rows, int w, int h) {
   return out;
 }
 
-std::string json_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) out += c == '"' || c == '\\' ? std::string("\\") + c : std::string(1, c);
-  return out;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -138,6 +132,7 @@ int main(int argc, char** argv) {
       if (angle && !std::isfinite(*angle)) throw CLI::ValidationError("--angle", "must be finite");
       cli::check_eye(eye);
     }
+    const bool asked = !names.empty();
     if (names.empty()) names = render::renderer_names();
     names.erase(std::remove(names.begin(), names.end(), "reference"), names.end());
     names.push_back("reference");  // the baseline, drawn last
@@ -156,7 +151,11 @@ int main(int argc, char** argv) {
     for (const std::string& name : names) {
       auto r = render::make_renderer(name, ropt);
       if (!r) throw CLI::ValidationError("--renderers", "unknown renderer '" + name + "'");
-      if (!r->supports(level)) continue;
+      if (!r->supports(level)) {
+        if (asked) std::fprintf(stderr, "compare: %s: the %s renderer cannot draw this level (it needs a grid map); left out\n",
+                                opened.name.c_str(), name.c_str());
+        continue;
+      }
       r->prepare(level);
       renderers.push_back(std::move(r));
       rows.push_back({name, {}, {}, {}, {}, 0});
@@ -194,34 +193,32 @@ int main(int argc, char** argv) {
     std::printf("%s, %dx%d, %zu camera%s\n", map_path.c_str(), w, h, specs.size(), specs.size() == 1 ? "" : "s");
     std::printf("%-13s %10s %12s %9s %8s %8s %6s %10s %9s %9s %9s\n", "renderer", "ms/frame", "pixels", "overdraw",
                 "nodes", "culled", "rays", "mean steps", "max steps", "px diff", "col diff");
-    std::string j = "{\n  \"map\": \"" + json_escape(map_path) + "\",\n  \"width\": " + std::to_string(w) +
-                    ",\n  \"height\": " + std::to_string(h) + ",\n  \"cameras\": " + std::to_string(specs.size()) +
-                    ",\n  \"renderers\": [\n";
+    std::string j = "{\"level\": " + json_string(map_path) + ", \"width\": " + std::to_string(w) +
+                    ", \"height\": " + std::to_string(h) + ", \"cameras\": " + std::to_string(specs.size()) +
+                    ", \"renderers\": [\n";
     for (size_t i = 0; i < rows.size(); ++i) {
       std::map<std::string, std::vector<double>> m;
       for (const Result& r : rows[i].results) {
-        m["ms"].push_back(r.ms);
-        m["pixels"].push_back(double(r.stats.pixels_written));
+        m["ms_per_frame"].push_back(r.ms);
         m["overdraw"].push_back(double(r.stats.pixels_written) / (double(w) * h));
-        m["nodes"].push_back(double(r.stats.nodes_visited));
-        m["culled"].push_back(double(r.stats.subtrees_culled));
-        m["rays"].push_back(double(r.stats.rays));
         m["mean_steps"].push_back(r.stats.rays ? double(r.stats.steps) / double(r.stats.rays) : 0);
-        m["max_steps"].push_back(double(r.stats.max_steps));
         m["pixel_diff"].push_back(r.pixel_diff);
         m["column_diff"].push_back(r.column_diff);
+        for (const Stat& f : render::stat_fields(r.stats)) m[f.name].push_back(f.value);
       }
-      auto md = [&](const char* k) { return median(m[k]); };
+      auto md = [&](const std::string& k) { return median(m[k]); };
       std::printf("%-13s %10.3f %12.0f %8.2fx %8.0f %8.0f %6.0f %10.1f %9.0f %8.3f%% %8.3f%%\n", rows[i].name.c_str(),
-                  md("ms"), md("pixels"), md("overdraw"), md("nodes"), md("culled"), md("rays"), md("mean_steps"),
-                  md("max_steps"), 100 * md("pixel_diff"), 100 * md("column_diff"));
-      j += "    {\"name\": \"" + rows[i].name + "\"";
-      for (const char* k : {"ms", "pixels", "overdraw", "nodes", "culled", "rays", "mean_steps", "max_steps",
-                            "pixel_diff", "column_diff"})
-        j += std::string(", \"") + k + "\": " + number(md(k), 6);
-      j += i + 1 < rows.size() ? "},\n" : "}\n";
+                  md("ms_per_frame"), md("pixels_written"), md("overdraw"), md("nodes_visited"), md("subtrees_culled"),
+                  md("rays"), md("mean_steps"), md("max_steps"), 100 * md("pixel_diff"), 100 * md("column_diff"));
+      // Medians over the cameras, by statdump's names; timings apart.
+      Stats medians;
+      for (const Stat& f : render::stat_fields({})) medians.push_back({f.name, md(f.name)});
+      for (const char* k : {"overdraw", "mean_steps", "pixel_diff", "column_diff"}) medians.push_back({k, md(k)});
+      j += "  {\"name\": " + json_string(rows[i].name) + ", \"median\": " + stats_json(medians) +
+           ", \"time\": " + stats_json({{"ms_per_frame", std::round(md("ms_per_frame") * 1000) / 1000}}) +
+           (i + 1 < rows.size() ? "},\n" : "}\n");
     }
-    j += "  ]\n}\n";
+    j += "]}\n";
     if (!json.empty()) write_file_atomically(json, j);
     return 0;
   });

@@ -26,26 +26,33 @@ struct Args {
   int columns = 160;
   uint64_t seed = 1;
   bool stats = false, check = false, all_maps = false, all_warnings = false;
+  std::string json;
   bsp::Options options;
 };
 
-void print_stats(const bsp::Stats& s, double parse_seconds, double build_seconds, const bsp::Options& o) {
+Stats stat_fields(const bsp::Stats& s) {
   const double bound = s.random_bound();
-  std::printf("strategy            %s (seed %llu)\n", bsp::strategy_name(o.strategy),
-              static_cast<unsigned long long>(o.seed));
-  std::printf("input walls n       %zu\n", s.walls);
-  std::printf("fragments           %zu\n", s.fragments);
-  std::printf("splits              %zu\n", s.splits);
-  std::printf("nodes               %zu\n", s.nodes);
-  std::printf("leaves              %zu\n", s.leaves);
-  std::printf("free splits         %zu\n", s.free_splits);
-  std::printf("depth max / mean    %zu / %.2f\n", s.max_depth, s.mean_depth);
-  std::printf("shortest fragment   %.6g map units\n", s.shortest_fragment);
-  std::printf("ray-cast leaves     %zu\n", s.ray_cast_leaves);
-  std::printf("parse + validate    %.3f s\n", parse_seconds);
-  std::printf("build time          %.3f s\n", build_seconds);
-  std::printf("n + 2n ln n         %.0f\n", bound);
-  std::printf("fragments / bound   %.4f\n", bound > 0 ? s.fragments / bound : 0.0);
+  return {{"walls", double(s.walls)},
+          {"fragments", double(s.fragments)},
+          {"splits", double(s.splits)},
+          {"nodes", double(s.nodes)},
+          {"leaves", double(s.leaves)},
+          {"free_splits", double(s.free_splits)},
+          {"max_depth", double(s.max_depth)},
+          {"mean_depth", s.mean_depth},
+          {"shortest_fragment", s.shortest_fragment},
+          {"ray_cast_leaves", double(s.ray_cast_leaves)},
+          {"random_bound", std::round(bound)},
+          {"fragments_per_bound", bound > 0 ? s.fragments / bound : 0.0}};
+}
+
+// The tree's statistics (a statdump line), then the times apart.
+void print_stats(const bsp::Stats& s, double parse_seconds, double build_seconds, const std::string& json) {
+  const Stats times = {{"parse_seconds", std::round(parse_seconds * 1000) / 1000},
+                       {"build_seconds", std::round(build_seconds * 1000) / 1000}};
+  std::printf("stats: %s\ntime: %s\n", statdump(stat_fields(s)).c_str(), statdump(times).c_str());
+  if (!json.empty())
+    write_file_atomically(json, "{\"stats\": " + stats_json(stat_fields(s)) + ", \"time\": " + stats_json(times) + "}\n");
 }
 
 // Shows the current phase (and the build's percentage) on a terminal once the
@@ -148,7 +155,10 @@ int compile_one(Args& a, const bsp::LevelSource& source, Progress& progress) {
   progress.phase("writing");
   level::write(level, a.output);
   if (!a.svg.empty()) write_file_atomically(a.svg, tools::overview_svg(level, view));
-  if (a.stats) print_stats(stats, parse_seconds, build_seconds, a.options);
+  std::printf("%s: %zu walls, %zu fragments, %zu nodes, depth %zu (mean %.1f) -> %s\n", name.c_str(), stats.walls,
+              stats.fragments, stats.nodes, stats.max_depth, stats.mean_depth, a.output.c_str());
+  if (a.check) std::printf("%s: the BSP invariants hold\n", name.c_str());
+  if (a.stats) print_stats(stats, parse_seconds, build_seconds, a.json);
   return 0;
 }
 
@@ -225,7 +235,8 @@ int main(int argc, char** argv) {
   app.add_option("--sliver-weight", a.options.sliver_weight, "greedy: cost of a split leaving a piece under 1/16 unit")
       ->check(CLI::Range(0.0, 1e9))
       ->capture_default_str();
-  app.add_flag("--stats", a.stats, "print tree statistics");
+  app.add_flag("--stats", a.stats, "print tree statistics (a statdump line) and times (apart)");
+  app.add_option("--json", a.json, "with --stats: also write them as JSON, with the same names");
   app.add_flag("--check", a.check, "verify the BSP invariants exactly before writing");
   app.add_option("--svg", a.svg, "also draw the level and its BSP from above as SVG");
   app.add_option("--pos", a.pos, "--svg: show a camera at X,Y: its view cone, draw order and closed columns");
@@ -237,6 +248,7 @@ int main(int argc, char** argv) {
     a.options.strategy = *bsp::parse_strategy(a.strategy);
     a.options.seed = a.seed;
     const bsp::LevelSource source = cli::level_source(a.level);
+    if (!a.json.empty() && !a.stats) throw CLI::ValidationError("--json", "writes the --stats: add --stats");
     if (a.all_maps) {
       if (!a.level.map.empty()) throw CLI::ValidationError("--all", "compiles every map: leave out --map");
       return compile_all(a, source);

@@ -19,6 +19,15 @@ RenderStats Renderer::render(const level::Level& level, const Camera& camera, Fr
   return render(level, start_, camera, frame, probe);
 }
 
+Stats stat_fields(const RenderStats& s) {
+  return {{"nodes_visited", double(s.nodes_visited)},     {"subtrees_culled", double(s.subtrees_culled)},
+          {"fragments_drawn", double(s.fragments_drawn)}, {"columns_closed", double(s.columns_closed)},
+          {"pixels_written", double(s.pixels_written)},   {"masked_pixels", double(s.masked_pixels)},
+          {"sprites_drawn", double(s.sprites_drawn)},     {"sprite_pixels", double(s.sprite_pixels)},
+          {"early_exit", s.early_exit ? 1.0 : 0.0},       {"rays", double(s.rays)},
+          {"steps", double(s.steps)},                     {"max_steps", double(s.max_steps)}};
+}
+
 const std::vector<std::string>& renderer_names() {
   static const std::vector<std::string> names = {"bsp", "painter", "dda", "sphere", "sphere-naive", "reference"};
   return names;

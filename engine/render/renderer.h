@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine/render/camera.h"
+#include "engine/util/statdump.h"
 
 namespace p3d::render {
 
@@ -37,6 +38,9 @@ class Renderer {
   level::State start_;      // the start state of the level last drawn without one
   uint64_t start_for_ = 0;  // that level's generation
 };
+
+// A frame's statistics by name, every field in a fixed order (statdump, JSON, CSV).
+Stats stat_fields(const RenderStats& stats);
 
 // nullptr for an unknown name.
 std::unique_ptr<Renderer> make_renderer(std::string_view name, const RendererOptions& options = {});

@@ -209,7 +209,7 @@ TEST(Headless, ReplayIsByteForByteReproducible) {
   const std::string csv = read_file_text(dir / "a/stats.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "frame,tic,x,y,z,angle,renderer,nodes_visited,subtrees_culled,fragments_drawn,columns_closed,pixels_written,"
-            "early_exit,sprites_drawn,keys,secrets,exit");
+            "masked_pixels,sprites_drawn,sprite_pixels,early_exit,rays,steps,max_steps,keys,secrets,exit");
 
   Session other(test::source_dir() / "maps/soup.map");
   EXPECT_THROW(replay_headless(other, demo, {20, dir / "c", 96, 60}), Error);

@@ -18,15 +18,7 @@ namespace p3d::render {
 namespace {
 
 std::string stats_line(const std::string& name, const RenderStats& s) {
-  char line[400];
-  std::snprintf(line, sizeof line,
-                "%s nodes_visited=%llu subtrees_culled=%llu fragments_drawn=%llu columns_closed=%llu "
-                "pixels_written=%llu masked_pixels=%llu sprites_drawn=%llu sprite_pixels=%llu early_exit=%d\n",
-                name.c_str(), (unsigned long long)s.nodes_visited, (unsigned long long)s.subtrees_culled,
-                (unsigned long long)s.fragments_drawn, (unsigned long long)s.columns_closed,
-                (unsigned long long)s.pixels_written, (unsigned long long)s.masked_pixels,
-                (unsigned long long)s.sprites_drawn, (unsigned long long)s.sprite_pixels, int(s.early_exit));
-  return line;
+  return name + " " + statdump(stat_fields(s)) + "\n";
 }
 
 // Compares a frame with its golden PNG (or rewrites it when updating).

@@ -54,14 +54,25 @@ TEST_F(Tools, BadMapsGiveTheirMessageAndNoOutput) {
 
 TEST_F(Tools, CompileAndCaptureAreReproducible) {
   std::string o;
-  ASSERT_EQ(run_in_source(tool("mapc") + " maps/outpost.map -o " + out("a.bsp") + " --stats --check", o), 0) << o;
-  EXPECT_NE(o.find("fragments / bound"), std::string::npos) << o;
+  ASSERT_EQ(run_in_source(tool("mapc") + " maps/outpost.map -o " + out("a.bsp") + " --stats --check --json " +
+                              out("a.json"), o), 0) << o;
+  EXPECT_NE(o.find("maps/outpost.map: the BSP invariants hold"), std::string::npos) << o;
+  EXPECT_NE(o.find("stats: walls="), std::string::npos) << o;
+  EXPECT_NE(o.find(" fragments_per_bound="), std::string::npos) << o;
+  EXPECT_NE(o.find("\ntime: parse_seconds="), std::string::npos) << o;
+  EXPECT_NE(read_file_text(out("a.json")).find("{\"stats\": {\"walls\": "), std::string::npos);
   ASSERT_EQ(run_in_source(tool("mapc") + " maps/outpost.map -o " + out("b.bsp"), o), 0) << o;
   EXPECT_EQ(read_file_bytes(out("a.bsp")), read_file_bytes(out("b.bsp")));
 
   const std::string capture = tool("capture") + " " + out("a.bsp") + " --pos 64,96 --angle 30 --size 200x120 ";
-  ASSERT_EQ(test::run(capture + "-o " + out("a.png") + " --columns " + out("a.csv") + " --stats", o), 0) << o;
-  EXPECT_NE(o.find("early_exit=yes"), std::string::npos) << o;
+  ASSERT_EQ(test::run(capture + "-o " + out("a.png") + " --columns " + out("a.csv") + " --stats --json " + out("a.json"), o),
+            0) << o;
+  EXPECT_NE(o.find("frame stats: nodes_visited="), std::string::npos) << o;
+  EXPECT_NE(o.find(" early_exit=1 "), std::string::npos) << o;
+  EXPECT_NE(o.find("\nframe time: ms_per_frame="), std::string::npos) << o;
+  const std::string json = read_file_text(out("a.json"));
+  EXPECT_NE(json.find("\"stats\": {\"nodes_visited\": "), std::string::npos) << json;
+  EXPECT_NE(json.find("\"early_exit\": 1"), std::string::npos) << json;
   ASSERT_EQ(test::run(capture + "-o " + out("b.png"), o), 0) << o;
   EXPECT_EQ(read_file_bytes(out("a.png")), read_file_bytes(out("b.png")));
   const image::Image img = image::load_png(out("a.png"));
@@ -198,10 +209,15 @@ TEST_F(Tools, CompareDrawsEveryRendererOnTheBundledMaps) {
     size_t names = 0;
     for (size_t at = 0; (at = json.find("\"name\"", at)) != std::string::npos; ++at) ++names;
     EXPECT_EQ(names, expected) << c.map << "\n" << json;
-    EXPECT_NE(json.find("\"pixel_diff\": 0.000000"), std::string::npos) << c.map;
+    EXPECT_NE(json.find("\"pixel_diff\": 0,"), std::string::npos) << c.map << json;
+    EXPECT_NE(json.find("\"pixels_written\": 5760,"), std::string::npos) << c.map << ": whole numbers as integers\n" << json;
   }
   // Over a path, with medians.
   std::string o;
+  ASSERT_EQ(run_in_source(tool("compare") + " maps/outpost.map --renderers bsp,dda --size 32x20 --frames 1 -o " +
+                              out("d.png"), o), 0) << o;
+  EXPECT_NE(o.find("compare: maps/outpost.map: the dda renderer cannot draw this level (it needs a grid map); left out"),
+            std::string::npos) << o;
   ASSERT_EQ(run_in_source(tool("compare") + " maps/outpost.map --path maps/outpost.cameras --size 64x40 --frames 1 "
                           "--renderers bsp,painter -o " + out("p.png"), o), 0) << o;
   EXPECT_NE(o.find("7 cameras"), std::string::npos) << o;
