@@ -98,8 +98,8 @@ int main(int argc, char** argv) {
     if (map_reload && !source.is_wad() && !bsp::is_source_path(source.file))
       throw CLI::ValidationError("--map-reload", "needs a .map or .grid source or a WAD, not a compiled level");
     int rw = 0, rh = 0, ww = 0, wh = 0;
-    if (!resolution.empty()) cli::parse_size(resolution, rw, rh);
-    cli::parse_size(window, ww, wh);
+    if (!resolution.empty()) cli::parse_size(resolution, rw, rh, "--resolution");
+    cli::parse_size(window, ww, wh, "--window");
 
     std::optional<sim::Demo> demo;
     if (!play.empty()) {

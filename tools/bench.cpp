@@ -37,7 +37,7 @@ struct Settings {
   int width = 640, height = 400;
   int repeat = 3;              // renders per camera; the median of all frames is reported
   double budget_seconds = 2;   // per renderer and map: slow renderers render a prefix of the path
-  std::string source_dir = ".";
+  std::string source_dir = cli::bundled_maps_dir().parent_path().string();
   std::vector<size_t> sizes = {1000, 10000, 100000, 1000000};
   std::vector<std::string> renderers;
 };

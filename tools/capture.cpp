@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
     for (const auto& n : render::renderer_names()) names += (names.empty() ? "" : ", ") + n;
     return names;
   }())->capture_default_str();
-  app.add_option("-o,--output", output, "PNG to write (a directory with --cameras)")->required();
+  app.add_option("-o,--output", output, "PNG to write (a directory with --cameras); default: out/<level>.png (out/<level>/)");
   app.add_option("--columns", columns, "CSV of x,wall,dist per column (a directory with --cameras)");
   app.add_option("--cameras", cameras, "file of cameras: NAME X Y ANGLE [EYE [FOV]] per line")->check(CLI::ExistingFile);
   app.add_flag("--stats", stats, "print per-frame statistics (a statdump line) and time per frame (apart)");
@@ -63,6 +63,15 @@ int main(int argc, char** argv) {
     if (!renderer) throw CLI::ValidationError("--renderer", "unknown renderer '" + renderer_name + "'");
 
     const bsp::LevelSource source = cli::level_source(level_args);
+    if (output.empty()) output = cli::default_output(source, cameras.empty() ? ".png" : "/");
+    if (cameras.empty()) {
+      cli::output_file(output, ".png", "--output");
+      if (!columns.empty()) cli::output_file(columns, ".csv", "--columns");
+    } else {
+      cli::output_dir(output);
+      if (!columns.empty()) cli::output_dir(columns);
+    }
+    if (!json.empty()) cli::output_file(json, ".json", "--json");
     std::vector<render::CameraSpec> shots;
     if (!json.empty() && !stats) throw CLI::ValidationError("--json", "writes the --stats: add --stats");
     if (!cameras.empty()) {
@@ -89,6 +98,7 @@ int main(int argc, char** argv) {
     probe.want_columns = !columns.empty();
     std::vector<std::string> json_frames;
     for (const render::CameraSpec& shot : shots) {
+      cli::warn_if_outside("capture", level, shot);
       const render::Camera camera = render::camera_at(level, shot.pos, shot.angle, shot.eye, shot.fov);
       const auto start = std::chrono::steady_clock::now();
       const render::RenderStats s = renderer->render(level, state, camera, frame, &probe);
@@ -115,6 +125,8 @@ int main(int argc, char** argv) {
                               ", \"time\": " + stats_json({{"ms_per_frame", std::round(ms * 1000) / 1000}}) + "}");
       }
     }
+    std::printf("wrote %s (%zu frame%s, %dx%d, %s)\n", output.c_str(), shots.size(), shots.size() == 1 ? "" : "s", width,
+                height, renderer_name.c_str());
     if (!json.empty()) {
       std::string j = "{\"level\": " + json_string(opened.name) + ", \"renderer\": " + json_string(renderer_name) +
                       ", \"frames\": [\n";

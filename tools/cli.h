@@ -4,7 +4,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +14,7 @@
 
 #include "engine/bsp/load.h"
 #include "engine/geom/geom.h"
+#include "engine/render/camera_file.h"
 #include "engine/render/renderer.h"
 #include "engine/util/error.h"
 #include "engine/util/file.h"
@@ -35,11 +38,41 @@ inline void check_eye(double eye) {
     throw CLI::ValidationError("--eye", "must be finite and within +-" + std::to_string(int64_t(render::kMaxCameraCoord)));
 }
 
-// "WxH" -> size; throws CLI::ValidationError.
-inline void parse_size(const std::string& text, int& w, int& h) {
+// "WxH" -> size; throws CLI::ValidationError naming the option.
+inline void parse_size(const std::string& text, int& w, int& h, const char* option = "--size") {
   char extra = 0;
   if (std::sscanf(text.c_str(), "%dx%d%c", &w, &h, &extra) != 2 || w < 1 || h < 1 || w > 16384 || h > 16384)
-    throw CLI::ValidationError("--size", "expected WxH between 1x1 and 16384x16384, got '" + text + "'");
+    throw CLI::ValidationError(option, "expected WxH between 1x1 and 16384x16384, got '" + text + "'");
+}
+
+// Edit distance (insertions, deletions, substitutions), for "did you mean".
+inline size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// The app's option nearest an unknown argument ("--sise" -> "--size"), or "".
+inline std::string nearest_option(const CLI::App& app, const std::string& arg) {
+  const std::string name = arg.substr(0, arg.find('='));
+  std::string best;
+  size_t best_distance = std::max<size_t>(2, name.size() / 4) + 1;
+  for (const CLI::Option* o : app.get_options()) {
+    for (const std::string& long_name : o->get_lnames()) {
+      const size_t d = edit_distance(name, "--" + long_name);
+      if (d < best_distance) best_distance = d, best = "--" + long_name;
+    }
+  }
+  return best;
 }
 
 inline double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -135,11 +168,72 @@ inline void report_warnings(const bsp::OpenedLevel& opened, bool all) {
                warnings.size(), warnings.size() == 1 ? "" : "s");
 }
 
+// The project's bundled data (maps/, with maps/textures/): beside the built tools
+// (build/tools/x -> maps/) or installed ones (bin/x -> share/pseudo3d/maps/), else
+// the source tree the tools were built from. Any working directory will do.
+inline std::filesystem::path bundled_maps_dir() {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    for (const auto& candidate : {exe.parent_path() / "../../maps", exe.parent_path() / "../share/pseudo3d/maps"})
+      if (std::filesystem::exists(candidate / "textures")) return std::filesystem::weakly_canonical(candidate);
+  }
+#ifdef P3D_DATA_DIR
+  return std::filesystem::path(P3D_DATA_DIR) / "maps";
+#else
+  return "maps";
+#endif
+}
+
+// An output file: it must end in `extension` (the format the tool writes), and its
+// directory is created. Throws CLI::ValidationError naming `option`.
+inline std::filesystem::path output_file(const std::string& path, const char* extension, const char* option) {
+  const std::filesystem::path p(path);
+  if (p.extension() != extension)
+    throw CLI::ValidationError(option, std::string("writes ") + extension + " files: name it " +
+                                           std::filesystem::path(p).replace_extension(extension).string());
+  if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+  return p;
+}
+
+// An output directory, created if need be.
+inline std::filesystem::path output_dir(const std::string& path) {
+  std::filesystem::create_directories(path);
+  return path;
+}
+
+// The default name of what a tool writes about a level: out/<level>.<extension>,
+// <level> being the file's stem or the WAD map's name in lower case.
+inline std::string default_output(const bsp::LevelSource& source, const std::string& suffix) {
+  std::string stem = source.is_wad() ? source.map : source.file.stem().string();
+  if (stem.empty()) stem = source.wads.back().stem().string();
+  for (char& c : stem) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return "out/" + stem + suffix;
+}
+
+// Warns (on stderr) about a camera standing outside every sector: its frame shows
+// only the void, which is rarely what was meant.
+inline void warn_if_outside(const char* tool, const level::Level& level, const render::CameraSpec& camera) {
+  if (level.sectors.empty() || level.default_sector != level::kNone || level.sector_at(camera.pos) != level::kNone) return;
+  std::fprintf(stderr, "%s: warning: camera%s%s at (%g, %g) is outside every sector (the frame shows the void)\n", tool,
+               camera.name.empty() ? "" : " ", camera.name.c_str(), camera.pos.x, camera.pos.y);
+}
+
 // Runs a tool's body: CLI errors exit 2 with usage; p3d::Error and I/O errors exit 1.
 template <typename Body>
 int run(CLI::App& app, int argc, char** argv, Body&& body) {
   try {
     app.parse(argc, argv);
+  } catch (const CLI::ExtrasError& e) {
+    std::fprintf(stderr, "%s: %s\n", app.get_name().c_str(), e.what());
+    for (int i = 1; i < argc; ++i) {
+      const std::string arg = argv[i];
+      if (arg.rfind("--", 0) != 0 || app.get_option_no_throw(arg.substr(2, arg.find('=') - 2))) continue;
+      if (const std::string near = nearest_option(app, arg); !near.empty())
+        std::fprintf(stderr, "%s: %s: did you mean %s?\n", app.get_name().c_str(), arg.c_str(), near.c_str());
+    }
+    std::fprintf(stderr, "Run with --help for more information.\n");
+    return 2;
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;  // --help is a success; every usage error exits 2, as documented
   }

@@ -117,13 +117,16 @@ int main(int argc, char** argv) {
       ->delimiter(',');
   app.add_option("--frames", frames, "timed frames per camera (median)")->check(CLI::Range(1, 1000))->capture_default_str();
   cli::add_renderer_options(app, ropt);
-  app.add_option("-o,--output", output, "PNG to write")->required();
+  app.add_option("-o,--output", output, "PNG to write (default: out/<level>_compare.png)");
   app.add_option("--json", json, "also write the table as JSON");
 
   return cli::run(app, argc, argv, [&] {
     int w = 0, h = 0;
     cli::parse_size(size_text, w, h);
     const bsp::LevelSource source = cli::level_source(level_args);
+    if (output.empty()) output = cli::default_output(source, "_compare.png");
+    cli::output_file(output, ".png", "--output");
+    if (!json.empty()) cli::output_file(json, ".json", "--json");
     std::vector<render::CameraSpec> specs;
     if (!path_file.empty()) {
       if (!pos_text.empty()) throw CLI::ValidationError("--pos", "use either --pos or --path");
@@ -163,6 +166,7 @@ int main(int argc, char** argv) {
     const size_t ref = rows.size() - 1;
 
     for (size_t c = 0; c < specs.size(); ++c) {
+      cli::warn_if_outside("compare", level, specs[c]);
       const render::Camera camera = render::camera_at(level, specs[c].pos, specs[c].angle, specs[c].eye, specs[c].fov);
       std::vector<render::Frame> frames_out(rows.size(), render::Frame(w, h));
       std::vector<render::Probe> probes(rows.size());
@@ -188,6 +192,7 @@ int main(int argc, char** argv) {
       }
     }
     image::save_png(compose(rows, w, h), output);
+    std::printf("wrote %s\n", output.c_str());
 
     // The table: medians over the cameras.
     std::printf("%s, %dx%d, %zu camera%s\n", map_path.c_str(), w, h, specs.size(), specs.size() == 1 ? "" : "s");

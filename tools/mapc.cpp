@@ -124,10 +124,13 @@ int compile_one(Args& a, const bsp::LevelSource& source, Progress& progress) {
   if (source.is_wad()) {
     wads = bsp::read_wads(source.wads);
     map_name = bsp::resolve_map_name(*wads, source.map);
-  } else if (bsp::is_source_path(source.file)) {
+  } else if (const bsp::FileKind kind = bsp::file_kind(source.file);
+             kind == bsp::FileKind::kMapSource || kind == bsp::FileKind::kGridSource) {
     parsed = map::load_source(source.file);
+  } else if (kind == bsp::FileKind::kCompiled) {
+    throw Error(source.file.string() + ": a compiled level (.bsp) already: capture, compare and game read it");
   } else {
-    throw Error(source.file.string() + ": not a map source (.map, .grid) or a WAD; a .bsp is already compiled");
+    throw Error(source.file.string() + ": " + bsp::describe(kind) + "; mapc compiles .map and .grid sources and WAD maps");
   }
   const double parse_seconds = cli::seconds_since(start);
 
@@ -213,7 +216,8 @@ int main(int argc, char** argv) {
   CLI::App app{"mapc: compile a level (.map, .grid, or a WAD map) into a self-contained BSP (.bsp)", "mapc"};
   Args a;
   cli::add_level_options(app, a.level);
-  app.add_option("-o,--output", a.output, "compiled level to write (.bsp); with --all, a directory")->required();
+  app.add_option("-o,--output", a.output,
+                 "compiled level to write (default: out/<level>.bsp); with --all, a directory (default: out/<wad>/)");
   app.add_flag("--all", a.all_maps, "compile every map of the WADs into the -o directory, with a summary table");
   app.add_flag("--all-warnings", a.all_warnings, "list every warning about a WAD map's quirks (default: 5 of a kind)");
   app.add_option("--strategy", a.strategy, "splitter choice: first, random, freesplit or greedy")
@@ -249,10 +253,14 @@ int main(int argc, char** argv) {
     a.options.seed = a.seed;
     const bsp::LevelSource source = cli::level_source(a.level);
     if (!a.json.empty() && !a.stats) throw CLI::ValidationError("--json", "writes the --stats: add --stats");
+    if (!a.json.empty()) cli::output_file(a.json, ".json", "--json");
+    if (!a.svg.empty()) cli::output_file(a.svg, ".svg", "--svg");
+    if (a.output.empty()) a.output = cli::default_output(source, a.all_maps ? "/" : ".bsp");
     if (a.all_maps) {
       if (!a.level.map.empty()) throw CLI::ValidationError("--all", "compiles every map: leave out --map");
       return compile_all(a, source);
     }
+    cli::output_file(a.output, ".bsp", "--output");
     Progress progress;
     return compile_one(a, source, progress);
   });

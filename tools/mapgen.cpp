@@ -8,15 +8,14 @@ using namespace p3d;
 
 namespace {
 
-// Texture file paths as written in the map: relative to the map's directory.
-std::vector<std::string> texture_files(const std::string& texture_dir, const std::string& output,
-                                       const std::vector<std::string>& names) {
-  const std::filesystem::path out_dir = std::filesystem::absolute(output).parent_path();
+// Texture file paths as written in the map: absolute, so the map can move anywhere on
+// this machine and still find the bundled textures.
+std::vector<std::string> texture_files(const std::string& texture_dir, const std::vector<std::string>& names) {
   std::vector<std::string> files;
   for (const std::string& name : names) {
-    const auto file = std::filesystem::absolute(std::filesystem::path(texture_dir) / (name + ".png"));
+    const auto file = std::filesystem::weakly_canonical(std::filesystem::path(texture_dir) / (name + ".png"));
     if (!std::filesystem::exists(file)) throw Error(file.string() + ": texture not found (see --textures)");
-    files.push_back(std::filesystem::relative(file, out_dir).string());
+    files.push_back(file.string());
   }
   return files;
 }
@@ -25,7 +24,7 @@ std::vector<std::string> texture_files(const std::string& texture_dir, const std
 
 int main(int argc, char** argv) {
   CLI::App app{"mapgen: write a random level: a .map (soup, rooms) or a .grid (maze, caves)", "mapgen"};
-  std::string kind, output, texture_dir = "maps/textures", grid_size = "64x64";
+  std::string kind, output, texture_dir = (cli::bundled_maps_dir() / "textures").string(), grid_size = "64x64";
   map::GenerateOptions options;
   map::GridOptions grid;
   app.add_option("kind", kind,
@@ -45,13 +44,18 @@ int main(int argc, char** argv) {
   app.add_option("-o,--output", output, "file to write")->required();
 
   return cli::run(app, argc, argv, [&] {
-    if (kind == "maze" || kind == "caves" || kind == "arena") {
+    const bool grid_kind = kind == "maze" || kind == "caves" || kind == "arena";
+    const std::string ext = std::filesystem::path(output).extension().string();
+    if (ext != (grid_kind ? ".grid" : ".map"))
+      throw CLI::ValidationError("--output", kind + " writes a " + (grid_kind ? ".grid tile map" : ".map") + ": name it " +
+                                                 std::filesystem::path(output).replace_extension(grid_kind ? ".grid" : ".map").string());
+    if (grid_kind) {
       cli::parse_size(grid_size, grid.cols, grid.rows);
       if (grid.cols < 8 || grid.rows < 8 || grid.cols > 4096 || grid.rows > 4096)
         throw CLI::ValidationError("--grid", "between 8x8 and 4096x4096 tiles");
       grid.kind = kind;
       grid.seed = options.seed;
-      grid.texture_files = texture_files(texture_dir, output, {"brick", "stone", "metal", "wood", "tech", "tiles", "ceiling"});
+      grid.texture_files = texture_files(texture_dir, {"brick", "stone", "metal", "wood", "tech", "tiles", "ceiling"});
       const std::string text = map::generate_grid_text(grid);
       map::validate(map::parse_grid(text, output));  // never write a map mapc would refuse
       write_file_atomically(output, text);
@@ -59,7 +63,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     const std::vector<std::string> names = {"brick", "stone", "metal", "wood", "tech", "rock"};
-    const auto files = texture_files(texture_dir, output, names);
+    const auto files = texture_files(texture_dir, names);
     for (size_t i = 0; i < names.size(); ++i)
       options.textures.push_back({names[i], image::load_png(std::filesystem::path(texture_dir) / (names[i] + ".png")), {}});
     const map::Source source = kind == "soup" ? map::generate_soup(options) : map::generate_rooms(options);

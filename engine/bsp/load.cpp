@@ -1,6 +1,8 @@
 #include "engine/bsp/load.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <string_view>
 
 #include "engine/level/io.h"
 #include "engine/util/error.h"
@@ -12,9 +14,41 @@ bool is_source_path(const std::filesystem::path& path) {
   return path.extension() == ".map" || path.extension() == ".grid";
 }
 
+FileKind file_kind(const std::filesystem::path& path) {
+  char head[8] = {};
+  if (std::FILE* f = std::fopen(path.c_str(), "rb")) {
+    const size_t n = std::fread(head, 1, sizeof head, f);
+    std::fclose(f);
+    const std::string_view bytes(head, n);
+    if (bytes.starts_with("P3DBSP")) return FileKind::kCompiled;
+    if (bytes.starts_with("IWAD") || bytes.starts_with("PWAD")) return FileKind::kWad;
+    if (bytes.starts_with("\x89PNG")) return FileKind::kPng;
+  }
+  if (path.extension() == ".map") return FileKind::kMapSource;
+  if (path.extension() == ".grid") return FileKind::kGridSource;
+  return FileKind::kUnknown;
+}
+
+const char* describe(FileKind kind) {
+  switch (kind) {
+    case FileKind::kMapSource: return "a .map source";
+    case FileKind::kGridSource: return "a .grid tile map";
+    case FileKind::kCompiled: return "a compiled level (.bsp)";
+    case FileKind::kWad: return "a WAD";
+    case FileKind::kPng: return "a PNG image, not a level";
+    case FileKind::kUnknown: break;
+  }
+  return "not a level (levels are .map and .grid sources, compiled .bsp files and WADs)";
+}
+
 level::Level load_level(const std::filesystem::path& path, const Options& options) {
-  if (!is_source_path(path)) return level::read(path);
-  return build(map::load_source(path), options);
+  switch (const FileKind kind = file_kind(path)) {
+    case FileKind::kCompiled: return level::read(path);
+    case FileKind::kMapSource:
+    case FileKind::kGridSource: return build(map::load_source(path), options);
+    case FileKind::kWad: throw Error(path.string() + ": a WAD: name its map with --iwad and --map");
+    default: throw Error(path.string() + ": " + describe(kind));
+  }
 }
 
 wad::Stack read_wads(const std::vector<std::filesystem::path>& paths) {

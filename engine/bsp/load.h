@@ -23,6 +23,15 @@ struct LevelSource {
 };
 
 bool is_source_path(const std::filesystem::path& path);  // .map or .grid
+
+// What a file is, by its first bytes (a compiled level's magic, a WAD's or PNG's
+// header) and only then by its extension (.map, .grid text).
+enum class FileKind { kMapSource, kGridSource, kCompiled, kWad, kPng, kUnknown };
+FileKind file_kind(const std::filesystem::path& path);
+// Why a file of this kind is not what a program wanted, for messages: "a PNG image".
+const char* describe(FileKind kind);
+// A .bsp, .map or .grid file, recognised by content; throws Error naming what the file
+// is when it is none of these.
 level::Level load_level(const std::filesystem::path& path, const Options& options = {});
 
 // Reads the WADs, later ones overriding earlier ones; throws Error for an unreadable or broken WAD.

@@ -130,15 +130,33 @@ std::vector<OpenSector> find_open_sectors_impl(const Source& src) {
   return out;
 }
 
+// A wall written the wrong way round leaves two walls of its sector leaving one of
+// its ends and two entering the other: name it, as that is the usual mistake.
+std::string reversed_wall_hint(const Source& src, int sector) {
+  std::map<std::pair<int64_t, int64_t>, int> balance;
+  auto key = [&](int v) { return std::pair{src.point(v).x, src.point(v).y}; };
+  for (const Wall& w : src.walls) {
+    if (w.segment) continue;
+    if (w.front.sector == sector) ++balance[key(w.v1)], --balance[key(w.v2)];
+    if (w.two_sided() && w.back.sector == sector) ++balance[key(w.v2)], --balance[key(w.v1)];
+  }
+  for (const Wall& w : src.walls)
+    if (!w.segment && w.front.sector == sector && balance[key(w.v1)] == 2 && balance[key(w.v2)] == -2)
+      return "; the wall at " + w.loc.str() +
+             " may run the wrong way round (a sector lies on the right of its walls, from the first vertex to the second)";
+  return "";
+}
+
 void check_sector_closure(const Source& src) {
   for (int s : unused_sectors(src))
     throw Error(src.sectors[s].loc, "sector '" + src.sectors[s].name + "' is not bounded by any wall");
   const std::vector<OpenSector> open = find_open_sectors_impl(src);
   if (open.empty()) return;
   const geom::Vec2 p = geom::to_world(open.front().at);
-  const Sector& s = src.sectors[open.front().sector];
+  const int sector = open.front().sector;
+  const Sector& s = src.sectors[size_t(sector)];
   throw Error(s.loc, "sector '" + s.name + "' is not closed: its boundary has an open end at (" + std::to_string(p.x) +
-                         ", " + std::to_string(p.y) + ")");
+                         ", " + std::to_string(p.y) + ")" + reversed_wall_hint(src, sector));
 }
 
 // A two-sided wall shows an upper part where the far ceiling is lower than the

@@ -68,6 +68,15 @@ MappedFile::~MappedFile() {
 }
 
 void write_file_atomically(const std::filesystem::path& path, std::span<const uint8_t> bytes) {
+  // Renaming over a device, a FIFO or a symbolic link would replace it by a regular file.
+  std::error_code ec;
+  const auto status = std::filesystem::symlink_status(path, ec);
+  if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw Error(path.string() + ": not a regular file (" +
+                (std::filesystem::is_directory(status) ? std::string("a directory")
+                 : std::filesystem::is_symlink(status) ? std::string("a symbolic link")
+                                                       : std::string("a device, FIFO or socket")) +
+                "); refusing to replace it");
   const std::filesystem::path tmp = path.string() + ".tmp-" + std::to_string(::getpid());
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) throw Error(path.string() + ": cannot write: " + errno_text());

@@ -381,6 +381,43 @@ TEST_F(Tools, BundledFreedoomDemoReachesTheExit) {
 }
 #endif
 
+// Tools behave alike, as programs people know: typos get a "did you mean", files are
+// recognised by content, outputs default under out/ with their folders created, a
+// camera in the void is warned about, and formats follow the names asked for.
+TEST_F(Tools, BehaveLikeProgramsPeopleKnow) {
+  std::string o;
+  const std::string outpost = (test::source_dir() / "maps/outpost.map").string();
+  EXPECT_EQ(test::run(tool("capture") + " " + outpost + " --sise 10x10", o), 2);
+  EXPECT_NE(o.find("capture: --sise: did you mean --size?"), std::string::npos) << o;
+  EXPECT_EQ(run_in_source(tool("mapc") + " maps/textures/brick.png -o " + out("x.bsp"), o), 1);
+  EXPECT_NE(o.find("maps/textures/brick.png: a PNG image, not a level"), std::string::npos) << o;
+  ASSERT_EQ(run_in_source(tool("mapc") + " maps/outpost.map -o " + out("o.bsp"), o), 0) << o;
+  std::filesystem::copy_file(out("o.bsp"), out("o.map"));  // a compiled level with the wrong name
+  EXPECT_EQ(test::run(tool("mapc") + " " + out("o.map") + " -o " + out("y.bsp"), o), 1);
+  EXPECT_NE(o.find("a compiled level (.bsp) already"), std::string::npos) << o;
+  ASSERT_EQ(test::run(tool("capture") + " " + out("o.map") + " --size 32x20 -o " + out("o.png"), o), 0) << o
+      << "read by its content";
+  EXPECT_EQ(test::run(tool("capture") + " " + outpost + " -o " + out("x.jpg"), o), 2);
+  EXPECT_NE(o.find("--output: writes .png files: name it"), std::string::npos) << o;
+  EXPECT_EQ(test::run(tool("mapgen") + " maze -o " + out("m.map"), o), 2);
+  EXPECT_NE(o.find("maze writes a .grid tile map: name it"), std::string::npos) << o;
+
+  // Defaults under out/ of the working directory, folders created; data found from anywhere.
+  ASSERT_EQ(test::run("cd " + dir_.string() + " && " + tool("mapc") + " " + outpost, o), 0) << o;
+  EXPECT_TRUE(std::filesystem::exists(out("out/outpost.bsp"))) << o;
+  ASSERT_EQ(test::run("cd " + dir_.string() + " && " + tool("capture") + " out/outpost.bsp --size 32x20", o), 0) << o;
+  EXPECT_TRUE(std::filesystem::exists(out("out/outpost.png"))) << o;
+  ASSERT_EQ(test::run(tool("capture") + " " + outpost + " --cameras " + test::source_dir().string() +
+                          "/tests/golden/outpost.cameras --size 32x20 -o " + out("new/dir"), o), 0) << o;
+  EXPECT_TRUE(std::filesystem::exists(out("new/dir/start.png")));
+  ASSERT_EQ(test::run("cd " + dir_.string() + " && " + tool("mapgen") + " rooms --walls 100 -o r.map && " + tool("mapc") +
+                          " r.map -o r.bsp",
+                      o), 0) << o << "mapgen finds the bundled textures from any directory";
+
+  ASSERT_EQ(test::run(tool("capture") + " " + outpost + " --pos 9000,9000 --size 32x20 -o " + out("void.png"), o), 0) << o;
+  EXPECT_NE(o.find("capture: warning: camera at (9000, 9000) is outside every sector"), std::string::npos) << o;
+}
+
 TEST_F(Tools, GeneratedMapsCompile) {
   std::string o;
   ASSERT_EQ(run_in_source(tool("mapgen") + " rooms --walls 500 --seed 3 -o " + out("r.map"), o), 0) << o;
