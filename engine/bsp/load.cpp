@@ -26,6 +26,7 @@ FileKind file_kind(const std::filesystem::path& path) {
   }
   if (path.extension() == ".map") return FileKind::kMapSource;
   if (path.extension() == ".grid") return FileKind::kGridSource;
+  if (path.extension() == ".bsp") return FileKind::kCompiled;  // a damaged one: the reader says what is wrong
   return FileKind::kUnknown;
 }
 
