@@ -12,6 +12,6 @@ build/tools/mapc maps/outpost.map -o out/outpost.bsp --stats
 build/tools/capture out/outpost.bsp --cameras maps/outpost.cameras -o out --stats
 echo "wrote out/outpost.bsp and the captures out/*.png"
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
-  echo "starting the game: W/S/A/D and the mouse to move, F1 for the keys, close the window to quit"
+  echo "starting the game: W/S/A/D and the mouse to move, Space opens doors, F1 for the keys, Esc for the menu"
   build/game/game out/outpost.bsp
 fi
