@@ -9,7 +9,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdarg>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 
@@ -28,6 +31,95 @@ using namespace p3d;
 using Clock = std::chrono::steady_clock;
 
 namespace {
+
+// The tables bench prints, kept as they are printed so --json says the same thing
+// with the same names: a section per "### title", a row per table line, each cell
+// under its column's name in snake case, numbers as numbers.
+class Report {
+ public:
+  void print(const char* fmt, ...) __attribute__((format(printf, 2, 3))) {
+    char buf[4096];
+    va_list args;
+    va_start(args, fmt);
+    std::vsnprintf(buf, sizeof buf, fmt, args);
+    va_end(args);
+    std::fputs(buf, stdout);
+    std::fflush(stdout);
+    pending_ += buf;
+    for (size_t nl; (nl = pending_.find('\n')) != std::string::npos; pending_.erase(0, nl + 1)) line(pending_.substr(0, nl));
+  }
+
+  std::string json() const {
+    std::string out = "{\"sections\": [";
+    for (size_t i = 0; i < sections_.size(); ++i) {
+      out += std::string(i ? ",\n " : "\n ") + "{\"title\": " + json_string(sections_[i].title) + ", \"rows\": [";
+      for (size_t r = 0; r < sections_[i].rows.size(); ++r) out += std::string(r ? ",\n  " : "\n  ") + sections_[i].rows[r];
+      out += "]}";
+    }
+    return out + "\n]}\n";
+  }
+
+ private:
+  struct Section {
+    std::string title;
+    std::vector<std::string> columns, rows;
+  };
+
+  static std::vector<std::string> cells(const std::string& line) {
+    std::vector<std::string> out;
+    size_t start = 1;
+    for (size_t bar; (bar = line.find('|', start)) != std::string::npos; start = bar + 1) {
+      std::string cell = line.substr(start, bar - start);
+      cell.erase(0, cell.find_first_not_of(' '));
+      cell.erase(cell.find_last_not_of(' ') + 1);
+      out.push_back(cell);
+    }
+    return out;
+  }
+
+  static std::string snake(const std::string& name) {
+    std::string out;
+    for (const char c : name)
+      if (std::isalnum(static_cast<unsigned char>(c)))
+        out += char(std::tolower(static_cast<unsigned char>(c)));
+      else if (!out.empty() && out.back() != '_')
+        out += '_';
+    while (!out.empty() && out.back() == '_') out.pop_back();
+    return out;
+  }
+
+  static std::string value(const std::string& cell) {
+    if (cell.empty()) return "null";
+    char* end = nullptr;
+    const double v = std::strtod(cell.c_str(), &end);
+    if (!cell.empty() && end && *end == 0 && std::isfinite(v)) return stat_number(v);
+    return json_string(cell);
+  }
+
+  void line(const std::string& text) {
+    if (text.rfind("### ", 0) == 0) {
+      sections_.push_back({text.substr(4), {}, {}});
+      return;
+    }
+    if (sections_.empty() || text.rfind("|", 0) != 0) return;
+    Section& s = sections_.back();
+    const std::vector<std::string> row = cells(text);
+    if (s.columns.empty()) {
+      for (const std::string& c : row) s.columns.push_back(snake(c));
+      return;
+    }
+    if (!row.empty() && row[0].rfind("---", 0) == 0) return;  // the header's rule
+    std::string object = "{";
+    for (size_t i = 0; i < row.size() && i < s.columns.size(); ++i)
+      object += (i ? ", " : "") + json_string(s.columns[i]) + ": " + value(row[i]);
+    s.rows.push_back(object + "}");
+  }
+
+  std::string pending_;
+  std::vector<Section> sections_;
+};
+
+Report report;
 
 struct Settings {
   cli::LevelArgs wads;         // the wad section: --iwad, --file, --map
@@ -130,10 +222,10 @@ std::vector<std::string> renderer_list(const Settings& s) {
 // ---- render ------------------------------------------------------------------
 
 void bench_render(const Settings& s) {
-  std::printf("\n### Renderers, %dx%d, one thread\n\n", s.width, s.height);
-  std::printf("| map | walls | renderer | median ms/frame | fps | frames | nodes visited | pixels written / screen | "
+  report.print("\n### Renderers, %dx%d, one thread\n\n", s.width, s.height);
+  report.print("| map | walls | renderer | median ms/frame | fps | frames | nodes visited | pixels written / screen | "
               "steps / ray |\n");
-  std::printf("|---|---:|---|---:|---:|---:|---:|---:|---:|\n");
+  report.print("|---|---:|---|---:|---:|---:|---:|---:|---:|\n");
   struct Case {
     std::string name;
     level::Level level;
@@ -165,11 +257,10 @@ void bench_render(const Settings& s) {
       auto r = render::make_renderer(name);
       if (!r || !r->supports(c.level)) continue;
       const Timing t = time_renderer(*r, c.level, c.path, s);
-      std::printf("| %s | %zu | %s | %s | %s | %zu | %s | %s | %s |\n", c.name.c_str(), c.level.walls.size(), name.c_str(),
+      report.print("| %s | %zu | %s | %s | %s | %zu | %s | %s | %s |\n", c.name.c_str(), c.level.walls.size(), name.c_str(),
                   fixed(t.median_ms, 3).c_str(), fixed(1000 / t.median_ms, 1).c_str(), t.frames,
                   fixed(t.nodes_visited, 0).c_str(), fixed(t.pixels / (s.width * s.height), 2).c_str(),
                   t.steps_per_ray > 0 ? fixed(t.steps_per_ray, 1).c_str() : "");
-      std::fflush(stdout);
     }
 }
 
@@ -178,12 +269,12 @@ void bench_render(const Settings& s) {
 void bench_scaling(const Settings& s) {
   const auto dir = std::filesystem::temp_directory_path() / ("p3d-bench-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  std::printf("\n### Scaling: compile (as mapc does: parse + validate, build, write) and render the same view\n\n");
-  std::printf("| map | walls | parse + validate s | build s | write s | total s | fragments | depth max/mean |");
-  for (const std::string& name : renderer_list(s)) std::printf(" %s ms/frame |", name.c_str());
-  std::printf("\n|---|---:|---:|---:|---:|---:|---:|---:|");
-  for (size_t i = 0; i < renderer_list(s).size(); ++i) std::printf("---:|");
-  std::printf("\n");
+  report.print("\n### Scaling: compile (as mapc does: parse + validate, build, write) and render the same view\n\n");
+  report.print("| map | walls | parse + validate s | build s | write s | total s | fragments | depth max/mean |");
+  for (const std::string& name : renderer_list(s)) report.print(" %s ms/frame |", name.c_str());
+  report.print("\n|---|---:|---:|---:|---:|---:|---:|---:|");
+  for (size_t i = 0; i < renderer_list(s).size(); ++i) report.print("---:|");
+  report.print("\n");
   const auto textures = bundled_textures(s);
   std::map<std::string, double> last_ms;  // renderer -> ms/frame at the previous size of this kind
   std::vector<std::string> files;
@@ -212,7 +303,7 @@ void bench_scaling(const Settings& s) {
       level::write(level, out);
       const double write = cli::seconds_since(t2);
       std::filesystem::remove(out);
-      std::printf("| %s | %s | %s | %s | %s | %s | %zu | %zu / %s |", kind, count_text(src.walls.size()).c_str(),
+      report.print("| %s | %s | %s | %s | %s | %s | %zu | %zu / %s |", kind, count_text(src.walls.size()).c_str(),
                   fixed(parse, 3).c_str(), fixed(build, 3).c_str(), fixed(write, 3).c_str(),
                   fixed(parse + build + write, 3).c_str(), stats.fragments, stats.max_depth,
                   fixed(stats.mean_depth, 1).c_str());
@@ -220,18 +311,17 @@ void bench_scaling(const Settings& s) {
       for (const std::string& name : renderer_list(s)) {
         auto r = render::make_renderer(name);
         if (!r || !r->supports(level)) {
-          std::printf(" n/a |");
+          report.print(" n/a |");
           continue;
         }
         if (last_ms.count(name) && last_ms[name] > 5000) {  // over 5 s a frame already: the next size is 10x that
-          std::printf(" skipped |");
+          report.print(" skipped |");
           continue;
         }
         last_ms[name] = time_renderer(*r, level, cameras, s).median_ms;
-        std::printf(" %s |", fixed(last_ms[name], 3).c_str());
+        report.print(" %s |", fixed(last_ms[name], 3).c_str());
       }
-      std::printf("\n");
-      std::fflush(stdout);
+      report.print("\n");
     }
   std::filesystem::remove_all(dir);
 }
@@ -241,10 +331,10 @@ void bench_scaling(const Settings& s) {
 void bench_grids(const Settings& s) {
   const auto dir = std::filesystem::temp_directory_path() / ("p3d-bench-grid-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  std::printf("\n### Grid ray casting and open distance (turning on the spot at the player start)\n\n");
-  std::printf("| grid | tiles | walls | dda ms/frame | dda cells / ray | bsp ms/frame | bsp nodes visited | sphere ms/frame | "
+  report.print("\n### Grid ray casting and open distance (turning on the spot at the player start)\n\n");
+  report.print("| grid | tiles | walls | dda ms/frame | dda cells / ray | bsp ms/frame | bsp nodes visited | sphere ms/frame | "
               "sphere steps / ray |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  report.print("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   map::GridOptions o;
   for (const char* name : {"brick", "stone", "metal", "wood", "tech", "tiles", "ceiling"})
     o.texture_files.push_back(
@@ -259,11 +349,10 @@ void bench_grids(const Settings& s) {
       const Timing dda = time_renderer(*render::make_renderer("dda"), level, cameras, s);
       const Timing bsp = time_renderer(*render::make_renderer("bsp"), level, cameras, s);
       const Timing sphere = time_renderer(*render::make_renderer("sphere"), level, cameras, s);
-      std::printf("| %s | %dx%d | %zu | %s | %s | %s | %s | %s | %s |\n", kind, side, side, level.walls.size(),
+      report.print("| %s | %dx%d | %zu | %s | %s | %s | %s | %s | %s |\n", kind, side, side, level.walls.size(),
                   fixed(dda.median_ms, 3).c_str(), fixed(dda.steps_per_ray, 1).c_str(), fixed(bsp.median_ms, 3).c_str(),
                   fixed(bsp.nodes_visited, 0).c_str(), fixed(sphere.median_ms, 3).c_str(),
                   fixed(sphere.steps_per_ray, 1).c_str());
-      std::fflush(stdout);
     }
   std::filesystem::remove_all(dir);
 }
@@ -271,10 +360,10 @@ void bench_grids(const Settings& s) {
 // ---- strategies --------------------------------------------------------------
 
 void bench_strategies(const Settings& s) {
-  std::printf("\n### BSP strategies (seed 1; bsp renderer on each map's path)\n\n");
-  std::printf("| map | strategy | fragments | splits | fragments / (n + 2n ln n) | depth max/mean | build ms | "
+  report.print("\n### BSP strategies (seed 1; bsp renderer on each map's path)\n\n");
+  report.print("| map | strategy | fragments | splits | fragments / (n + 2n ln n) | depth max/mean | build ms | "
               "bsp ms/frame | nodes visited |\n");
-  std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
+  report.print("|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
   struct Case {
     std::string name;
     map::Source src;
@@ -301,11 +390,10 @@ void bench_strategies(const Settings& s) {
       const auto path = c.path.empty() ? turn_around(level) : cameras_from(level, c.path);
       auto r = render::make_renderer("bsp");
       const Timing t = time_renderer(*r, level, path, s);
-      std::printf("| %s | %s | %zu | %zu | %s | %zu / %s | %s | %s | %s |\n", c.name.c_str(), bsp::strategy_name(strategy),
+      report.print("| %s | %s | %zu | %zu | %s | %zu / %s | %s | %s | %s |\n", c.name.c_str(), bsp::strategy_name(strategy),
                   stats.fragments, stats.splits, fixed(stats.fragments / stats.random_bound(), 3).c_str(), stats.max_depth,
                   fixed(stats.mean_depth, 1).c_str(), fixed(build_ms, 1).c_str(), fixed(t.median_ms, 3).c_str(),
                   fixed(t.nodes_visited, 0).c_str());
-      std::fflush(stdout);
     }
 }
 
@@ -443,12 +531,12 @@ void bench_wad(const Settings& s) {
   const auto dir = std::filesystem::temp_directory_path() / ("p3d-bench-wad-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string mapc = (own_directory() / "mapc").string();
-  std::printf("\n### %s: every map compiled (whole process, median of %d) beside ZDBSP, and rendered\n\n",
+  report.print("\n### %s: every map compiled (whole process, median of %d) beside ZDBSP, and rendered\n\n",
               source.wads.back().filename().c_str(), s.runs);
-  std::printf("| map | lines | mapc ms | zdbsp ms | mapc / zdbsp | segs (2-sided x2) | zdbsp segs | segs / zdbsp | "
+  report.print("| map | lines | mapc ms | zdbsp ms | mapc / zdbsp | segs (2-sided x2) | zdbsp segs | segs / zdbsp | "
               "depth | zdbsp depth | bsp ms/frame %dx%d | fps | sprites / frame | without things ms | with / without |\n",
               s.width, s.height);
-  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  report.print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   std::vector<double> time_ratios, seg_ratios, frame_ms, sprite_ratios;
   for (const std::string& map : maps) {
     bsp::Stats stats;
@@ -475,7 +563,7 @@ void bench_wad(const Settings& s) {
     frame_ms.push_back(t.with_things_ms);
     sprite_ratios.push_back(t.ratio);
     if (zdbsp) time_ratios.push_back(ours_ms / peer_ms), seg_ratios.push_back(double(segs) / double(tree.segs));
-    std::printf("| %s | %zu | %s | %s | %s | %zu | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", map.c_str(),
+    report.print("| %s | %zu | %s | %s | %s | %zu | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", map.c_str(),
                 stats.walls, fixed(ours_ms, 1).c_str(), zdbsp ? fixed(peer_ms, 1).c_str() : "n/a",
                 zdbsp ? fixed(ours_ms / peer_ms, 2).c_str() : "n/a", segs, zdbsp ? std::to_string(tree.segs).c_str() : "n/a",
                 zdbsp ? fixed(double(segs) / double(tree.segs), 3).c_str() : "n/a", fixed(stats.mean_depth, 1).c_str(),
@@ -484,7 +572,7 @@ void bench_wad(const Settings& s) {
                 fixed(t.without_things_ms, 3).c_str(), fixed(t.ratio, 2).c_str());
     std::fflush(stdout);
   }
-  std::printf("| geomean | | | | %s | | | %s | | | %s | | | | %s |\n",
+  report.print("| geomean | | | | %s | | | %s | | | %s | | | | %s |\n",
               zdbsp ? fixed(geomean(time_ratios), 2).c_str() : "n/a", zdbsp ? fixed(geomean(seg_ratios), 3).c_str() : "n/a",
               fixed(geomean(frame_ms), 3).c_str(), fixed(geomean(sprite_ratios), 2).c_str());
   std::filesystem::remove_all(dir);
@@ -519,11 +607,14 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--sizes", s.sizes, "wall counts for the scaling section")->delimiter(',')->capture_default_str();
   app.add_option("--renderers", s.renderers, "renderers to time (default: all)")->delimiter(',');
+  std::string json;
+  app.add_option("--json", json, "also write the tables as JSON (sections of rows, columns by name)");
   app.add_option("--source-dir", s.source_dir, "the project's source directory (for maps/)")
       ->check(CLI::ExistingDirectory)
       ->capture_default_str();
   return cli::run(app, argc, argv, [&] {
     cli::parse_size(size_text, s.width, s.height);
+    if (!json.empty()) cli::output_file(json, ".json", "--json");
     for (const auto& r : s.renderers)
       if (!render::make_renderer(r)) throw CLI::ValidationError("--renderers", "unknown renderer '" + r + "'");
     if (sections.empty())
@@ -532,9 +623,9 @@ int main(int argc, char** argv) {
     if (std::count(sections.begin(), sections.end(), "wad") && s.wads.iwad.empty())
       throw CLI::ValidationError("--iwad", "the wad section needs WADs: --iwad [--file ...] [--map ...]");
 #ifndef NDEBUG
-    std::printf("WARNING: not a Release build; timings are meaningless.\n");
+    report.print("WARNING: not a Release build; timings are meaningless.\n");
 #endif
-    std::printf("bench on %s, %dx%d, median of %d renders per camera\n", cpu_name().c_str(), s.width, s.height, s.repeat);
+    report.print("bench on %s, %dx%d, median of %d renders per camera\n", cpu_name().c_str(), s.width, s.height, s.repeat);
     for (const std::string& section : sections) {
       if (section == "render") bench_render(s);
       if (section == "scaling") bench_scaling(s);
@@ -542,6 +633,7 @@ int main(int argc, char** argv) {
       if (section == "strategies") bench_strategies(s);
       if (section == "wad") bench_wad(s);
     }
+    if (!json.empty()) write_file_atomically(json, report.json());
     return 0;
   });
 }
