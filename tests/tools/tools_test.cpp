@@ -418,6 +418,15 @@ TEST_F(Tools, BehaveLikeProgramsPeopleKnow) {
   EXPECT_NE(o.find("capture: warning: camera at (9000, 9000) is outside every sector"), std::string::npos) << o;
 }
 
+TEST_F(Tools, BenchWritesItsTablesAsJson) {
+  std::string o;
+  ASSERT_EQ(test::run(tool("bench") + " grids --size 32x20 --repeat 1 --budget 0.01 --json " + out("b.json"), o), 0) << o;
+  const std::string json = read_file_text(out("b.json"));
+  EXPECT_EQ(json.rfind("{\"sections\": [", 0), 0u) << json;
+  EXPECT_NE(json.find("\"title\": \"Grid ray casting"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"dda_ms_frame\": "), std::string::npos) << json;
+}
+
 TEST_F(Tools, GeneratedMapsCompile) {
   std::string o;
   ASSERT_EQ(run_in_source(tool("mapgen") + " rooms --walls 500 --seed 3 -o " + out("r.map"), o), 0) << o;
