@@ -27,6 +27,7 @@ HeadlessResult replay_headless(Session& session, const sim::Demo& demo, const He
   std::string csv = "frame,tic,x,y,z,angle,renderer";
   for (const Stat& f : render::stat_fields({})) csv += "," + f.name;
   csv += ",keys,secrets,exit\n";
+  std::string json = "{\"level\": " + json_string(session.name()) + ", \"frames\": [\n";
   HeadlessResult result;
   for (size_t tic = 0;; ++tic) {
     const bool last = tic == demo.tics.size() || session.exited() != sim::Exit::kNone;
@@ -44,6 +45,12 @@ HeadlessResult replay_headless(Session& session, const sim::Demo& demo, const He
       std::snprintf(line, sizeof line, ",%d,%d,%s\n", int(p.keys), session.world().secrets_found(),
                     exit_name(session.exited()));
       csv += line;
+      const Stats where = {{"frame", double(result.frames)}, {"tic", double(tic)}, {"x", p.pos.x}, {"y", p.pos.y},
+                           {"z", p.z},  {"angle", p.angle}, {"keys", double(p.keys)},
+                           {"secrets", double(session.world().secrets_found())}};
+      json += std::string(result.frames ? ",\n" : "") + "  {\"player\": " + stats_json(where) + ", \"renderer\": " +
+              json_string(session.renderer_name()) + ", \"stats\": " + stats_json(render::stat_fields(s)) +
+              ", \"exit\": " + json_string(exit_name(session.exited())) + "}";
       ++result.frames;
     }
     if (last) {
@@ -54,6 +61,7 @@ HeadlessResult replay_headless(Session& session, const sim::Demo& demo, const He
   }
   result.exit = session.exited();
   write_file_atomically(o.out_dir / "stats.csv", csv);
+  if (o.json) write_file_atomically(o.out_dir / "stats.json", json + "\n]}\n");
   return result;
 }
 

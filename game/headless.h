@@ -14,6 +14,7 @@ struct HeadlessOptions {
   int capture_every = 35;  // tics between frames; frame 0 is the start
   std::filesystem::path out_dir;
   int width = 640, height = 400;
+  bool json = false;  // also stats.json: the same fields by name
 };
 
 struct HeadlessResult {

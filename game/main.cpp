@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
   std::vector<int> warp;
   std::string record, play, out_dir, resolution, window = "960x600", renderer = "bsp", autopilot;
   bool headless = false, fullscreen = false, no_vsync = false, map_reload = false, timedemo = false, all_keys = false;
+  bool json = false;
   int capture_every = 35;
   uint64_t quit_after = 0;
   int skill = level::kDefaultSkill;
@@ -64,6 +65,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
   app.add_option("--out", out_dir, "--headless: directory for the frames and stats.csv");
+  app.add_flag("--json", json, "--headless --play: also stats.json, the same statistics by name");
   app.add_option("--resolution", resolution, "render at this fixed WxH (320x200 for the old look); "
                  "default: the window's size (640x400 headless)");
   app.add_option("--window", window, "window size WxH")->capture_default_str();
@@ -86,6 +88,7 @@ int main(int argc, char** argv) {
   return cli::run(app, argc, argv, [&] {
     if (!play.empty() && !autopilot.empty()) throw CLI::ValidationError("--play", "use either --play or --autopilot");
     if (timedemo && play.empty()) throw CLI::ValidationError("--timedemo", "needs --play");
+    if (json && (!headless || play.empty())) throw CLI::ValidationError("--json", "needs --headless --play");
     if (headless && play.empty() && autopilot.empty())
       throw CLI::ValidationError("--headless", "needs --play (to capture frames) or --autopilot (to record)");
     if (headless && !play.empty() && out_dir.empty()) throw CLI::ValidationError("--out", "--headless --play needs --out DIR");
@@ -116,7 +119,7 @@ int main(int argc, char** argv) {
 
     if (headless) {
       if (demo) {
-        game::HeadlessOptions o{capture_every, out_dir, rw ? rw : 640, rh ? rh : 400};
+        game::HeadlessOptions o{capture_every, out_dir, rw ? rw : 640, rh ? rh : 400, json};
         const game::HeadlessResult r = game::replay_headless(session, *demo, o);
         std::printf("replayed %zu of %zu tics (exit: %s), wrote %d frames and stats.csv to %s\n", r.tics,
                     demo->tics.size(), game::exit_name(r.exit), r.frames, out_dir.c_str());

@@ -363,7 +363,7 @@ TEST_F(Tools, BundledFreedoomDemoReachesTheExit) {
   std::string o;
   for (const char* run : {"a", "b"}) {
     ASSERT_EQ(run_in_source(std::string(P3D_GAME) + " --iwad " + iwad + " --map MAP01 --play maps/freedoom2_map01.demo " +
-                                "--headless --capture-every 100 --resolution 160x100 --out " + out(run), o), 0) << o;
+                                "--headless --capture-every 100 --resolution 160x100 --json --out " + out(run), o), 0) << o;
     EXPECT_NE(o.find("(exit: normal)"), std::string::npos) << o;
   }
   int files = 0;
@@ -374,6 +374,9 @@ TEST_F(Tools, BundledFreedoomDemoReachesTheExit) {
   EXPECT_GT(files, 5);
   const std::string csv = read_file_text(out("a") + "/stats.csv");
   EXPECT_NE(csv.rfind(",normal\n"), std::string::npos) << "the last row reports the exit";
+  const std::string json = read_file_text(out("a") + "/stats.json");
+  EXPECT_NE(json.find("\"stats\": {\"nodes_visited\": "), std::string::npos) << json;
+  EXPECT_NE(json.rfind("\"exit\": \"normal\"}"), std::string::npos) << json;
   // The route records the same demo again, byte for byte.
   ASSERT_EQ(run_in_source(std::string(P3D_GAME) + " --iwad " + iwad + " --map MAP01 --headless --autopilot " +
                               "maps/freedoom2_map01.route --record " + out("again.demo"), o), 0) << o;
