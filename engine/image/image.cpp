@@ -30,6 +30,8 @@ uint32_t heat(double v) {  // v in [0,1]: black -> blue -> red -> yellow -> whit
 
 Image decode_png(std::span<const uint8_t> bytes, const std::string& what) {
   if (bytes.size() > static_cast<size_t>(std::numeric_limits<int>::max())) throw Error(what + ": file too large");
+  static constexpr uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  if (bytes.size() < 8 || std::memcmp(bytes.data(), kSignature, 8) != 0) throw Error(what + ": not a PNG image");
   int w = 0, h = 0, channels = 0;
   if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &w, &h, &channels))
     throw Error(what + ": not a readable image (" + stbi_failure_reason() + ")");

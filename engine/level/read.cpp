@@ -22,7 +22,7 @@ class Reader {
   Level run() {
     section(format::kMeta, "META");
     level_.title = in_.str(limits::kMaxTitleLength);
-    level_.player_start = {finite("player x"), finite("player y")};
+    level_.player_start = {bounded("player x", geom::kMaxCoord), bounded("player y", geom::kMaxCoord)};
     level_.player_angle = finite("player angle");
     level_.default_sector = in_.i32();
     level_.sky_texture = in_.i32();
@@ -59,6 +59,11 @@ class Reader {
   double height(const char* what) {
     const double v = finite(what);
     if (std::fabs(v) > geom::kMaxCoord) in_.fail(std::string(what) + " is out of range");
+    return v;
+  }
+  double bounded(const char* what, double limit) {
+    const double v = finite(what);
+    if (std::fabs(v) > limit) in_.fail(std::string(what) + " is out of range");
     return v;
   }
   void index(int32_t v, int32_t lo, size_t count, const std::string& what) const {
@@ -163,10 +168,10 @@ class Reader {
     s.upper = in_.i32();
     s.middle = in_.i32();
     s.lower = in_.i32();
-    s.x_offset = finite("side x offset");
-    s.y_offset = finite("side y offset");
-    for (double& v : s.part_x) v = finite("side part x offset");
-    for (double& v : s.part_y) v = finite("side part y offset");
+    s.x_offset = bounded("side x offset", limits::kMaxOffset);
+    s.y_offset = bounded("side y offset", limits::kMaxOffset);
+    for (double& v : s.part_x) v = bounded("side part x offset", limits::kMaxOffset);
+    for (double& v : s.part_y) v = bounded("side part y offset", limits::kMaxOffset);
     s.light = in_.i32();
     if (s.light != kNone && (s.light < 0 || s.light > 255)) in_.fail("side light out of range");
     return s;
@@ -234,7 +239,7 @@ class Reader {
     level_.things.resize(n);
     for (Thing& t : level_.things) {
       t.type = in_.i32();
-      t.pos = {finite("thing x"), finite("thing y")};
+      t.pos = {bounded("thing x", geom::kMaxCoord), bounded("thing y", geom::kMaxCoord)};
       t.angle = finite("thing angle");
       t.flags = in_.u32();
       t.sprite = in_.i32();
@@ -255,7 +260,8 @@ class Reader {
     g.cols = int(cols);
     g.rows = int(rows);
     g.cell = finite("grid cell");
-    if (!(g.cell > 0) || g.cell * std::max(cols, rows) > geom::kMaxCoord) in_.fail("grid cell size out of range");
+    if (!(g.cell >= limits::kMinGridCell) || g.cell * std::max(cols, rows) > geom::kMaxCoord)
+      in_.fail("grid cell size out of range");
     const size_t cells = size_t(cols) * rows;
     if (in_.remaining() < cells * format::kGridCellBytes) in_.fail("truncated grid");
     const auto solid = in_.raw(cells);

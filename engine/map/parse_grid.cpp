@@ -41,6 +41,8 @@ class GridParser {
       if (words.empty()) continue;
       if (words[0] == "map") {
         if (words.size() != 1) throw Error(loc, "map: expected nothing after 'map'; the rows follow on the next lines");
+        if (map_line_ > 0)
+          throw Error(loc, "a second map block (the first is at line " + std::to_string(map_line_) + "); a .grid holds one");
         map_line_ = int(i) + 1;
         i = read_rows(lines, i + 1);
         continue;
@@ -57,15 +59,10 @@ class GridParser {
     const std::string_view k = s.keyword();
     if (!tiles_.empty()) s.fail("statements must come before the map rows");
     if (k == "title") {
-      std::string t;
-      for (size_t a = 0; a < s.arg_count(); ++a) {
-        if (a) t.push_back(' ');
-        t.append(s.arg(a));
-      }
-      src_.title = t;
+      src_.title = s.title();
     } else if (k == "texture") {
       s.expect_args(2, "texture NAME FILE.png");
-      const std::string name(s.arg(0));
+      const std::string name = s.name(0, "texture");
       if (name == "sky") s.fail("'sky' is reserved and cannot name a texture");
       if (textures_.count(name)) s.fail("texture '" + name + "' is defined twice");
       textures_[name] = int(src_.textures.size());

@@ -57,18 +57,13 @@ class Parser {
 
   void title(Statement& s) {
     s.finish();
-    std::string t;
-    for (size_t i = 0; i < s.arg_count(); ++i) {
-      if (i) t.push_back(' ');
-      t.append(s.arg(i));
-    }
-    source_.title = t;
+    source_.title = s.title();
   }
 
   void texture(Statement& s) {
     s.expect_args(2, "texture NAME FILE.png");
     s.finish();
-    const std::string name(s.arg(0));
+    const std::string name = s.name(0, "texture");
     if (name == "sky" || name == "-") s.fail("'" + name + "' is reserved and cannot name a texture");
     if (texture_index_.count(name)) s.fail("texture '" + name + "' is defined twice");
     Texture t = detail::load_texture(s, name, source_.path, s.arg(1));
@@ -85,7 +80,7 @@ class Parser {
   void vertex(Statement& s) {
     s.expect_args(3, "vertex NAME X Y");
     s.finish();
-    const std::string name(s.arg(0));
+    const std::string name = s.name(0, "vertex");
     if (vertex_index_.count(name)) s.fail("vertex '" + name + "' is defined twice");
     vertex_index_[name] = static_cast<int>(source_.vertices.size());
     source_.vertices.push_back({name, {s.coordinate(s.arg(1), "x"), s.coordinate(s.arg(2), "y")}, s.loc()});
@@ -100,7 +95,7 @@ class Parser {
       sec.name = "(default)";
     } else {
       s.expect_args(1, "sector NAME floor=F ceiling=C light=L floor_tex=T ceiling_tex=T");
-      sec.name = std::string(s.arg(0));
+      sec.name = s.name(0, "sector");
       if (sector_index_.count(sec.name)) s.fail("sector '" + sec.name + "' is defined twice");
     }
     sec.floor = height(s, s.require("floor"), "floor");
@@ -157,8 +152,8 @@ class Parser {
     Wall w = endpoints(s);
     w.segment = true;
     w.front.middle = texture_ref(s, s.require("texture"));
-    if (auto x = s.take("xoff")) w.front.x_offset = s.number(*x, "xoff");
-    if (auto y = s.take("yoff")) w.front.y_offset = s.number(*y, "yoff");
+    if (auto x = s.take("xoff")) w.front.x_offset = s.bounded(*x, "xoff", limits::kMaxOffset);
+    if (auto y = s.take("yoff")) w.front.y_offset = s.bounded(*y, "yoff", limits::kMaxOffset);
     w.back = w.front;
     s.finish();
     source_.walls.push_back(w);
@@ -179,8 +174,8 @@ class Parser {
     if (auto t = s.take(prefix + "upper")) sd.upper = texture_ref(s, *t);
     if (auto t = s.take(prefix + "middle")) sd.middle = texture_ref(s, *t);
     if (auto t = s.take(prefix + "lower")) sd.lower = texture_ref(s, *t);
-    if (auto x = s.take(prefix + "xoff")) sd.x_offset = s.number(*x, prefix + "xoff");
-    if (auto y = s.take(prefix + "yoff")) sd.y_offset = s.number(*y, prefix + "yoff");
+    if (auto x = s.take(prefix + "xoff")) sd.x_offset = s.bounded(*x, prefix + "xoff", limits::kMaxOffset);
+    if (auto y = s.take(prefix + "yoff")) sd.y_offset = s.bounded(*y, prefix + "yoff", limits::kMaxOffset);
     return sd;
   }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "engine/map/source.h"
+#include "engine/util/limits.h"
 
 namespace p3d::map::detail {
 
@@ -49,6 +50,28 @@ class Statement {
     if (ec == std::errc::result_out_of_range) fail(what + " '" + std::string(text) + "' is out of range");
     if (ec != std::errc() || ptr != end) fail(what + " '" + std::string(text) + "' is not a number");
     if (!std::isfinite(v)) fail(what + " '" + std::string(text) + "' is not finite");
+    return v;
+  }
+  // An argument that names something (a texture, sector, vertex): at most
+  // limits::kMaxNameLength bytes, as the compiled format holds.
+  std::string name(size_t i, const char* what) const {
+    if (args_[i].size() > limits::kMaxNameLength)
+      fail(std::string(what) + " name is longer than " + std::to_string(limits::kMaxNameLength) + " bytes");
+    return std::string(args_[i]);
+  }
+  // The rest of the line as a title, at most limits::kMaxTitleLength bytes.
+  std::string title() const {
+    std::string t;
+    for (size_t a = 0; a < args_.size(); ++a) (t += a ? " " : "") += args_[a];
+    if (t.size() > limits::kMaxTitleLength)
+      fail("title is longer than " + std::to_string(limits::kMaxTitleLength) + " bytes");
+    return t;
+  }
+  // A number within +-limit.
+  double bounded(std::string_view text, const std::string& what, double limit) const {
+    const double v = number(text, what);
+    if (std::fabs(v) > limit)
+      fail(what + " '" + std::string(text) + "' is outside +-" + std::to_string(static_cast<int64_t>(limit)));
     return v;
   }
   int integer(std::string_view text, const std::string& what, int lo, int hi) const {

@@ -10,6 +10,7 @@
 #include <cstring>
 
 #include "engine/util/error.h"
+#include "engine/util/limits.h"
 
 namespace p3d {
 
@@ -17,14 +18,31 @@ namespace {
 
 std::string errno_text() { return std::strerror(errno); }
 
+// Only regular files are read (a FIFO would block for ever, /dev/zero never ends), and
+// none larger than limits::kMaxFileBytes.
+void check_readable(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec) throw Error(path.string() + ": cannot open: " + ec.message());
+  if (std::filesystem::is_directory(status)) throw Error(path.string() + ": is a directory");
+  if (!std::filesystem::is_regular_file(status)) throw Error(path.string() + ": not a regular file (a device, FIFO or socket)");
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec) throw Error(path.string() + ": cannot open: " + ec.message());
+  if (size > limits::kMaxFileBytes)
+    throw Error(path.string() + ": too large (" + std::to_string(size) + " bytes; at most " +
+                std::to_string(limits::kMaxFileBytes) + ")");
+}
+
 template <typename Container>
 Container read_all(const std::filesystem::path& path) {
+  check_readable(path);
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) throw Error(path.string() + ": cannot open: " + errno_text());
   Container data;
   char buffer[1 << 16];
   size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) data.insert(data.end(), buffer, buffer + n);
+  while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0 && data.size() <= limits::kMaxFileBytes)
+    data.insert(data.end(), buffer, buffer + n);
   const bool failed = std::ferror(f);
   std::fclose(f);
   if (failed) throw Error(path.string() + ": read error");
@@ -33,18 +51,12 @@ Container read_all(const std::filesystem::path& path) {
 
 }  // namespace
 
-std::vector<uint8_t> read_file_bytes(const std::filesystem::path& path) {
-  if (std::filesystem::is_directory(path)) throw Error(path.string() + ": is a directory");
-  return read_all<std::vector<uint8_t>>(path);
-}
+std::vector<uint8_t> read_file_bytes(const std::filesystem::path& path) { return read_all<std::vector<uint8_t>>(path); }
 
-std::string read_file_text(const std::filesystem::path& path) {
-  if (std::filesystem::is_directory(path)) throw Error(path.string() + ": is a directory");
-  return read_all<std::string>(path);
-}
+std::string read_file_text(const std::filesystem::path& path) { return read_all<std::string>(path); }
 
 MappedFile::MappedFile(const std::filesystem::path& path) {
-  if (std::filesystem::is_directory(path)) throw Error(path.string() + ": is a directory");
+  check_readable(path);
   const int fd = ::open(path.c_str(), O_RDONLY);
   if (fd < 0) throw Error(path.string() + ": cannot open: " + errno_text());
   struct stat st {};

@@ -11,6 +11,9 @@ constexpr int kMaxTextureSize = 4096;    // texels per side
 constexpr size_t kMaxNameLength = 256;   // texture, sector and vertex names
 constexpr size_t kMaxTitleLength = 1024;
 constexpr int kMaxGridSide = 4096;       // tiles per side of a .grid map
+constexpr double kMaxOffset = 1 << 21;   // texture offsets, map units (as coordinates: the texture arithmetic is sized for it)
+constexpr double kMinGridCell = 1;       // map units per tile
+constexpr size_t kMaxFileBytes = size_t{1} << 31;  // any input file: 2 GiB
 
 // Paletted art (WAD levels): a 256-colour palette and Doom's 32 light maps over it.
 constexpr int kPaletteSize = 256;

@@ -35,7 +35,7 @@ class Tools : public ::testing::Test {
 TEST_F(Tools, BadMapsGiveTheirMessageAndNoOutput) {
   int cases = 0;
   for (const auto& entry : std::filesystem::directory_iterator(test::source_dir() / "tests/bad")) {
-    if (entry.path().extension() != ".map") continue;
+    if (entry.path().extension() != ".map" && entry.path().extension() != ".grid") continue;
     const std::string text = read_file_text(entry.path());
     ASSERT_EQ(text.rfind("# expect: ", 0), 0u) << entry.path() << " must open with '# expect: MESSAGE'";
     const std::string expected = first_line(text).substr(10);
