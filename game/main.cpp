@@ -72,14 +72,14 @@ int main(int argc, char** argv) {
   app.add_flag("--fullscreen", fullscreen, "start fullscreen (F11 toggles)");
   app.add_flag("--no-vsync", no_vsync, "uncapped frame rate");
   app.add_option("--renderer", renderer, "bsp, painter, dda, sphere, sphere-naive or reference")->capture_default_str();
-  app.add_option("--fov", fov, "horizontal field of view")->check(CLI::Range(30.0, 160.0))->capture_default_str();
+  app.add_option("--fov", fov, "horizontal field of view")->check(cli::finite_range(30.0, 160.0))->capture_default_str();
   app.add_flag("--map-reload", map_reload, "recompile and reload the level when its source or WAD changes on disk");
   app.add_option("--autopilot", autopilot,
                  "walk through these waypoints (a camera list; a camera named 'use' presses use there, 'wait' waits) "
                  "instead of reading input")
       ->check(CLI::ExistingFile);
   app.add_option("--sensitivity", sensitivity, "mouse turn per pixel, in 1/65536 of a turn")
-      ->check(CLI::Range(0.0, 10000.0))
+      ->check(cli::finite_range(0.0, 10000.0))
       ->capture_default_str();
   app.add_option("--quit-after-tics", quit_after, "quit after this many tics (0: never)")->capture_default_str();
   cli::add_skill_option(app, skill);

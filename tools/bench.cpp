@@ -603,7 +603,7 @@ int main(int argc, char** argv) {
   app.add_option("--size", size_text, "resolution WxH")->capture_default_str();
   app.add_option("--repeat", s.repeat, "renders per camera")->check(CLI::Range(1, 1000))->capture_default_str();
   app.add_option("--budget", s.budget_seconds, "seconds per renderer and map before the path is cut short")
-      ->check(CLI::Range(0.01, 3600.0))
+      ->check(cli::finite_range(0.01, 3600.0))
       ->capture_default_str();
   app.add_option("--sizes", s.sizes, "wall counts for the scaling section")->delimiter(',')->capture_default_str();
   app.add_option("--renderers", s.renderers, "renderers to time (default: all)")->delimiter(',');

@@ -38,9 +38,10 @@ int main(int argc, char** argv) {
   render::RendererOptions ropt;
   cli::add_level_options(app, level_args);
   app.add_option("--pos", pos_text, "camera position X,Y (map units; default: the player start)");
-  app.add_option("--angle", angle, "view angle, degrees counter-clockwise from east (default: the player's)");
-  app.add_option("--eye", eye, "eye height above the floor")->capture_default_str();
-  app.add_option("--fov", fov, "horizontal field of view, degrees")->check(CLI::Range(1.0, 179.0))->capture_default_str();
+  app.add_option("--angle", angle, "view angle, degrees counter-clockwise from east (default: the player's)")
+      ->check(cli::finite());
+  app.add_option("--eye", eye, "eye height above the floor")->check(cli::finite())->capture_default_str();
+  app.add_option("--fov", fov, "horizontal field of view, degrees")->check(cli::finite_range(1.0, 179.0))->capture_default_str();
   app.add_option("--size", size_text, "resolution WxH")->capture_default_str();
   app.add_option("--renderer", renderer_name, "renderer: " + [] {
     std::string names;

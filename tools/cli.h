@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -20,6 +21,34 @@
 #include "engine/util/file.h"
 
 namespace p3d::cli {
+
+constexpr double kAnyFinite = 1e300;
+
+// A number in [lo, hi]: unlike CLI::Range (every comparison with NaN is false), NaN
+// and infinities are refused.
+inline CLI::Validator finite_range(double lo, double hi) {
+  char desc[64];
+  std::snprintf(desc, sizeof desc, "FLOAT in [%g - %g]", lo, hi);
+  return CLI::Validator(
+      [lo, hi](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (text.empty() || *end != 0) return "'" + text + "' is not a number";
+        if (!std::isfinite(v) || v < lo || v > hi) {
+          char buf[128];
+          if (lo == -kAnyFinite)
+            std::snprintf(buf, sizeof buf, "must be a finite number, got '%s'", text.c_str());
+          else
+            std::snprintf(buf, sizeof buf, "must be a finite number from %g to %g, got '%s'", lo, hi, text.c_str());
+          return buf;
+        }
+        return "";
+      },
+      desc);
+}
+
+// Any finite number.
+inline CLI::Validator finite() { return finite_range(-kAnyFinite, kAnyFinite); }
 
 // "X,Y" -> point within the camera range; throws CLI::ValidationError.
 inline geom::Vec2 parse_point(const std::string& text, const char* option) {
@@ -82,10 +111,10 @@ inline double seconds_since(std::chrono::steady_clock::time_point start) {
 // The sphere tracers' settings, shared by capture and compare.
 inline void add_renderer_options(CLI::App& app, render::RendererOptions& o) {
   app.add_option("--epsilon", o.sphere_epsilon, "sphere: distance at which walls are tested exactly")
-      ->check(CLI::Range(1e-6, 1e6))
+      ->check(finite_range(1e-6, 1e6))
       ->capture_default_str();
   app.add_option("--relaxation", o.sphere_relaxation, "sphere: over-relaxation factor (1 = plain)")
-      ->check(CLI::Range(1.0, 1.99))
+      ->check(finite_range(1.0, 1.99))
       ->capture_default_str();
   app.add_option("--max-steps", o.sphere_max_steps, "sphere: steps before a ray gives up")
       ->check(CLI::Range(1, 1000000))

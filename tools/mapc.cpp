@@ -231,21 +231,21 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1 << 30))
       ->capture_default_str();
   app.add_option("--split-weight", a.options.split_weight, "greedy: cost of a split")
-      ->check(CLI::Range(0.0, 1e9))
+      ->check(cli::finite_range(0.0, 1e9))
       ->capture_default_str();
   app.add_option("--balance-weight", a.options.balance_weight, "greedy: cost of a fragment of imbalance")
-      ->check(CLI::Range(0.0, 1e9))
+      ->check(cli::finite_range(0.0, 1e9))
       ->capture_default_str();
   app.add_option("--sliver-weight", a.options.sliver_weight, "greedy: cost of a split leaving a piece under 1/16 unit")
-      ->check(CLI::Range(0.0, 1e9))
+      ->check(cli::finite_range(0.0, 1e9))
       ->capture_default_str();
   app.add_flag("--stats", a.stats, "print tree statistics (a statdump line) and times (apart)");
   app.add_option("--json", a.json, "with --stats: also write them as JSON, with the same names");
   app.add_flag("--check", a.check, "verify the BSP invariants exactly before writing");
   app.add_option("--svg", a.svg, "also draw the level and its BSP from above as SVG");
   app.add_option("--pos", a.pos, "--svg: show a camera at X,Y: its view cone, draw order and closed columns");
-  app.add_option("--angle", a.angle, "--svg: the camera's angle")->capture_default_str();
-  app.add_option("--fov", a.fov, "--svg: the camera's field of view")->check(CLI::Range(1.0, 179.0))->capture_default_str();
+  app.add_option("--angle", a.angle, "--svg: the camera's angle")->check(cli::finite())->capture_default_str();
+  app.add_option("--fov", a.fov, "--svg: the camera's field of view")->check(cli::finite_range(1.0, 179.0))->capture_default_str();
   app.add_option("--columns", a.columns, "--svg: screen columns traced")->check(CLI::Range(1, 4096))->capture_default_str();
 
   return cli::run(app, argc, argv, [&] {

@@ -66,6 +66,8 @@ Demo decode_demo(std::span<const uint8_t> bytes, const std::string& what) {
   d.angle = in.f64();
   if (!std::isfinite(d.start.x) || !std::isfinite(d.start.y) || !std::isfinite(d.angle))
     throw Error(what + ": demo start is not finite");
+  if (std::fabs(d.start.x) > geom::kMaxCoord || std::fabs(d.start.y) > geom::kMaxCoord || std::fabs(d.angle) > 1e6)
+    throw Error(what + ": demo start is out of range");
   d.skill = in.u8();
   if (d.skill < 1 || d.skill > 5) throw Error(what + ": demo skill " + std::to_string(d.skill) + " is not 1..5");
   d.keys = in.u8();

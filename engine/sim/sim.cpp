@@ -51,9 +51,13 @@ geom::BBox box_around(Vec2 a, Vec2 b, double margin) {
 
 Blockmap::Blockmap(const level::Level& level) {
   const geom::BBox& b = level.bounds;
-  origin_ = b.min - Vec2(kCell);
-  cols_ = int((b.max.x - origin_.x) / kCell) + 2;
-  rows_ = int((b.max.y - origin_.y) / kCell) + 2;
+  const double max_cells = std::max(double(1 << 16), 8.0 * double(level.walls.size()));
+  for (;; cell_ *= 2) {
+    origin_ = b.min - Vec2(cell_);
+    cols_ = int((b.max.x - origin_.x) / cell_) + 2;
+    rows_ = int((b.max.y - origin_.y) / cell_) + 2;
+    if (double(cols_) * rows_ <= max_cells) break;
+  }
   std::vector<std::vector<uint32_t>> cells(size_t(cols_) * rows_);
   for (uint32_t i = 0; i < level.walls.size(); ++i) {
     const level::Wall& w = level.walls[i];
@@ -62,8 +66,8 @@ Blockmap::Blockmap(const level::Level& level) {
     for (int r = r0; r <= r1; ++r)
       for (int c = c0; c <= c1; ++c) {
         // Only the cells the segment passes near: its distance to the cell's centre.
-        const Vec2 centre = origin_ + Vec2((c + 0.5) * kCell, (r + 0.5) * kCell);
-        if (glm::length(centre - closest_point(centre, w.a, w.b)) <= kCell * M_SQRT1_2 + 1e-9)
+        const Vec2 centre = origin_ + Vec2((c + 0.5) * cell_, (r + 0.5) * cell_);
+        if (glm::length(centre - closest_point(centre, w.a, w.b)) <= cell_ * M_SQRT1_2 + 1e-9)
           cells[size_t(r) * cols_ + c].push_back(i);
       }
   }

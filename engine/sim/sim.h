@@ -77,7 +77,8 @@ struct Event {
 
 enum class Exit : uint8_t { kNone, kNormal, kSecret };
 
-// Walls listed by 128-unit cells (Doom's blockmap): the collision queries.
+// Walls listed by 128-unit cells (Doom's blockmap): the collision queries. Its size
+// grows with the walls, not the level's area: a huge sparse level gets bigger cells.
 class Blockmap {
  public:
   explicit Blockmap(const level::Level& level);
@@ -92,9 +93,10 @@ class Blockmap {
   }
 
  private:
-  int cell_x(double x) const { return int(std::floor((x - origin_.x) / kCell)); }
-  int cell_y(double y) const { return int(std::floor((y - origin_.y) / kCell)); }
-  static constexpr double kCell = 128;
+  // Clamped before the cast: a position far outside the level maps to the border.
+  int cell_x(double x) const { return int(std::clamp(std::floor((x - origin_.x) / cell_), -1.0, double(cols_))); }
+  int cell_y(double y) const { return int(std::clamp(std::floor((y - origin_.y) / cell_), -1.0, double(rows_))); }
+  double cell_ = 128;  // Doom's 128 units, doubled until the cells number about the walls
   Vec2 origin_;
   int cols_ = 1, rows_ = 1;
   std::vector<uint32_t> start_, walls_;

@@ -168,6 +168,24 @@ TEST(Collision, FreedoomWalksWithSectorsMoving) {
   EXPECT_GT(stats.moving, stats.tics / 2);
 }
 
+// A 4-wall room 2 million units across: the blockmap grows with the walls, not the area
+// (Doom's 128-unit cells would need 270 million of them), and a position far outside
+// any level is no trouble.
+TEST(Collision, AHugeSparseLevelNeedsASmallBlockmap) {
+  const std::string text =
+      "texture brick " + (test::source_dir() / "maps/textures/brick.png").string() +
+      "\nsector room floor=0 ceiling=128 floor_tex=brick ceiling_tex=brick\n"
+      "vertex a -1048576 -1048576\nvertex b -1048576 1048576\nvertex c 1048576 1048576\nvertex d 1048576 -1048576\n"
+      "wall a b front=room middle=brick\nwall b c front=room middle=brick\nwall c d front=room middle=brick\n"
+      "wall d a front=room middle=brick\nplayer 0 0 0\n";
+  const level::Level level = test::compile(map::parse_map(text, "huge.map"));
+  World world(level);
+  Player p = world.spawn();
+  for (int t = 0; t < 35; ++t) world.tick(p, {50, 0, 0, 0});
+  EXPECT_GT(p.pos.x, 100);
+  EXPECT_EQ(world.heights_at({1e12, -1e12}).floor, 0) << "far outside: the border cells, the default heights";
+}
+
 TEST(Collision, HighSpeedIntoAWallStops) {
   const level::Level level = test::compile(map::load_grid(test::source_dir() / "maps/bunker.grid"));
   World world(level);

@@ -430,6 +430,26 @@ TEST_F(Tools, BenchWritesItsTablesAsJson) {
   EXPECT_NE(json.find("\"dda_ms_frame\": "), std::string::npos) << json;
 }
 
+// NaN compares false with every bound, so CLI11's ranges let it through: ours refuse it.
+TEST_F(Tools, NotANumberIsRefusedEverywhere) {
+  std::string o;
+  const std::string outpost = (test::source_dir() / "maps/outpost.map").string();
+  for (const std::string& option : {"--fov nan", "--relaxation nan", "--epsilon inf", "--eye nan", "--angle nan", "--fov -inf"}) {
+    EXPECT_EQ(test::run(tool("capture") + " " + outpost + " " + option + " -o " + out("n.png"), o), 2) << option << o;
+    EXPECT_NE(o.find(option.substr(0, option.find(' ')) + ": must be a finite number"), std::string::npos) << option << o;
+    EXPECT_EQ(test::run(tool("compare") + " " + outpost + " " + option + " -o " + out("n.png"), o), 2) << option << o;
+  }
+  EXPECT_EQ(test::run(tool("mapc") + " " + outpost + " --svg " + out("a.svg") + " --angle nan -o " + out("a.bsp"), o), 2) << o;
+  EXPECT_EQ(test::run(tool("mapc") + " " + outpost + " --split-weight nan -o " + out("a.bsp"), o), 2) << o;
+  EXPECT_EQ(test::run(tool("bench") + " render --budget nan", o), 2) << o;
+#ifdef P3D_GAME
+  EXPECT_EQ(test::run(std::string(P3D_GAME) + " " + outpost + " --fov nan", o), 2) << o;
+  EXPECT_EQ(test::run(std::string(P3D_GAME) + " " + outpost + " --sensitivity inf", o), 2) << o;
+#endif
+  EXPECT_FALSE(std::filesystem::exists(out("n.png")));
+  EXPECT_FALSE(std::filesystem::exists(out("a.bsp")));
+}
+
 TEST_F(Tools, GeneratedMapsCompile) {
   std::string o;
   ASSERT_EQ(run_in_source(tool("mapgen") + " rooms --walls 500 --seed 3 -o " + out("r.map"), o), 0) << o;
