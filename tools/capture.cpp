@@ -98,6 +98,7 @@ int main(int argc, char** argv) {
     render::Probe probe;
     probe.want_columns = !columns.empty();
     std::vector<std::string> json_frames;
+    Outputs outputs;  // every frame, all or nothing
     for (const render::CameraSpec& shot : shots) {
       cli::warn_if_outside("capture", level, shot);
       const render::Camera camera = render::camera_at(level, shot.pos, shot.angle, shot.eye, shot.fov);
@@ -106,10 +107,11 @@ int main(int argc, char** argv) {
       double ms = cli::seconds_since(start) * 1000;
 
       const bool many = !cameras.empty();
-      image::save_png(frame, many ? std::filesystem::path(output) / (shot.name + ".png") : std::filesystem::path(output));
+      outputs.add(many ? std::filesystem::path(output) / (shot.name + ".png") : std::filesystem::path(output),
+                  image::encode_png(frame));
       if (!columns.empty())
-        write_file_atomically(many ? std::filesystem::path(columns) / (shot.name + ".csv") : std::filesystem::path(columns),
-                              columns_csv(level, probe.columns));
+        outputs.add(many ? std::filesystem::path(columns) / (shot.name + ".csv") : std::filesystem::path(columns),
+                    columns_csv(level, probe.columns));
       if (stats) {
         std::vector<double> times{ms};  // median of a few more frames: one frame is too noisy to report
         for (int i = 0; i < 4; ++i) {
@@ -126,14 +128,15 @@ int main(int argc, char** argv) {
                               ", \"time\": " + stats_json({{"ms_per_frame", std::round(ms * 1000) / 1000}}) + "}");
       }
     }
-    std::printf("wrote %s (%zu frame%s, %dx%d, %s)\n", output.c_str(), shots.size(), shots.size() == 1 ? "" : "s", width,
-                height, renderer_name.c_str());
     if (!json.empty()) {
       std::string j = "{\"level\": " + json_string(opened.name) + ", \"renderer\": " + json_string(renderer_name) +
                       ", \"frames\": [\n";
       for (size_t i = 0; i < json_frames.size(); ++i) j += "  " + json_frames[i] + (i + 1 < json_frames.size() ? ",\n" : "\n");
-      write_file_atomically(json, j + "]}\n");
+      outputs.add(json, j + "]}\n");
     }
+    outputs.commit();
+    std::printf("wrote %s (%zu frame%s, %dx%d, %s)\n", output.c_str(), shots.size(), shots.size() == 1 ? "" : "s", width,
+                height, renderer_name.c_str());
     return 0;
   });
 }

@@ -154,6 +154,8 @@ inline void add_skill_option(CLI::App& app, int& skill) {
 
 // Whether a file starts like a WAD (IWAD or PWAD).
 inline bool is_wad_file(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return false;  // never open a FIFO: it would block
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) return false;
   char magic[4] = {};

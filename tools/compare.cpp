@@ -192,8 +192,8 @@ int main(int argc, char** argv) {
         }
       }
     }
-    image::save_png(compose(rows, w, h), output);
-    std::printf("wrote %s\n", output.c_str());
+    Outputs outputs;  // the picture and the JSON, all or nothing
+    outputs.add(output, image::encode_png(compose(rows, w, h)));
 
     // The table: medians over the cameras.
     std::printf("%s, %dx%d, %zu camera%s\n", map_path.c_str(), w, h, specs.size(), specs.size() == 1 ? "" : "s");
@@ -225,7 +225,9 @@ int main(int argc, char** argv) {
            (i + 1 < rows.size() ? "},\n" : "}\n");
     }
     j += "]}\n";
-    if (!json.empty()) write_file_atomically(json, j);
+    if (!json.empty()) outputs.add(json, j);
+    outputs.commit();
+    std::printf("wrote %s\n", output.c_str());
     return 0;
   });
 }

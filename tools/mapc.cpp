@@ -46,13 +46,9 @@ Stats stat_fields(const bsp::Stats& s) {
           {"fragments_per_bound", bound > 0 ? s.fragments / bound : 0.0}};
 }
 
-// The tree's statistics (a statdump line), then the times apart.
-void print_stats(const bsp::Stats& s, double parse_seconds, double build_seconds, const std::string& json) {
-  const Stats times = {{"parse_seconds", std::round(parse_seconds * 1000) / 1000},
-                       {"build_seconds", std::round(build_seconds * 1000) / 1000}};
-  std::printf("stats: %s\ntime: %s\n", statdump(stat_fields(s)).c_str(), statdump(times).c_str());
-  if (!json.empty())
-    write_file_atomically(json, "{\"stats\": " + stats_json(stat_fields(s)) + ", \"time\": " + stats_json(times) + "}\n");
+Stats time_fields(double parse_seconds, double build_seconds) {
+  return {{"parse_seconds", std::round(parse_seconds * 1000) / 1000},
+          {"build_seconds", std::round(build_seconds * 1000) / 1000}};
 }
 
 // Shows the current phase (and the build's percentage) on a terminal once the
@@ -156,12 +152,17 @@ int compile_one(Args& a, const bsp::LevelSource& source, Progress& progress) {
     view = tools::trace_view(level, camera, a.columns, std::max(1, a.columns * 5 / 8));
   }
   progress.phase("writing");
-  level::write(level, a.output);
-  if (!a.svg.empty()) write_file_atomically(a.svg, tools::overview_svg(level, view));
+  Outputs outputs;  // all or nothing
+  outputs.add(a.output, level::encode(level));
+  if (!a.svg.empty()) outputs.add(a.svg, tools::overview_svg(level, view));
+  const Stats times = time_fields(parse_seconds, build_seconds);
+  if (!a.json.empty())
+    outputs.add(a.json, "{\"stats\": " + stats_json(stat_fields(stats)) + ", \"time\": " + stats_json(times) + "}\n");
+  outputs.commit();
   std::printf("%s: %zu walls, %zu fragments, %zu nodes, depth %zu (mean %.1f) -> %s\n", name.c_str(), stats.walls,
               stats.fragments, stats.nodes, stats.max_depth, stats.mean_depth, a.output.c_str());
   if (a.check) std::printf("%s: the BSP invariants hold\n", name.c_str());
-  if (a.stats) print_stats(stats, parse_seconds, build_seconds, a.json);
+  if (a.stats) std::printf("stats: %s\ntime: %s\n", statdump(stat_fields(stats)).c_str(), statdump(times).c_str());
   return 0;
 }
 

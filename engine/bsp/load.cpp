@@ -15,6 +15,8 @@ bool is_source_path(const std::filesystem::path& path) {
 }
 
 FileKind file_kind(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) return FileKind::kNotRegular;
   char head[8] = {};
   if (std::FILE* f = std::fopen(path.c_str(), "rb")) {
     const size_t n = std::fread(head, 1, sizeof head, f);
@@ -37,6 +39,7 @@ const char* describe(FileKind kind) {
     case FileKind::kCompiled: return "a compiled level (.bsp)";
     case FileKind::kWad: return "a WAD";
     case FileKind::kPng: return "a PNG image, not a level";
+    case FileKind::kNotRegular: return "not a regular file (a directory, device, FIFO or socket)";
     case FileKind::kUnknown: break;
   }
   return "not a level (levels are .map and .grid sources, compiled .bsp files and WADs)";

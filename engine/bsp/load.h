@@ -26,7 +26,7 @@ bool is_source_path(const std::filesystem::path& path);  // .map or .grid
 
 // What a file is, by its first bytes (a compiled level's magic, a WAD's or PNG's
 // header) and only then by its extension (.map, .grid text).
-enum class FileKind { kMapSource, kGridSource, kCompiled, kWad, kPng, kUnknown };
+enum class FileKind { kMapSource, kGridSource, kCompiled, kWad, kPng, kNotRegular, kUnknown };
 FileKind file_kind(const std::filesystem::path& path);
 // Why a file of this kind is not what a program wanted, for messages: "a PNG image".
 const char* describe(FileKind kind);

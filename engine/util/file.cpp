@@ -79,8 +79,10 @@ MappedFile::~MappedFile() {
   if (copy_.empty() && data_) ::munmap(const_cast<uint8_t*>(data_), size_);
 }
 
-void write_file_atomically(const std::filesystem::path& path, std::span<const uint8_t> bytes) {
-  // Renaming over a device, a FIFO or a symbolic link would replace it by a regular file.
+namespace {
+
+// Renaming over a device, a FIFO or a symbolic link would replace it by a regular file.
+void check_replaceable(const std::filesystem::path& path) {
   std::error_code ec;
   const auto status = std::filesystem::symlink_status(path, ec);
   if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
@@ -89,16 +91,53 @@ void write_file_atomically(const std::filesystem::path& path, std::span<const ui
                  : std::filesystem::is_symlink(status) ? std::string("a symbolic link")
                                                        : std::string("a device, FIFO or socket")) +
                 "); refusing to replace it");
-  const std::filesystem::path tmp = path.string() + ".tmp-" + std::to_string(::getpid());
+}
+
+std::filesystem::path temporary_for(const std::filesystem::path& path) {
+  return path.string() + ".tmp-" + std::to_string(::getpid());
+}
+
+// Writes the bytes to path's temporary; throws (removing it) on failure.
+void write_temporary(const std::filesystem::path& path, std::span<const uint8_t> bytes) {
+  check_replaceable(path);
+  const std::filesystem::path tmp = temporary_for(path);
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) throw Error(path.string() + ": cannot write: " + errno_text());
   const bool ok = bytes.empty() || std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
   const bool closed = std::fclose(f) == 0;
-  if (!ok || !closed || std::rename(tmp.c_str(), path.c_str()) != 0) {
+  if (!ok || !closed) {
     const std::string why = errno_text();
     std::remove(tmp.c_str());
     throw Error(path.string() + ": cannot write: " + why);
   }
+}
+
+void rename_temporary(const std::filesystem::path& path) {
+  const std::filesystem::path tmp = temporary_for(path);
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const std::string why = errno_text();
+    std::remove(tmp.c_str());
+    throw Error(path.string() + ": cannot write: " + why);
+  }
+}
+
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& path, std::span<const uint8_t> bytes) {
+  write_temporary(path, bytes);
+  rename_temporary(path);
+}
+
+void Outputs::commit() {
+  size_t written = 0;
+  try {
+    for (; written < files_.size(); ++written) write_temporary(files_[written].first, files_[written].second);
+  } catch (...) {
+    for (size_t i = 0; i < written; ++i) std::remove(temporary_for(files_[i].first).c_str());
+    throw;
+  }
+  for (const auto& [path, bytes] : files_) rename_temporary(path);
+  files_.clear();
 }
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& text) {

@@ -33,4 +33,17 @@ class MappedFile {
 void write_file_atomically(const std::filesystem::path& path, std::span<const uint8_t> bytes);
 void write_file_atomically(const std::filesystem::path& path, const std::string& text);
 
+// Several outputs of one command, all or nothing: every file goes to a temporary
+// first, and only when all are written are they renamed into place.
+class Outputs {
+ public:
+  void add(std::filesystem::path path, std::vector<uint8_t> bytes) { files_.push_back({std::move(path), std::move(bytes)}); }
+  void add(std::filesystem::path path, const std::string& text) { add(std::move(path), std::vector<uint8_t>(text.begin(), text.end())); }
+  // Throws Error (and leaves nothing behind) if any cannot be written.
+  void commit();
+
+ private:
+  std::vector<std::pair<std::filesystem::path, std::vector<uint8_t>>> files_;
+};
+
 }  // namespace p3d

@@ -3,6 +3,8 @@
 // and byte-for-byte reproducible outputs.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <chrono>
 
 #include <fstream>
@@ -448,6 +450,35 @@ TEST_F(Tools, NotANumberIsRefusedEverywhere) {
 #endif
   EXPECT_FALSE(std::filesystem::exists(out("n.png")));
   EXPECT_FALSE(std::filesystem::exists(out("a.bsp")));
+}
+
+// A command's outputs are all written or none: a later one failing leaves nothing of
+// the earlier ones; a device, FIFO or symlink is never replaced by a regular file.
+TEST_F(Tools, OutputsAreAllOrNothingAndNeverReplaceDevices) {
+  std::string o;
+  const std::string outpost = (test::source_dir() / "maps/outpost.map").string();
+  std::filesystem::create_directory(out("taken.svg"));  // the SVG cannot be written there
+  EXPECT_EQ(test::run(tool("mapc") + " " + outpost + " -o " + out("a.bsp") + " --svg " + out("taken.svg"), o), 1) << o;
+  EXPECT_NE(o.find("taken.svg: not a regular file (a directory); refusing to replace it"), std::string::npos) << o;
+  EXPECT_FALSE(std::filesystem::exists(out("a.bsp"))) << "the .bsp came first but was not kept";
+  std::filesystem::create_directory(out("taken.json"));
+  EXPECT_EQ(test::run(tool("capture") + " " + outpost + " --size 16x10 --stats -o " + out("a.png") + " --json " +
+                          out("taken.json"), o), 1) << o;
+  EXPECT_FALSE(std::filesystem::exists(out("a.png")));
+  std::filesystem::create_symlink("/dev/null", out("link.png"));
+  EXPECT_EQ(test::run(tool("capture") + " " + outpost + " --size 16x10 -o " + out("link.png"), o), 1) << o;
+  EXPECT_NE(o.find("link.png: not a regular file (a symbolic link); refusing to replace it"), std::string::npos) << o;
+  EXPECT_TRUE(std::filesystem::is_symlink(out("link.png")));
+  for (const auto& entry : std::filesystem::directory_iterator(dir_))
+    EXPECT_EQ(entry.path().string().find(".tmp-"), std::string::npos) << "temporary file left: " << entry.path();
+  // Reading: only regular files.
+  EXPECT_EQ(test::run(tool("mapc") + " /dev/zero -o " + out("z.bsp"), o), 1) << o;
+  EXPECT_NE(o.find("/dev/zero: not a regular file"), std::string::npos) << o;
+  ASSERT_EQ(::mkfifo(out("fifo.map").c_str(), 0600), 0);
+  EXPECT_EQ(test::run("timeout 10 " + tool("mapc") + " " + out("fifo.map") + " -o " + out("f.bsp"), o), 1) << o
+      << "a FIFO is refused, not read for ever";
+  EXPECT_EQ(test::run("timeout 10 " + tool("capture") + " " + outpost + " --cameras " + out("fifo.map"), o), 1) << o;
+  EXPECT_NE(o.find("fifo.map: not a regular file"), std::string::npos) << o;
 }
 
 TEST_F(Tools, GeneratedMapsCompile) {
