@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The README's second command: build and run the whole test suite twice, first in a
-# Release build, then under AddressSanitizer + UndefinedBehaviorSanitizer.
+# Release build, then under AddressSanitizer + UndefinedBehaviorSanitizer; then a
+# smoke run of every fuzz target (clang's libFuzzer, 5 s each, also under ASan + UBSan).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/install-deps.sh
@@ -12,3 +13,4 @@ cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=Debug -DENGINE_SANITIZE
 cmake --build build-sanitize
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build-sanitize --output-on-failure -j "$jobs"
+tests/fuzz/run.sh 5

@@ -23,7 +23,11 @@ class Checker {
 
   std::vector<std::string> run() {
     check_coverage();
-    check_tree();
+    if (level_.nodes.empty()) {  // no walls: the whole plane is one leaf
+      if (!level_.walls.empty() || level_.leaves.size() != 1) problem("a tree without nodes must be one leaf and no walls");
+    } else {
+      check_tree();
+    }
     return std::move(problems_);
   }
 

@@ -41,6 +41,7 @@ class Importer {
     add_vertices();
     add_walls();
     trim_overlaps();
+    if (src_.walls.empty()) throw Error(data_.where + ": no usable lines: there is no level to build");
     report_missing_parts();
     report_crossings();
     report_open_sectors();

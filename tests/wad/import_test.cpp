@@ -104,6 +104,18 @@ void expect_sound(const level::Level& level, const std::string& what) {
   }
 }
 
+// Found by fuzzing: a map whose every line is dropped (here: all zero-length) left an
+// empty tree that the checker and point location read past. It is an error now.
+TEST(Import, AMapWithNoUsableLinesIsAnError) {
+  TestMap m;
+  m.sectors.push_back({});
+  TestMap::Side s;
+  s.middle = "WALL";
+  for (int i = 0; i < 3; ++i) m.lines.push_back({m.add_vertex(16 * i, 0), m.add_vertex(16 * i, 0), 1, 0, 0, m.add_side(s)});
+  m.things.push_back({8, 8, 0, 1, 7});
+  EXPECT_EQ(build_error(m), "test.wad:MAP01: no usable lines: there is no level to build");
+}
+
 TEST(Import, AValidMapCompilesWithoutWarnings) {
   const Built b = build(two_rooms());
   EXPECT_TRUE(b.warnings.empty()) << b.warnings.front();

@@ -1,0 +1,35 @@
+// What every fuzz target shares: where inputs' texture paths resolve, and a small render of a level through two
+// renderers, so what a reader accepts is also drawn.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+
+#include "engine/level/level.h"
+#include "engine/render/renderer.h"
+#include "engine/util/error.h"
+
+namespace p3d::fuzz {
+
+inline std::filesystem::path maps_dir() { return std::filesystem::path(P3D_SOURCE_DIR) / "maps"; }
+// .map and .grid inputs are read as if they lay in tests/fuzz/seeds/ (the seeds there
+// use the smallest bundled textures, so an input is quick to load).
+inline std::filesystem::path seeds_dir() { return std::filesystem::path(P3D_SOURCE_DIR) / "tests/fuzz/seeds"; }
+
+// A few cameras (the player start, the level's corners) at 24x16, bsp and reference,
+// at the start state and with its things.
+inline void render_a_little(const level::Level& level) {
+  const level::State state = level::start_state(level);
+  render::Frame frame(24, 16);
+  const geom::Vec2 spots[] = {level.player_start, level.bounds.min, level.bounds.max,
+                              (level.bounds.min + level.bounds.max) * 0.5};
+  for (const char* name : {"bsp", "reference"}) {
+    auto r = render::make_renderer(name);
+    r->prepare(level);
+    for (size_t i = 0; i < std::size(spots); ++i)
+      r->render(level, state, render::camera_at(level, spots[i], 45.0 * double(i)), frame);
+  }
+}
+
+}  // namespace p3d::fuzz
