@@ -24,15 +24,7 @@ class GridParser {
   explicit GridParser(const std::filesystem::path& path) { src_.path = path; }
 
   Source run(const std::string& text) {
-    std::vector<std::string_view> lines;
-    for (size_t pos = 0; pos <= text.size();) {
-      size_t end = text.find('\n', pos);
-      if (end == std::string::npos) end = text.size();
-      std::string_view line(text.data() + pos, end - pos);
-      if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-      lines.push_back(line);
-      pos = end + 1;
-    }
+    const std::vector<std::string_view> lines = detail::split_lines(text);
     size_t i = 0;
     for (; i < lines.size(); ++i) {
       const FileLoc loc{src_.path.string(), int(i) + 1};

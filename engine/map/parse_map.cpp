@@ -19,17 +19,12 @@ class Parser {
 
   Source run(const std::string& text) {
     int line_number = 0;
-    size_t pos = 0;
-    while (pos <= text.size()) {
-      size_t end = text.find('\n', pos);
-      if (end == std::string::npos) end = text.size();
+    for (const std::string_view line : detail::split_lines(text)) {
       ++line_number;
-      const std::string_view line(text.data() + pos, end - pos);
       if (line.find('\0') != std::string_view::npos)
         throw Error(FileLoc{source_.path.string(), line_number}, "binary data in a text map");
       auto words = split_words(line);
       if (!words.empty()) statement(Statement({source_.path.string(), line_number}, std::move(words)));
-      pos = end + 1;
     }
     if (!have_player_) throw Error(FileLoc{source_.path.string(), 0}, "no player start (add 'player X Y ANGLE')");
     if (source_.walls.empty()) throw Error(FileLoc{source_.path.string(), 0}, "the map has no walls");

@@ -113,6 +113,23 @@ class Statement {
   std::map<std::string, std::string_view> options_;  // ordered: deterministic messages
 };
 
+// A text map's lines: LF, CRLF and old Mac CR-only line ends alike, a leading UTF-8 byte
+// order mark skipped (editors on Windows write one).
+inline std::vector<std::string_view> split_lines(std::string_view text) {
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  std::vector<std::string_view> lines;
+  size_t pos = 0;
+  for (;;) {
+    const size_t end = text.find_first_of("\r\n", pos);
+    if (end == std::string_view::npos) {
+      lines.push_back(text.substr(pos));
+      return lines;
+    }
+    lines.push_back(text.substr(pos, end - pos));
+    pos = end + (text.compare(end, 2, "\r\n") == 0 ? 2 : 1);
+  }
+}
+
 inline std::vector<std::string_view> split_words(std::string_view line) {
   std::vector<std::string_view> words;
   size_t i = 0;

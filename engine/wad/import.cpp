@@ -55,7 +55,7 @@ class Importer {
   // ---- warnings --------------------------------------------------------------
   void warn(const std::string& kind, const std::string& record, const std::string& message) {
     if (++warning_counts_[kind] > options_.max_warnings_per_kind) return;
-    warnings_.push_back(data_.where + ": " + record + ": warning: " + message);
+    warnings_.push_back(escape_controls(data_.where + ": " + record + ": warning: " + message));
   }
   void finish_warnings() {
     for (const auto& [kind, count] : warning_counts_)

@@ -96,6 +96,24 @@ TEST_F(ParseTest, SegmentsOnlyGetADefaultSector) {
   EXPECT_EQ(s.sectors.size(), 1u);
 }
 
+// Windows editors write a byte order mark and CRLF; old Macs wrote CR alone. Lines are
+// counted alike in all three.
+TEST_F(ParseTest, LineEndsOfEverySystemAndAByteOrderMark) {
+  const std::string lf = std::string(kRoomHeader) + kRoomWalls;
+  std::string crlf, cr;
+  for (char c : lf) {
+    crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+    cr += c == '\n' ? '\r' : c;
+  }
+  for (const std::string& text : {lf, "\xEF\xBB\xBF" + crlf, cr}) {
+    const Source s = load(text);
+    EXPECT_EQ(s.title, "Test room");
+    EXPECT_EQ(s.walls.size(), 8u);
+    EXPECT_EQ(s.walls[0].loc.line, 14);
+  }
+  EXPECT_EQ(error("vertex a 0 0\rvertex a 1 1\r"), "DIR/test.map:2: vertex 'a' is defined twice");
+}
+
 TEST_F(ParseTest, CommentsAndFractionsAndTabs) {
   const Source s = load("# heading\ntexture wall wall.png # trailing\nvertex a\t0.5 -0.25\nvertex b 10 0\n\n"
                         "segment a b texture=wall\nplayer 5 5 0\n");
@@ -157,6 +175,10 @@ TEST_F(ParseTest, BadInputGivesLocatedMessages) {
        "DIR/test.map:14: ceiling_tex=sky needs a 'sky TEXTURE' statement before it"},
       {"binary junk", std::string("vertex a 0 0\n\x01\x02\0\x03\n", 18), "DIR/test.map:2: binary data in a text map"},
       {"empty", "", "DIR/test.map: no player start (add 'player X Y ANGLE')"},
+      // Unprintable bytes are escaped in messages, never echoed raw to a terminal.
+      {"escape sequence", "vertex a 0 0\nwa\x1b[2Jll a\n", "DIR/test.map:2: unknown statement 'wa\\x1B[2Jll'"},
+      {"byte order mark inside", "vertex a 0 0\n\xEF\xBB\xBFwall\n", "DIR/test.map:2: unknown statement '<BOM>wall'"},
+      {"delete byte", "\x7fvertex a 0 0\n", "DIR/test.map:1: unknown statement '\\x7Fvertex'"},
   };
   for (const BadCase& c : cases) EXPECT_EQ(error(c.text), c.message) << c.name;
 }
