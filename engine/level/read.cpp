@@ -37,6 +37,7 @@ class Reader {
     read_leaves();
     read_things();
     read_grid();
+    in_.at(nullptr);
     if (in_.remaining() != 0) in_.fail(std::to_string(in_.remaining()) + " unexpected bytes after the last section");
 
     check_references();
@@ -48,7 +49,9 @@ class Reader {
 
  private:
   void section(uint32_t tag, const char* name) {
+    in_.at(nullptr);
     if (in_.u32() != tag) in_.fail(std::string("expected section ") + name + " at byte " + std::to_string(in_.position() - 4));
+    in_.at(name);
   }
   double finite(const char* what) {
     const double v = in_.f64();
@@ -88,11 +91,12 @@ class Reader {
     const uint32_t n = in_.count(format::kTextureHeader, "textures");
     level_.textures.reserve(n);
     for (uint32_t i = 0; i < n; ++i) {
+      in_.at("TEXS", i);
       const std::string name = in_.str(limits::kMaxNameLength);
       const uint32_t w = in_.u32(), h = in_.u32();
       const auto fits = [](uint32_t v) { return v > 0 && v <= uint32_t(limits::kMaxTextureSize); };
       if (!fits(w) || !fits(h))
-        in_.fail("texture " + std::to_string(i) + " '" + name + "' has a bad size " + std::to_string(w) + "x" +
+        in_.fail("texture '" + name + "' has a bad size " + std::to_string(w) + "x" +
                  std::to_string(h));
       const size_t texels = size_t(w) * h;
       std::vector<uint32_t> rows(texels);
@@ -117,8 +121,9 @@ class Reader {
     const uint32_t images = in_.count(format::kSpriteImageRecord, "sprite images");
     level_.sprite_images.resize(images);
     for (SpriteImage& i : level_.sprite_images) {
+      in_.at("SPRS (images)", &i - level_.sprite_images.data());
       i.texture = in_.i32();
-      index(i.texture, 0, level_.textures.size(), "sprite image " + std::to_string(&i - level_.sprite_images.data()) + " texture");
+      index(i.texture, 0, level_.textures.size(), "sprite image texture");
       i.left = in_.i32();
       i.top = in_.i32();
       if (std::abs(int64_t(i.left)) > limits::kMaxTextureSize || std::abs(int64_t(i.top)) > limits::kMaxTextureSize)
@@ -127,6 +132,7 @@ class Reader {
     const uint32_t frames = in_.count(format::kSpriteFrameRecord, "sprite frames");
     level_.sprite_frames.resize(frames);
     for (SpriteFrame& f : level_.sprite_frames) {
+      in_.at("SPRS (frames)", &f - level_.sprite_frames.data());
       f.name = in_.str(limits::kMaxNameLength);
       for (int r = 0; r < kRotations; ++r) {
         f.image[r] = in_.i32();
@@ -150,11 +156,12 @@ class Reader {
     const uint32_t n = in_.count(format::kSectorRecord, "sectors");
     level_.sectors.resize(n);
     for (Sector& s : level_.sectors) {
+      in_.at("SECS", &s - level_.sectors.data());
       s.name = in_.str(limits::kMaxNameLength);
       s.floor = height("sector floor");
       s.ceiling = height("sector ceiling");
       s.light = in_.i32();
-      if (s.light < 0 || s.light > 255) in_.fail("sector '" + s.name + "' has light out of range");
+      if (s.light < 0 || s.light > 255) in_.fail("sector light out of range");
       s.floor_texture = in_.i32();
       s.ceiling_texture = in_.i32();
       s.special = in_.i32();
@@ -182,6 +189,7 @@ class Reader {
     const uint32_t n = in_.count(format::kWallRecord, "walls");
     level_.walls.resize(n);
     for (Wall& w : level_.walls) {
+      in_.at("WALL", &w - level_.walls.data());
       w.p1 = {in_.i64(), in_.i64()};
       w.p2 = {in_.i64(), in_.i64()};
       for (int64_t c : {w.p1.x, w.p1.y, w.p2.x, w.p2.y})
@@ -203,6 +211,7 @@ class Reader {
     const uint32_t n = in_.count(format::kFragmentRecord, "fragments");
     level_.fragments.resize(n);
     for (Fragment& f : level_.fragments) {
+      in_.at("FRAG", &f - level_.fragments.data());
       f.wall = in_.u32();
       f.cut[0] = in_.i32();
       f.cut[1] = in_.i32();
@@ -216,6 +225,7 @@ class Reader {
     const uint32_t n = in_.count(format::kNodeRecord, "nodes");
     level_.nodes.resize(n);
     for (Node& node : level_.nodes) {
+      in_.at("NODE", &node - level_.nodes.data());
       node.splitter = in_.u32();
       node.child[0] = in_.i32();
       node.child[1] = in_.i32();
@@ -238,6 +248,7 @@ class Reader {
     const uint32_t n = in_.count(format::kThingRecord, "things");
     level_.things.resize(n);
     for (Thing& t : level_.things) {
+      in_.at("THNG", &t - level_.things.data());
       t.type = in_.i32();
       t.pos = {bounded("thing x", geom::kMaxCoord), bounded("thing y", geom::kMaxCoord)};
       t.angle = finite("thing angle");
@@ -277,8 +288,10 @@ class Reader {
   void check_grid() const {
     if (!level_.grid) return;
     const Grid& g = *level_.grid;
-    for (uint8_t s : g.solid)
-      if (s > 1) in_.fail("bad grid cell");
+    for (size_t i = 0; i < g.solid.size(); ++i) {
+      in_.at("GRID", int64_t(i));
+      if (g.solid[i] > 1) in_.fail("bad grid cell");
+    }
     auto corner = [&](int gx, int gy) {
       geom::IPoint p;
       if (!geom::to_fixed(gx * g.cell, p.x) || !geom::to_fixed(gy * g.cell, p.y)) in_.fail("grid corner out of range");
@@ -288,6 +301,7 @@ class Reader {
     for (int r = 0; r < g.rows; ++r)
       for (int c = 0; c < g.cols; ++c)
         for (int f = 0; f < 4; ++f) {
+          in_.at("GRID", int64_t(r) * g.cols + c);
           const int32_t w = g.face(c, r, f);
           const bool needs_wall = !g.is_solid(c, r) && g.is_solid(c + dc[f], r + dr[f]);
           if ((w != kNone) != needs_wall) in_.fail("grid face wall does not match the tiles");
@@ -306,13 +320,16 @@ class Reader {
 
   void check_references() const {
     const size_t textures = level_.textures.size(), sectors = level_.sectors.size(), walls = level_.walls.size();
+    in_.at("META");
     index(level_.default_sector, kNone, sectors, "default sector");
     index(level_.sky_texture, kNone, textures, "sky texture");
     for (const Sector& s : level_.sectors) {
+      in_.at("SECS", &s - level_.sectors.data());
       if (s.floor_texture != kSky) index(s.floor_texture, 0, textures, "floor texture");
       if (s.ceiling_texture != kSky) index(s.ceiling_texture, 0, textures, "ceiling texture");
     }
     for (const Wall& w : level_.walls) {
+      in_.at("WALL", &w - level_.walls.data());
       for (const Side& s : w.sides) {
         index(s.sector, kNone, sectors, "side sector");
         for (int t : {s.upper, s.middle, s.lower}) index(t, kNone, textures, "side texture");
@@ -324,6 +341,7 @@ class Reader {
       }
     }
     for (const Fragment& f : level_.fragments) {
+      in_.at("FRAG", &f - level_.fragments.data());
       index(static_cast<int32_t>(f.wall), 0, walls, "fragment wall");
       if (!(0 <= f.t0 && f.t0 < f.t1 && f.t1 <= 1)) in_.fail("fragment with an empty or inverted range");
       for (int k = 0; k < 2; ++k) {
@@ -335,18 +353,26 @@ class Reader {
           in_.fail("fragment cut by a parallel line");
       }
     }
-    for (const Leaf& l : level_.leaves) index(l.sector, kNone, sectors, "leaf sector");
-    for (const Thing& t : level_.things) index(t.sector, kNone, sectors, "thing sector");
+    for (const Leaf& l : level_.leaves) {
+      in_.at("LEAF", &l - level_.leaves.data());
+      index(l.sector, kNone, sectors, "leaf sector");
+    }
+    for (const Thing& t : level_.things) {
+      in_.at("THNG", &t - level_.things.data());
+      index(t.sector, kNone, sectors, "thing sector");
+    }
   }
 
   // A proper binary tree rooted at node 0 whose fragments partition the fragment
   // array, each fragment exactly on its node's splitter line.
   void check_tree() const {
     const size_t nodes = level_.nodes.size(), leaves = level_.leaves.size();
+    in_.at("NODE");
     if (nodes == 0 || leaves != nodes + 1) in_.fail("tree has " + std::to_string(nodes) + " nodes and " +
                                                      std::to_string(leaves) + " leaves");
     std::vector<uint8_t> node_seen(nodes, 0), leaf_seen(leaves, 0), fragment_seen(level_.fragments.size(), 0);
     for (size_t i = 0; i < nodes; ++i) {
+      in_.at("NODE", int64_t(i));
       const Node& n = level_.nodes[i];
       index(static_cast<int32_t>(n.splitter), 0, level_.walls.size(), "node splitter");
       for (int32_t c : n.child) {
@@ -367,10 +393,13 @@ class Reader {
           in_.fail("fragment " + std::to_string(f) + " is not on its node's splitter");
       }
     }
+    in_.at("NODE");
     for (size_t i = 1; i < nodes; ++i)
       if (!node_seen[i]) in_.fail("node " + std::to_string(i) + " is unreachable");
+    in_.at("LEAF");
     for (size_t i = 0; i < leaves; ++i)
       if (!leaf_seen[i]) in_.fail("leaf " + std::to_string(i) + " is unreachable");
+    in_.at("FRAG");
     for (size_t i = 0; i < fragment_seen.size(); ++i)
       if (!fragment_seen[i]) in_.fail("fragment " + std::to_string(i) + " belongs to no node");
   }

@@ -76,7 +76,16 @@ class ByteReader {
   }
   size_t remaining() const { return bytes_.size() - pos_; }
   size_t position() const { return pos_; }
-  [[noreturn]] void fail(const std::string& message) const { throw Error(what_ + ": " + message); }
+  // Where the reading is, for messages: "section WALL, record 17". Cheap to set per record.
+  void at(const char* section, int64_t record = -1) {
+    section_ = section;
+    record_ = record;
+  }
+  [[noreturn]] void fail(const std::string& message) const {
+    std::string where;
+    if (section_) where = std::string("section ") + section_ + (record_ >= 0 ? ", record " + std::to_string(record_) : "") + ": ";
+    throw Error(what_ + ": " + where + message);
+  }
 
  private:
   void need(size_t n) const {
@@ -93,6 +102,8 @@ class ByteReader {
   std::span<const uint8_t> bytes_;
   std::string what_;
   size_t pos_ = 0;
+  const char* section_ = nullptr;
+  int64_t record_ = -1;
 };
 
 // FNV-1a, 64-bit: the checksum of the compiled level format.

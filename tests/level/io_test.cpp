@@ -94,13 +94,13 @@ TEST_F(LevelIo, RejectsInconsistentStructure) {
     const char* message;
   };
   const Case cases[] = {
-      {"child out of range", [](Level& l) { l.nodes[0].child[0] = 100000; }, "x.bsp: node child out of order"},
-      {"leaf out of range", [](Level& l) { l.nodes[0].child[0] = leaf_child(100000); }, "x.bsp: leaf index 100000 is out of range"},
-      {"fragment wall", [](Level& l) { l.fragments[0].wall = 1u << 30; }, "x.bsp: fragment wall index 1073741824 is out of range"},
-      {"empty fragment", [](Level& l) { l.fragments[0].t1 = l.fragments[0].t0; }, "x.bsp: fragment with an empty or inverted range"},
-      {"sector light", [](Level& l) { l.sectors[0].light = 300; }, "x.bsp: sector 'r0_0' has light out of range"},
-      {"nan height", [](Level& l) { l.sectors[0].floor = std::nan(""); }, "x.bsp: sector floor is not finite"},
-      {"bad texture index", [](Level& l) { l.walls[0].sides[0].middle = 77; }, "x.bsp: side texture index 77 is out of range"},
+      {"child out of range", [](Level& l) { l.nodes[0].child[0] = 100000; }, "x.bsp: section NODE, record 0: node child out of order"},
+      {"leaf out of range", [](Level& l) { l.nodes[0].child[0] = leaf_child(100000); }, "x.bsp: section NODE, record 0: leaf index 100000 is out of range"},
+      {"fragment wall", [](Level& l) { l.fragments[0].wall = 1u << 30; }, "x.bsp: section FRAG, record 0: fragment wall index 1073741824 is out of range"},
+      {"empty fragment", [](Level& l) { l.fragments[0].t1 = l.fragments[0].t0; }, "x.bsp: section FRAG, record 0: fragment with an empty or inverted range"},
+      {"sector light", [](Level& l) { l.sectors[1].light = 300; }, "x.bsp: section SECS, record 1: sector light out of range"},
+      {"nan height", [](Level& l) { l.sectors[0].floor = std::nan(""); }, "x.bsp: section SECS, record 0: sector floor is not finite"},
+      {"bad texture index", [](Level& l) { l.walls[2].sides[0].middle = 77; }, "x.bsp: section WALL, record 2: side texture index 77 is out of range"},
       {"two parents", [](Level& l) { l.nodes[0].child[1] = l.nodes[0].child[0]; }, nullptr},
       {"fragment off its line",
        [](Level& l) {
@@ -113,13 +113,15 @@ TEST_F(LevelIo, RejectsInconsistentStructure) {
            }
        },
        "is not on its node's splitter"},
-      {"coordinate range", [](Level& l) { l.walls[0].p1.x = int64_t(1) << 40; }, "x.bsp: wall coordinate out of range"},
+      {"coordinate range", [](Level& l) { l.walls[0].p1.x = int64_t(1) << 40; }, "x.bsp: section WALL, record 0: wall coordinate out of range"},
   };
   for (const Case& c : cases) {
     Level copy = *level_;
     c.edit(copy);
     const std::string error = decode_error(encode(copy));
-    if (c.message)
+    if (c.message && std::string(c.message).rfind("x.bsp: ", 0) == 0)
+      EXPECT_EQ(error, c.message) << c.name;
+    else if (c.message)
       EXPECT_NE(error.find(c.message), std::string::npos) << c.name << ": " << error;
     else
       EXPECT_NE(error, "(no error)") << c.name;
@@ -138,12 +140,15 @@ TEST_F(LevelIo, GridRoundTripsAndIsValidated) {
     if (grid.grid->faces[i] >= 0) {
       Level copy = grid;
       copy.grid->faces[i] = (copy.grid->faces[i] + 1) % int32_t(copy.walls.size());
-      EXPECT_EQ(decode_error(encode(copy)), "x.bsp: grid face wall does not lie along its face");
+      EXPECT_EQ(decode_error(encode(copy)),
+                "x.bsp: section GRID, record " + std::to_string(i / 4) + ": grid face wall does not lie along its face");
       break;
     }
   Level copy = grid;
   copy.grid->solid[size_t(copy.grid->rows / 2) * copy.grid->cols + copy.grid->cols / 2] ^= 1;
-  EXPECT_EQ(decode_error(encode(copy)), "x.bsp: grid face wall does not match the tiles");
+  const std::string error = decode_error(encode(copy));
+  EXPECT_EQ(error.rfind("x.bsp: section GRID, record ", 0), 0u) << error;
+  EXPECT_NE(error.find(": grid face wall does not match the tiles"), std::string::npos) << error;
 }
 
 TEST_F(LevelIo, CellAtIsTheLeafCellOfThePoint) {
