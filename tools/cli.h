@@ -128,6 +128,7 @@ struct LevelArgs {
   std::string iwad;
   std::vector<std::string> files;  // PWADs
   std::string map;
+  bool textures_anywhere = false;
 };
 
 // --iwad, --file, --map: a map in WADs, Doom's way.
@@ -142,6 +143,8 @@ inline void add_wad_options(CLI::App& app, LevelArgs& a) {
 inline void add_level_options(CLI::App& app, LevelArgs& a) {
   app.add_option("level", a.path, "level: a compiled .bsp, a .map or .grid (compiled on the fly), or a WAD")
       ->check(CLI::ExistingFile);
+  app.add_flag("--textures-anywhere", a.textures_anywhere,
+               "let a .map or .grid read pictures outside its own directory (absolute or ../ paths)");
   add_wad_options(app, a);
 }
 
@@ -181,6 +184,7 @@ inline bsp::LevelSource level_source(const LevelArgs& a) {
   } else {
     if (!a.map.empty()) throw CLI::ValidationError("--map", "names a map in WADs: use it with --iwad");
     s.file = a.path;
+    s.load.textures_anywhere = a.textures_anywhere;
     return s;
   }
   for (const std::string& f : a.files) s.wads.push_back(f);

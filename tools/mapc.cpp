@@ -122,7 +122,7 @@ int compile_one(Args& a, const bsp::LevelSource& source, Progress& progress) {
     map_name = bsp::resolve_map_name(*wads, source.map);
   } else if (const bsp::FileKind kind = bsp::file_kind(source.file);
              kind == bsp::FileKind::kMapSource || kind == bsp::FileKind::kGridSource) {
-    parsed = map::load_source(source.file);
+    parsed = map::load_source(source.file, source.load);
   } else if (kind == bsp::FileKind::kCompiled) {
     throw Error(source.file.string() + ": a compiled level (.bsp) already: capture, compare and game read it");
   } else {

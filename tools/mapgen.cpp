@@ -8,14 +8,26 @@ using namespace p3d;
 
 namespace {
 
-// Texture file paths as written in the map: absolute, so the map can move anywhere on
-// this machine and still find the bundled textures.
-std::vector<std::string> texture_files(const std::string& texture_dir, const std::vector<std::string>& names) {
+// The textures a generated map uses, copied into a textures/ folder beside it (a map
+// reads pictures only from its own directory): the map and its folder move together.
+// Returns the paths as the map names them.
+std::vector<std::string> texture_files(const std::string& texture_dir, const std::vector<std::string>& names,
+                                       const std::filesystem::path& output) {
+  const std::filesystem::path beside = output.parent_path() / "textures";
   std::vector<std::string> files;
   for (const std::string& name : names) {
-    const auto file = std::filesystem::weakly_canonical(std::filesystem::path(texture_dir) / (name + ".png"));
-    if (!std::filesystem::exists(file)) throw Error(file.string() + ": texture not found (see --textures)");
-    files.push_back(file.string());
+    const std::filesystem::path file = std::filesystem::path(texture_dir) / (name + ".png");
+    if (!std::filesystem::is_regular_file(file)) throw Error(file.string() + ": texture not found (see --textures)");
+    const std::filesystem::path copy = beside / file.filename();
+    std::error_code ec;
+    if (!std::filesystem::equivalent(file, copy, ec)) {
+      const std::vector<uint8_t> bytes = read_file_bytes(file);
+      if (!std::filesystem::exists(copy) || read_file_bytes(copy) != bytes) {
+        std::filesystem::create_directories(beside);
+        write_file_atomically(copy, bytes);
+      }
+    }
+    files.push_back("textures/" + file.filename().string());
   }
   return files;
 }
@@ -55,7 +67,8 @@ int main(int argc, char** argv) {
         throw CLI::ValidationError("--grid", "between 8x8 and 4096x4096 tiles");
       grid.kind = kind;
       grid.seed = options.seed;
-      grid.texture_files = texture_files(texture_dir, {"brick", "stone", "metal", "wood", "tech", "tiles", "ceiling"});
+      grid.texture_files =
+          texture_files(texture_dir, {"brick", "stone", "metal", "wood", "tech", "tiles", "ceiling"}, output);
       const std::string text = map::generate_grid_text(grid);
       map::validate(map::parse_grid(text, output));  // never write a map mapc would refuse
       write_file_atomically(output, text);
@@ -63,7 +76,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     const std::vector<std::string> names = {"brick", "stone", "metal", "wood", "tech", "rock"};
-    const auto files = texture_files(texture_dir, names);
+    const auto files = texture_files(texture_dir, names, output);
     for (size_t i = 0; i < names.size(); ++i)
       options.textures.push_back({names[i], image::load_png(std::filesystem::path(texture_dir) / (names[i] + ".png")), {}});
     const map::Source source = kind == "soup" ? map::generate_soup(options) : map::generate_rooms(options);

@@ -45,11 +45,11 @@ const char* describe(FileKind kind) {
   return "not a level (levels are .map and .grid sources, compiled .bsp files and WADs)";
 }
 
-level::Level load_level(const std::filesystem::path& path, const Options& options) {
+level::Level load_level(const std::filesystem::path& path, const Options& options, const map::LoadOptions& load) {
   switch (const FileKind kind = file_kind(path)) {
     case FileKind::kCompiled: return level::read(path);
     case FileKind::kMapSource:
-    case FileKind::kGridSource: return build(map::load_source(path), options);
+    case FileKind::kGridSource: return build(map::load_source(path, load), options);
     case FileKind::kWad: throw Error(path.string() + ": a WAD: name its map with --iwad and --map");
     default: throw Error(path.string() + ": " + describe(kind));
   }
@@ -118,7 +118,7 @@ level::Level build_wad_map(const wad::Stack& wads, const std::string& map, const
 }
 
 OpenedLevel open_level(const LevelSource& source, const Options& options, const wad::ImportOptions& import) {
-  if (!source.is_wad()) return {load_level(source.file, options), source.file.string(), {}};
+  if (!source.is_wad()) return {load_level(source.file, options, source.load), source.file.string(), {}};
   const wad::Stack wads = read_wads(source.wads);
   const std::string map = resolve_map_name(wads, source.map);
   OpenedLevel out;

@@ -18,6 +18,7 @@ struct LevelSource {
   std::filesystem::path file;               // a .bsp, .map or .grid; empty for a WAD map
   std::vector<std::filesystem::path> wads;  // the IWAD, then each PWAD (later ones override)
   std::string map;                          // the WAD map's name; empty: the first map of the last WAD holding maps
+  map::LoadOptions load;                    // for a .map or .grid: where its pictures may come from
 
   bool is_wad() const { return !wads.empty(); }
 };
@@ -32,7 +33,8 @@ FileKind file_kind(const std::filesystem::path& path);
 const char* describe(FileKind kind);
 // A .bsp, .map or .grid file, recognised by content; throws Error naming what the file
 // is when it is none of these.
-level::Level load_level(const std::filesystem::path& path, const Options& options = {});
+level::Level load_level(const std::filesystem::path& path, const Options& options = {},
+                        const map::LoadOptions& load = {});
 
 // Reads the WADs, later ones overriding earlier ones; throws Error for an unreadable or broken WAD.
 wad::Stack read_wads(const std::vector<std::filesystem::path>& paths);

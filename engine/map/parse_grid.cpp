@@ -21,7 +21,7 @@ bool is_empty_tile(char c) { return c == '.' || c == ' ' || is_marker(c); }
 
 class GridParser {
  public:
-  explicit GridParser(const std::filesystem::path& path) { src_.path = path; }
+  GridParser(const std::filesystem::path& path, const LoadOptions& options) : options_(options) { src_.path = path; }
 
   Source run(const std::string& text) {
     const std::vector<std::string_view> lines = detail::split_lines(text);
@@ -58,7 +58,7 @@ class GridParser {
       if (name == "sky") s.fail("'sky' is reserved and cannot name a texture");
       if (textures_.count(name)) s.fail("texture '" + name + "' is defined twice");
       textures_[name] = int(src_.textures.size());
-      src_.textures.push_back(detail::load_texture(s, name, src_.path, s.arg(1)));
+      src_.textures.push_back(detail::load_texture(s, name, src_.path, s.arg(1), options_));
     } else if (k == "sky") {
       s.expect_args(1, "sky TEXTURE");
       src_.sky_texture = texture_ref(s, s.arg(0));
@@ -87,7 +87,7 @@ class GridParser {
       if (!legend_.emplace(s.arg(0)[0], texture_ref(s, s.arg(1))).second)
         s.fail("tile '" + std::string(s.arg(0)) + "' is defined twice");
     } else if (k == "sprite") {
-      sprites_.statement(s, src_);
+      sprites_.statement(s, src_, options_);
       return;
     } else if (k == "thing") {
       s.expect_args(4, "thing TYPE X Y ANGLE");
@@ -193,6 +193,7 @@ class GridParser {
   };
 
   Source src_;
+  LoadOptions options_;
   detail::Sprites sprites_;
   std::unordered_map<std::string, int> textures_;
   std::map<char, int> legend_;  // ordered: the first tile textures the border
@@ -275,16 +276,18 @@ void grid_to_walls(Source& src, const GridInfo& g, const std::vector<int>& tile_
   src.grid = std::move(grid);
 }
 
-Source parse_grid(const std::string& text, const std::filesystem::path& path) { return GridParser(path).run(text); }
+Source parse_grid(const std::string& text, const std::filesystem::path& path, const LoadOptions& options) {
+  return GridParser(path, options).run(text);
+}
 
-Source load_grid(const std::filesystem::path& path) {
-  Source source = parse_grid(read_file_text(path), path);
+Source load_grid(const std::filesystem::path& path, const LoadOptions& options) {
+  Source source = parse_grid(read_file_text(path), path, options);
   validate(source);
   return source;
 }
 
-Source load_source(const std::filesystem::path& path) {
-  return path.extension() == ".grid" ? load_grid(path) : load_map(path);
+Source load_source(const std::filesystem::path& path, const LoadOptions& options) {
+  return path.extension() == ".grid" ? load_grid(path, options) : load_map(path, options);
 }
 
 }  // namespace p3d::map

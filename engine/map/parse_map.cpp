@@ -15,7 +15,7 @@ namespace {
 
 class Parser {
  public:
-  explicit Parser(const std::filesystem::path& path) { source_.path = path; }
+  Parser(const std::filesystem::path& path, const LoadOptions& options) : options_(options) { source_.path = path; }
 
   Source run(const std::string& text) {
     int line_number = 0;
@@ -46,7 +46,7 @@ class Parser {
     if (k == "segment") return segment(s);
     if (k == "player") return player(s);
     if (k == "thing") return thing(s);
-    if (k == "sprite") return sprites_.statement(s, source_);
+    if (k == "sprite") return sprites_.statement(s, source_, options_);
     s.fail("unknown statement '" + std::string(k) + "'");
   }
 
@@ -61,7 +61,7 @@ class Parser {
     const std::string name = s.name(0, "texture");
     if (name == "sky" || name == "-") s.fail("'" + name + "' is reserved and cannot name a texture");
     if (texture_index_.count(name)) s.fail("texture '" + name + "' is defined twice");
-    Texture t = detail::load_texture(s, name, source_.path, s.arg(1));
+    Texture t = detail::load_texture(s, name, source_.path, s.arg(1), options_);
     texture_index_[name] = static_cast<int>(source_.textures.size());
     source_.textures.push_back(std::move(t));
   }
@@ -227,6 +227,7 @@ class Parser {
     source_.sectors.push_back(sec);
   }
 
+  LoadOptions options_;
   Source source_;
   detail::Sprites sprites_;
   bool have_player_ = false;
@@ -235,10 +236,12 @@ class Parser {
 
 }  // namespace
 
-Source parse_map(const std::string& text, const std::filesystem::path& path) { return Parser(path).run(text); }
+Source parse_map(const std::string& text, const std::filesystem::path& path, const LoadOptions& options) {
+  return Parser(path, options).run(text);
+}
 
-Source load_map(const std::filesystem::path& path) {
-  Source source = parse_map(read_file_text(path), path);
+Source load_map(const std::filesystem::path& path, const LoadOptions& options) {
+  Source source = parse_map(read_file_text(path), path, options);
   validate(source);
   return source;
 }

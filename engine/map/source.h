@@ -137,16 +137,23 @@ struct Source {
   geom::IPoint point(int vertex) const { return vertices[vertex].pos; }
 };
 
+// How a text map may reach other files. Texture and sprite pictures resolve relative to
+// the map's directory and may not leave it (no absolute paths, no "..": a map from
+// elsewhere reads only what lies beside it) unless textures_anywhere is set.
+struct LoadOptions {
+  bool textures_anywhere = false;
+};
+
 // Parses and validates a .map file (see maps/FORMAT.md). Throws Error("file:line: message").
-Source load_map(const std::filesystem::path& path);
-Source parse_map(const std::string& text, const std::filesystem::path& path);
+Source load_map(const std::filesystem::path& path, const LoadOptions& options = {});
+Source parse_map(const std::string& text, const std::filesystem::path& path, const LoadOptions& options = {});
 
 // Parses and validates a .grid tile map into walls (see maps/FORMAT.md).
-Source load_grid(const std::filesystem::path& path);
-Source parse_grid(const std::string& text, const std::filesystem::path& path);
+Source load_grid(const std::filesystem::path& path, const LoadOptions& options = {});
+Source parse_grid(const std::string& text, const std::filesystem::path& path, const LoadOptions& options = {});
 
 // A .map or a .grid, by extension.
-Source load_source(const std::filesystem::path& path);
+Source load_source(const std::filesystem::path& path, const LoadOptions& options = {});
 
 // Walls along the edges between empty and solid cells (outside the grid counts as
 // solid), collinear runs of one texture merged, each facing its empty cell; fills

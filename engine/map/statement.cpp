@@ -4,11 +4,22 @@ namespace p3d::map::detail {
 
 namespace {
 
+// Refused before the file system is asked anything, so a message never tells whether a
+// file outside the map's directory exists.
+void check_stays_beside_the_map(const Statement& s, const std::string& kind, std::string_view file_name) {
+  const std::filesystem::path path = std::filesystem::path(std::string(file_name)).lexically_normal();
+  if (path.has_root_name() || path.has_root_directory() || path.empty() || *path.begin() == "..")
+    s.fail(kind + " file '" + std::string(file_name) +
+           "' lies outside the map's directory (name it relative to the map, or allow it with --textures-anywhere)");
+}
+
 // kind: "texture" or "sprite"; name: what the map calls it.
 image::Image load_picture(const Statement& s, const std::string& kind, const std::string& name,
-                          const std::filesystem::path& map_path, std::string_view file_name) {
+                          const std::filesystem::path& map_path, std::string_view file_name, const LoadOptions& options) {
+  if (!options.textures_anywhere) check_stays_beside_the_map(s, kind, file_name);
   const std::filesystem::path file = map_path.parent_path() / std::string(file_name);
-  if (!std::filesystem::exists(file)) s.fail(kind + " file '" + file.string() + "' does not exist");
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) s.fail(kind + " file '" + file.string() + "' does not exist");
   const std::string what = kind + " '" + name + "'";
   image::Image img;
   try {
@@ -25,17 +36,17 @@ image::Image load_picture(const Statement& s, const std::string& kind, const std
 }  // namespace
 
 Texture load_texture(const Statement& s, const std::string& name, const std::filesystem::path& map_path,
-                     std::string_view file_name) {
-  return {name, load_picture(s, "texture", name, map_path, file_name), {}, s.loc()};
+                     std::string_view file_name, const LoadOptions& options) {
+  return {name, load_picture(s, "texture", name, map_path, file_name, options), {}, s.loc()};
 }
 
-void Sprites::statement(Statement& s, Source& source) {
+void Sprites::statement(Statement& s, Source& source, const LoadOptions& options) {
   s.expect_args(2, "sprite TYPE FILE.png [anchor=X,Y] [place=floor|ceiling] [bright=yes|no]");
   const int type = s.integer(s.arg(0), "thing type", 0, 1 << 30);
   if (frame_of_type_.count(type)) s.fail("thing type " + std::to_string(type) + " already has a sprite");
   SpriteImage picture;
   picture.name = std::string(s.arg(1));
-  picture.image = load_picture(s, "sprite", picture.name, source.path, s.arg(1));
+  picture.image = load_picture(s, "sprite", picture.name, source.path, s.arg(1), options);
   SpriteFrame frame;
   frame.name = picture.name;
   if (auto place = s.take("place")) {

@@ -143,9 +143,10 @@ inline std::vector<std::string_view> split_words(std::string_view line) {
   return words;
 }
 
-// Loads a texture statement's PNG (relative to the map's directory) and checks its size.
+// Loads a texture statement's PNG (relative to the map's directory, see LoadOptions)
+// and checks its size.
 Texture load_texture(const Statement& s, const std::string& name, const std::filesystem::path& map_path,
-                     std::string_view file);
+                     std::string_view file, const LoadOptions& options);
 
 // Things' pictures, shared by the .map and .grid parsers:
 //   sprite TYPE FILE.png [anchor=X,Y] [place=floor|ceiling] [bright=yes|no]
@@ -154,7 +155,7 @@ Texture load_texture(const Statement& s, const std::string& name, const std::fil
 // lies at the thing's position, on its sector's floor or at its ceiling.
 class Sprites {
  public:
-  void statement(Statement& s, Source& source);
+  void statement(Statement& s, Source& source, const LoadOptions& options);
   // After parsing: every thing of a type with a sprite shows it.
   void assign(Source& source) const;
 

@@ -114,6 +114,30 @@ TEST_F(ParseTest, LineEndsOfEverySystemAndAByteOrderMark) {
   EXPECT_EQ(error("vertex a 0 0\rvertex a 1 1\r"), "DIR/test.map:2: vertex 'a' is defined twice");
 }
 
+// A map reads pictures only from its own directory unless told otherwise, and a refusal
+// does not tell whether the file outside exists.
+TEST_F(ParseTest, PicturesStayInTheMapsDirectory) {
+  const std::string walls = std::string(kRoomWalls);
+  std::filesystem::create_directories(dir_ / "sub");
+  image::save_png(image::Image(8, 8), dir_ / "sub/pic.png");
+  EXPECT_EQ(load(std::string(kRoomHeader) + "texture b ./sub/../sub/pic.png\n" + walls).textures.size(), 3u);
+  for (const std::string& file : {dir_.string() + "/wall.png", std::string("../x/wall.png"), std::string("sub/../../y.png"),
+                                  std::string("/etc/passwd"), std::string("/nonexistent/q.png")}) {
+    const std::string message = error("texture a " + file + "\n");
+    EXPECT_NE(message.find("DIR/test.map:1: texture file '"), std::string::npos) << message;
+    EXPECT_NE(message.find("' lies outside the map's directory"), std::string::npos) << message;
+    EXPECT_EQ(error("sprite 1 " + file + "\n").find("DIR/test.map:1: sprite file '"), 0u) << file;
+  }
+  // Allowed explicitly: a sibling directory's picture.
+  const std::filesystem::path sibling = test::temp_dir("parse-sibling");
+  image::save_png(image::Image(8, 8), sibling / "pic.png");
+  write_file_atomically(dir_ / "test.map", std::string(kRoomHeader) + "texture b ../" + sibling.filename().string() +
+                                               "/pic.png\n" + walls);
+  EXPECT_THROW(load_map(dir_ / "test.map"), Error);
+  EXPECT_EQ(load_map(dir_ / "test.map", {.textures_anywhere = true}).textures.size(), 3u);
+  std::filesystem::remove_all(sibling);
+}
+
 TEST_F(ParseTest, CommentsAndFractionsAndTabs) {
   const Source s = load("# heading\ntexture wall wall.png # trailing\nvertex a\t0.5 -0.25\nvertex b 10 0\n\n"
                         "segment a b texture=wall\nplayer 5 5 0\n");

@@ -173,12 +173,11 @@ TEST(Collision, FreedoomWalksWithSectorsMoving) {
 // any level is no trouble.
 TEST(Collision, AHugeSparseLevelNeedsASmallBlockmap) {
   const std::string text =
-      "texture brick " + (test::source_dir() / "maps/textures/brick.png").string() +
-      "\nsector room floor=0 ceiling=128 floor_tex=brick ceiling_tex=brick\n"
+      "texture brick textures/brick.png\nsector room floor=0 ceiling=128 floor_tex=brick ceiling_tex=brick\n"
       "vertex a -1048576 -1048576\nvertex b -1048576 1048576\nvertex c 1048576 1048576\nvertex d 1048576 -1048576\n"
       "wall a b front=room middle=brick\nwall b c front=room middle=brick\nwall c d front=room middle=brick\n"
       "wall d a front=room middle=brick\nplayer 0 0 0\n";
-  const level::Level level = test::compile(map::parse_map(text, "huge.map"));
+  const level::Level level = test::compile(map::parse_map(text, test::source_dir() / "maps/huge.map"));
   World world(level);
   Player p = world.spawn();
   for (int t = 0; t < 35; ++t) world.tick(p, {50, 0, 0, 0});

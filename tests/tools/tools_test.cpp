@@ -432,6 +432,17 @@ TEST_F(Tools, BenchWritesItsTablesAsJson) {
   EXPECT_NE(json.find("\"dda_ms_frame\": "), std::string::npos) << json;
 }
 
+// Every program that opens a .map takes --textures-anywhere to let its pictures leave
+// the map's directory (tests/bad/outside_texture.map is refused without it).
+TEST_F(Tools, TexturesAnywhereIsAnExplicitChoice) {
+  std::string o;
+  for (const std::string& program : {"mapc", "capture"})
+    EXPECT_EQ(run_in_source(tool(program) + " tests/bad/outside_texture.map --textures-anywhere -o " + out("t." +
+                                (program == "mapc" ? std::string("bsp") : std::string("png"))), o), 0) << program << o;
+  EXPECT_EQ(run_in_source(tool("capture") + " tests/bad/outside_texture.map -o " + out("u.png"), o), 1) << o;
+  EXPECT_NE(o.find("lies outside the map's directory"), std::string::npos) << o;
+}
+
 // NaN compares false with every bound, so CLI11's ranges let it through: ours refuse it.
 TEST_F(Tools, NotANumberIsRefusedEverywhere) {
   std::string o;
