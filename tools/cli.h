@@ -278,7 +278,7 @@ int run(CLI::App& app, int argc, char** argv, Body&& body) {
     std::fprintf(stderr, "%s: %s\n", app.get_name().c_str(), e.what());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s\n", e.what());
+    std::fprintf(stderr, "%s\n", escape_controls(e.what()).c_str());  // a file system error names raw paths
     return 1;
   }
 }

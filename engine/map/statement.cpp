@@ -19,7 +19,8 @@ image::Image load_picture(const Statement& s, const std::string& kind, const std
   if (!options.textures_anywhere) check_stays_beside_the_map(s, kind, file_name);
   const std::filesystem::path file = map_path.parent_path() / std::string(file_name);
   std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) s.fail(kind + " file '" + file.string() + "' does not exist");
+  if (!std::filesystem::exists(file, ec))
+    s.fail(kind + " file '" + file.string() + "' " + (ec ? "cannot be opened: " + ec.message() : "does not exist"));
   const std::string what = kind + " '" + name + "'";
   image::Image img;
   try {
