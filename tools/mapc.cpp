@@ -138,9 +138,10 @@ int compile_one(Args& a, const bsp::LevelSource& source, Progress& progress) {
   const level::Level level = parsed ? bsp::build(*parsed, a.options, &stats)
                                     : bsp::build_wad_map(*wads, map_name, a.options, &warnings, &stats, import_options(a));
   const double build_seconds = cli::seconds_since(build_start);
-  for (const std::string& w : warnings) std::fprintf(stderr, "%s\n", w.c_str());
-
   const std::string name = parsed ? source.file.string() : source.wads.back().filename().string() + ":" + map_name;
+  parsed.reset();  // its memory, before the encoded bytes take theirs
+  wads.reset();
+  for (const std::string& w : warnings) std::fprintf(stderr, "%s\n", w.c_str());
   if (a.check) {
     progress.phase("checking invariants");
     if (!check(level, name)) return 1;

@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::IsMember({"soup", "rooms", "maze", "caves", "arena"}));
   app.add_option("--walls", options.walls, "soup, rooms: number of walls (rooms: at least this many)")
-      ->check(CLI::Range(size_t{1}, size_t{4000000}))
+      ->check(CLI::Range(size_t{1}, limits::kMaxWalls / 2))
       ->capture_default_str();
   app.add_option("--grid", grid_size, "maze, caves, arena: tiles WxH")->capture_default_str();
   app.add_option("--cell", grid.cell, "maze, caves, arena: cell size in map units")->check(CLI::Range(8, 512))->capture_default_str();

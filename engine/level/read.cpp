@@ -187,6 +187,7 @@ class Reader {
   void read_walls() {
     section(format::kWalls, "WALL");
     const uint32_t n = in_.count(format::kWallRecord, "walls");
+    if (n > limits::kMaxWalls) in_.fail(limits::too_many_walls());
     level_.walls.resize(n);
     for (Wall& w : level_.walls) {
       in_.at("WALL", &w - level_.walls.data());

@@ -232,6 +232,7 @@ void grid_to_walls(Source& src, const GridInfo& g, const std::vector<int>& tile_
     w.v2 = v2;
     w.front.sector = sector;
     w.front.middle = texture;
+    if (src.walls.size() >= limits::kMaxWalls) throw Error(FileLoc{src.path.string(), 0}, limits::too_many_walls());
     src.walls.push_back(w);
     return int(src.walls.size() - 1);
   };

@@ -139,6 +139,7 @@ class Parser {
       else s.fail("unpeg must be upper, lower or both");
     }
     s.finish();
+    if (source_.walls.size() >= limits::kMaxWalls) s.fail(limits::too_many_walls());
     source_.walls.push_back(w);
   }
 
@@ -151,6 +152,7 @@ class Parser {
     if (auto y = s.take("yoff")) w.front.y_offset = s.bounded(*y, "yoff", limits::kMaxOffset);
     w.back = w.front;
     s.finish();
+    if (source_.walls.size() >= limits::kMaxWalls) s.fail(limits::too_many_walls());
     source_.walls.push_back(w);
   }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <unordered_map>
 
 #include "engine/map/source.h"
@@ -14,8 +15,97 @@ namespace {
 
 using geom::IPoint;
 
+// The max_count contacts with the smallest (later, earlier) walls, kept in a max-heap
+// on that key; walls are tested exactly.
+class ContactList {
+ public:
+  ContactList(const Source& src, size_t max_count) : src_(src), max_count_(max_count) {}
+
+  // False when the pair cannot enter the list (a later pair (b', a') >= (b, a) cannot either).
+  bool wanted(uint32_t a, uint32_t b) const {
+    return best_.size() < max_count_ || later_first({a, b, {}}, best_.front());
+  }
+  void test(uint32_t a, uint32_t b) {  // a < b
+    if (!wanted(a, b)) return;
+    const Wall &wa = src_.walls[a], &wb = src_.walls[b];
+    const auto kind = geom::segment_contact(src_.point(wa.v1), src_.point(wa.v2), src_.point(wb.v1), src_.point(wb.v2));
+    if (kind == geom::SegmentContact::kCross || kind == geom::SegmentContact::kOverlap) add({a, b, kind});
+  }
+  void add(const Contact& c) {
+    if (std::any_of(best_.begin(), best_.end(), [&](const Contact& o) { return o.a == c.a && o.b == c.b; })) return;
+    best_.push_back(c);
+    std::push_heap(best_.begin(), best_.end(), later_first);
+    if (best_.size() > max_count_) {
+      std::pop_heap(best_.begin(), best_.end(), later_first);
+      best_.pop_back();
+    }
+  }
+  std::vector<Contact> sorted() && {
+    std::sort(best_.begin(), best_.end(), later_first);
+    return std::move(best_);
+  }
+
+ private:
+  static bool later_first(const Contact& x, const Contact& y) { return std::tie(x.b, x.a) < std::tie(y.b, y.a); }
+  const Source& src_;
+  size_t max_count_;
+  std::vector<Contact> best_;
+};
+
+struct PointHash {
+  size_t operator()(IPoint p) const { return std::hash<int64_t>()(p.x * 0x9E3779B97F4A7C15ll ^ p.y); }
+};
+
+// The walls of one grid cell (ascending). All pairs are tested, except among walls
+// sharing the cell's busiest endpoint: those meet there, so they can only overlap, and
+// overlap exactly when they leave it in the same direction (sorted by direction, not
+// paired). This keeps a star or fan of n walls at one point at O(n log n), not n^2.
+void test_cell(const Source& src, std::vector<uint32_t> walls, ContactList& contacts) {
+  constexpr size_t kCrowded = 32;
+  while (walls.size() > kCrowded) {
+    std::unordered_map<IPoint, int, PointHash> uses;
+    for (uint32_t w : walls) ++uses[src.point(src.walls[w].v1)], ++uses[src.point(src.walls[w].v2)];
+    const auto busiest = std::max_element(uses.begin(), uses.end(), [](const auto& x, const auto& y) {
+      return std::tie(x.second, x.first.x, x.first.y) < std::tie(y.second, y.first.x, y.first.y);
+    });
+    if (busiest->second < int(kCrowded)) break;
+    const IPoint hub = busiest->first;
+    // (direction away from the hub reduced to lowest terms, wall), and the other walls.
+    std::vector<std::pair<std::pair<int64_t, int64_t>, uint32_t>> spokes;
+    std::vector<uint32_t> others;
+    for (uint32_t w : walls) {
+      const IPoint p1 = src.point(src.walls[w].v1), p2 = src.point(src.walls[w].v2);
+      if (p1 != hub && p2 != hub) {
+        others.push_back(w);
+        continue;
+      }
+      const IPoint d = geom::sub(p1 == hub ? p2 : p1, hub);
+      const int64_t g = std::gcd(d.x, d.y);
+      if (g == 0) {  // zero length (reported elsewhere)
+        others.push_back(w);
+        continue;
+      }
+      spokes.push_back({{d.x / g, d.y / g}, w});
+    }
+    std::sort(spokes.begin(), spokes.end());
+    for (size_t begin = 0; begin < spokes.size();) {
+      size_t end = begin;
+      while (end < spokes.size() && spokes[end].first == spokes[begin].first) ++end;
+      for (size_t q = begin + 1; q < end; ++q)  // pairs in ascending (later, earlier) order
+        for (size_t p = begin; p < q && contacts.wanted(spokes[p].second, spokes[q].second); ++p)
+          contacts.add({spokes[p].second, spokes[q].second, geom::SegmentContact::kOverlap});
+      begin = end;
+    }
+    for (const auto& spoke : spokes)
+      for (uint32_t o : others) contacts.test(std::min(spoke.second, o), std::max(spoke.second, o));
+    walls = std::move(others);
+  }
+  for (size_t p = 0; p < walls.size(); ++p)
+    for (size_t q = p + 1; q < walls.size(); ++q) contacts.test(walls[p], walls[q]);
+}
+
 // Candidate pairs come from a uniform grid: each wall is entered in the cells its
-// segment passes through, and walls sharing a cell are tested exactly.
+// segment passes through, and walls sharing a cell are tested (test_cell).
 std::vector<Contact> find_contacts_impl(const Source& src, size_t max_count) {
   const auto& walls = src.walls;
   const size_t n = walls.size();
@@ -57,32 +147,16 @@ std::vector<Contact> find_contacts_impl(const Source& src, size_t max_count) {
   }
   std::sort(entries.begin(), entries.end());
 
-  // The max_count contacts with the smallest (later, earlier) walls: a max-heap on that key.
-  auto later_first = [](const Contact& x, const Contact& y) { return std::tie(x.b, x.a) < std::tie(y.b, y.a); };
-  std::vector<Contact> best;
+  ContactList contacts(src, max_count);
+  std::vector<uint32_t> cell_walls;
   for (size_t begin = 0; begin < entries.size();) {
     size_t end = begin;
-    while (end < entries.size() && entries[end].first == entries[begin].first) ++end;
-    for (size_t p = begin; p < end; ++p)
-      for (size_t q = p + 1; q < end; ++q) {
-        const uint32_t i = entries[p].second, j = entries[q].second;  // i < j (sorted)
-        const Contact c{i, j, geom::SegmentContact::kNone};
-        if (best.size() == max_count && !later_first(c, best.front())) continue;
-        const auto kind = geom::segment_contact(src.point(walls[i].v1), src.point(walls[i].v2),
-                                                src.point(walls[j].v1), src.point(walls[j].v2));
-        if (kind != geom::SegmentContact::kCross && kind != geom::SegmentContact::kOverlap) continue;
-        if (std::any_of(best.begin(), best.end(), [&](const Contact& o) { return o.a == i && o.b == j; })) continue;
-        best.push_back({i, j, kind});
-        std::push_heap(best.begin(), best.end(), later_first);
-        if (best.size() > max_count) {
-          std::pop_heap(best.begin(), best.end(), later_first);
-          best.pop_back();
-        }
-      }
+    cell_walls.clear();
+    for (; end < entries.size() && entries[end].first == entries[begin].first; ++end) cell_walls.push_back(entries[end].second);
+    test_cell(src, cell_walls, contacts);
     begin = end;
   }
-  std::sort(best.begin(), best.end(), later_first);
-  return best;
+  return std::move(contacts).sorted();
 }
 
 void check_crossings(const Source& src) {

@@ -14,6 +14,11 @@ constexpr int kMaxGridSide = 4096;       // tiles per side of a .grid map
 constexpr double kMaxOffset = 1 << 21;   // texture offsets, map units (as coordinates: the texture arithmetic is sized for it)
 constexpr double kMinGridCell = 1;       // map units per tile
 constexpr size_t kMaxFileBytes = size_t{1} << 31;  // any input file: 2 GiB
+// Walls of one level (Doom's own format holds 65,535): compiling that many takes about
+// 2.5 GB of memory, so a larger level is refused as its walls are read, not after
+// the machine runs out of memory. The .bsp reader holds files to it too.
+constexpr size_t kMaxWalls = size_t{1} << 21;
+inline const char* too_many_walls() { return "more walls than a level may have (2,097,152)"; }
 
 // Paletted art (WAD levels): a 256-colour palette and Doom's 32 light maps over it.
 constexpr int kPaletteSize = 256;

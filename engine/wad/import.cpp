@@ -256,6 +256,7 @@ class Importer {
           w.back.middle == map::kNone)
         warn("same sector on both sides", record,
              "sector " + std::to_string(w.front.sector) + " on both sides, no special, no texture (it draws nothing)");
+      if (src_.walls.size() >= limits::kMaxWalls) throw Error(data_.where + ": " + limits::too_many_walls());
       src_.walls.push_back(std::move(w));
     }
   }

@@ -1,0 +1,77 @@
+// The crossing check against brute force, on the inputs that defeat a uniform grid:
+// many walls meeting at one point (stars and fans), overlapping spokes, and walls
+// crossing the spokes.
+#include <gtest/gtest.h>
+
+#include "engine/map/source.h"
+#include "engine/util/rng.h"
+
+namespace p3d::map {
+namespace {
+
+int add_vertex(Source& s, geom::IPoint p) {
+  s.vertices.push_back({"v" + std::to_string(s.vertices.size()), p, {}});
+  return int(s.vertices.size()) - 1;
+}
+void add_segment(Source& s, int a, int b) {
+  Wall w;
+  w.v1 = a, w.v2 = b, w.segment = true;
+  s.walls.push_back(w);
+}
+
+std::vector<Contact> brute_force(const Source& s) {
+  std::vector<Contact> out;
+  for (uint32_t b = 0; b < s.walls.size(); ++b)
+    for (uint32_t a = 0; a < b; ++a) {
+      const auto kind = geom::segment_contact(s.point(s.walls[a].v1), s.point(s.walls[a].v2), s.point(s.walls[b].v1),
+                                              s.point(s.walls[b].v2));
+      if (kind == geom::SegmentContact::kCross || kind == geom::SegmentContact::kOverlap) out.push_back({a, b, kind});
+    }
+  return out;  // in (b, a) order
+}
+
+// A few hubs, each with up to 150 spokes in a handful of directions (so some spokes
+// overlap), at either end of the spoke, plus stray walls that cross some of them.
+Source hubs_and_strays(uint64_t seed) {
+  Rng rng(seed);
+  Source s;
+  const auto coord = [&](int64_t range) { return (int64_t(rng.below(uint64_t(2 * range + 1))) - range) * int64_t(geom::kFixedOne); };
+  for (int h = 0; h < 3; ++h) {
+    const int hub = add_vertex(s, {coord(2000), coord(2000)});
+    const int spokes = 40 + int(rng.below(110));
+    for (int k = 0; k < spokes; ++k) {
+      const int64_t dx = coord(6), dy = coord(6), len = 1 + int64_t(rng.below(40));
+      if (dx == 0 && dy == 0) continue;
+      const int tip = add_vertex(s, {s.point(hub).x + dx * len, s.point(hub).y + dy * len});
+      rng.below(2) ? add_segment(s, hub, tip) : add_segment(s, tip, hub);
+    }
+  }
+  for (int k = 0; k < 30; ++k)
+    add_segment(s, add_vertex(s, {coord(2200), coord(2200)}), add_vertex(s, {coord(2200), coord(2200)}));
+  return s;
+}
+
+TEST(Crossings, AgreeWithBruteForceAroundCrowdedPoints) {
+  int crossings = 0, overlaps = 0;
+  for (uint64_t seed = 1; seed <= 20; ++seed) {
+    const Source s = hubs_and_strays(seed);
+    const std::vector<Contact> expected = brute_force(s);
+    const std::vector<Contact> found = find_contacts(s, SIZE_MAX);
+    ASSERT_EQ(found.size(), expected.size()) << "seed " << seed;
+    for (size_t i = 0; i < found.size(); ++i) {
+      EXPECT_EQ(found[i].a, expected[i].a) << "seed " << seed << " contact " << i;
+      EXPECT_EQ(found[i].b, expected[i].b) << "seed " << seed << " contact " << i;
+      EXPECT_EQ(found[i].kind, expected[i].kind) << "seed " << seed << " contact " << i;
+      (found[i].kind == geom::SegmentContact::kCross ? crossings : overlaps)++;
+    }
+    // The first few only, as validate asks for one.
+    const std::vector<Contact> first = find_contacts(s, 3);
+    ASSERT_EQ(first.size(), std::min<size_t>(3, expected.size()));
+    for (size_t i = 0; i < first.size(); ++i) EXPECT_EQ(std::tie(first[i].a, first[i].b), std::tie(expected[i].a, expected[i].b));
+  }
+  EXPECT_GT(crossings, 100);  // the cases exercise both kinds
+  EXPECT_GT(overlaps, 100);
+}
+
+}  // namespace
+}  // namespace p3d::map
