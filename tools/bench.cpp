@@ -5,6 +5,7 @@
 //   strategies  tree size, depth, build time and frame time per BSP strategy
 // Timings are wall-clock medians on one thread; compare ratios within one run.
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -419,6 +420,31 @@ double run_process(const std::vector<std::string>& args) {
   return cli::seconds_since(start);
 }
 
+// A child's wall time, peak memory and exit status.
+struct Measured {
+  double seconds = 0;
+  double peak_mb = 0;
+  int status = 0;
+};
+Measured run_measured(const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  const auto start = Clock::now();
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, 1);
+    ::dup2(null, 2);
+    ::execvp(argv[0], argv.data());
+    ::_exit(127);
+  }
+  int status = 0;
+  rusage usage{};
+  if (pid < 0 || ::wait4(pid, &status, 0, &usage) < 0 || !WIFEXITED(status)) throw Error(args[0] + " did not finish");
+  return {cli::seconds_since(start), double(usage.ru_maxrss) / 1024, WEXITSTATUS(status)};
+}
+
 std::filesystem::path own_directory() { return std::filesystem::read_symlink("/proc/self/exe").parent_path(); }
 
 bool on_path(const std::string& program) {
@@ -578,6 +604,81 @@ void bench_wad(const Settings& s) {
   std::filesystem::remove_all(dir);
 }
 
+// ---- hostile ------------------------------------------------------------------
+
+// Levels built to defeat a compiler: one convex sector of 100,000 walls (a chain of
+// depth n for a naive splitter choice), 60,000 and 200,000 walls meeting at one point
+// (every pair in one cell of a uniform grid), 20,000 near-parallel slivers, and the
+// largest tile maps (a 4096x4096 maze has more walls than a level may have).
+std::string circle_text(int n, int64_t radius, bool fan) {
+  std::string text = "texture brick brick.png\n";
+  if (fan) text += "vertex c 0 0\n";
+  else text += "sector room floor=0 ceiling=128 floor_tex=brick ceiling_tex=brick\n";
+  std::vector<std::pair<int64_t, int64_t>> points;
+  for (int i = 0; i < n; ++i) {
+    const double a = (fan ? 2 : -2) * M_PI * i / n;  // a sector's walls run clockwise
+    const std::pair<int64_t, int64_t> p{std::llround(double(radius) * std::cos(a)), std::llround(double(radius) * std::sin(a))};
+    if (points.empty() || p != points.back()) points.push_back(p);
+  }
+  if (points.size() > 1 && points.front() == points.back()) points.pop_back();
+  for (size_t i = 0; i < points.size(); ++i)
+    text += "vertex p" + std::to_string(i) + " " + std::to_string(points[i].first) + " " + std::to_string(points[i].second) + "\n";
+  for (size_t i = 0; i < points.size(); ++i)
+    text += fan ? "segment c p" + std::to_string(i) + " texture=brick\n"
+                : "wall p" + std::to_string(i) + " p" + std::to_string((i + 1) % points.size()) + " front=room middle=brick\n";
+  return text + (fan ? "player " + std::to_string(radius / 3) + " 7 0\n" : "player 0 0 0\n");
+}
+
+std::string slivers_text(int n) {
+  std::string text = "texture brick brick.png\n";
+  for (int i = 0; i < n; ++i)
+    text += "vertex a" + std::to_string(i) + " 0 " + std::to_string(4 * i) + "\nvertex b" + std::to_string(i) + " 100000 " +
+            std::to_string(4 * i + 1) + "\nsegment a" + std::to_string(i) + " b" + std::to_string(i) + " texture=brick\n";
+  return text + "player -50 -50 0\n";
+}
+
+void bench_hostile(const Settings& s) {
+  const auto dir = std::filesystem::temp_directory_path() / ("p3d-bench-hostile-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto textures = std::filesystem::path(s.source_dir) / "maps/textures";
+  for (const char* name : {"brick", "stone", "metal", "wood", "tech", "tiles", "ceiling"})
+    write_file_atomically(dir / (std::string(name) + ".png"), read_file_bytes(textures / (std::string(name) + ".png")));
+  report.print("\n### Hostile levels: mapc's time and memory (whole process)\n\n");
+  report.print("| level | walls | outcome | seconds | peak MB |\n|---|---:|---|---:|---:|\n");
+  struct Case {
+    std::string name, file;
+    size_t walls;
+    std::string text;
+  };
+  std::vector<Case> cases = {
+      {"convex sector of 100,000 walls", "convex.map", 100000, circle_text(100000, 400000, false)},
+      {"60,000 walls meeting at one point", "star.map", 60000, circle_text(60000, 1000000, true)},
+      {"fan of 200,000 walls", "fan.map", 200000, circle_text(200000, 1000000, true)},
+      {"20,000 near-parallel slivers", "slivers.map", 20000, slivers_text(20000)},
+  };
+  map::GridOptions o;
+  for (const char* name : {"brick", "stone", "metal", "wood", "tech", "tiles", "ceiling"}) o.texture_files.push_back(std::string(name) + ".png");
+  o.cols = o.rows = limits::kMaxGridSide;
+  for (const char* kind : {"maze", "arena"}) {
+    o.kind = kind;
+    cases.push_back({std::string(kind) + " of 4096x4096 tiles", std::string(kind) + ".grid", 0, map::generate_grid_text(o)});
+  }
+  const std::string mapc = (own_directory() / "mapc").string();
+  for (Case& c : cases) {
+    write_file_atomically(dir / c.file, c.text);
+    c.text.clear();
+    const Measured m = run_measured({mapc, (dir / c.file).string(), "-o", (dir / "out.bsp").string()});
+    std::string walls = c.walls ? std::to_string(c.walls) : "";
+    if (m.status == 0) walls = std::to_string(level::read(dir / "out.bsp").walls.size());
+    report.print("| %s | %s | %s | %s | %s |\n", c.name.c_str(), walls.c_str(),
+                 m.status == 0 ? "compiled" : ("refused (exit " + std::to_string(m.status) + ")").c_str(),
+                 fixed(m.seconds, 2).c_str(), fixed(m.peak_mb, 0).c_str());
+    std::filesystem::remove(dir / "out.bsp");
+    std::fflush(stdout);
+  }
+  std::filesystem::remove_all(dir);
+}
+
 std::string cpu_name() {
   std::ifstream in("/proc/cpuinfo");
   std::string line;
@@ -594,8 +695,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> sections;
   std::string size_text = "640x400";
   app.add_option("sections", sections,
-                 "render, scaling, grids, strategies, wad (default: all but wad; with --iwad, wad)")
-      ->check(CLI::IsMember({"render", "scaling", "grids", "strategies", "wad"}));
+                 "render, scaling, grids, strategies, hostile, wad (default: all but wad; with --iwad, wad)")
+      ->check(CLI::IsMember({"render", "scaling", "grids", "strategies", "hostile", "wad"}));
   cli::add_wad_options(app, s.wads);
   app.add_option("--cameras", s.cameras, "wad: random cameras per map")->check(CLI::Range(1, 100000))->capture_default_str();
   app.add_option("--runs", s.runs, "wad: compiles per map and tool (median)")->check(CLI::Range(1, 1000))->capture_default_str();
@@ -618,7 +719,7 @@ int main(int argc, char** argv) {
     for (const auto& r : s.renderers)
       if (!render::make_renderer(r)) throw CLI::ValidationError("--renderers", "unknown renderer '" + r + "'");
     if (sections.empty())
-      sections = s.wads.iwad.empty() ? std::vector<std::string>{"render", "scaling", "grids", "strategies"}
+      sections = s.wads.iwad.empty() ? std::vector<std::string>{"render", "scaling", "grids", "strategies", "hostile"}
                                      : std::vector<std::string>{"wad"};
     if (std::count(sections.begin(), sections.end(), "wad") && s.wads.iwad.empty())
       throw CLI::ValidationError("--iwad", "the wad section needs WADs: --iwad [--file ...] [--map ...]");
@@ -631,6 +732,7 @@ int main(int argc, char** argv) {
       if (section == "scaling") bench_scaling(s);
       if (section == "grids") bench_grids(s);
       if (section == "strategies") bench_strategies(s);
+      if (section == "hostile") bench_hostile(s);
       if (section == "wad") bench_wad(s);
     }
     if (!json.empty()) write_file_atomically(json, report.json());

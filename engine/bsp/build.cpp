@@ -476,7 +476,7 @@ class Builder {
 }  // namespace
 
 level::Level build(const map::Source& source, const Options& options, Stats* stats) {
-  if (source.walls.size() > limits::kMaxWalls) throw Error(source.path.string() + ": " + limits::too_many_walls());
+  map::check_limits(source);
   return Builder(source, options).run(stats);
 }
 

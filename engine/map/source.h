@@ -166,6 +166,11 @@ void grid_to_walls(Source& source, const GridInfo& grid, const std::vector<int>&
 // Throws Error at the first problem (hand-written maps must be clean).
 void validate(const Source& source);
 
+// The values a compiled level can hold (engine/util/limits.h): names, title, heights,
+// offsets, lights, positions, picture sizes. Part of validate; the compiler applies it
+// to every source, so it never writes what the reader refuses.
+void check_limits(const Source& source);
+
 // The checks behind validate, as lists (WAD imports report them as warnings).
 struct Contact {
   uint32_t a, b;  // walls, a < b

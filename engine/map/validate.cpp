@@ -275,7 +275,59 @@ std::vector<int> unused_sectors(const Source& src) {
   return out;
 }
 
+void check_limits(const Source& src) {
+  const FileLoc file{src.path.string(), 0};
+  auto fail_if = [](bool bad, const FileLoc& loc, const std::string& what) {
+    if (bad) throw Error(loc, what + " is beyond the limits a compiled level holds (engine/util/limits.h)");
+  };
+  auto name = [&](const std::string& n, const FileLoc& loc, const char* what) {
+    fail_if(n.size() > limits::kMaxNameLength, loc, std::string(what) + " name of " + std::to_string(n.size()) + " bytes");
+  };
+  auto coordinate = [&](double v, const FileLoc& loc, const char* what) {
+    fail_if(!(std::fabs(v) <= geom::kMaxCoord), loc, what);  // NaN fails too
+  };
+  if (src.walls.size() > limits::kMaxWalls) throw Error(file, limits::too_many_walls());
+  fail_if(src.title.size() > limits::kMaxTitleLength, file, "a title of " + std::to_string(src.title.size()) + " bytes");
+  coordinate(src.player.pos.x, src.player.loc, "the player start");
+  coordinate(src.player.pos.y, src.player.loc, "the player start");
+  fail_if(!std::isfinite(src.player.angle), src.player.loc, "the player's angle");
+  for (const Texture& t : src.textures) {
+    name(t.name, t.loc, "a texture");
+    fail_if(t.image.width > kMaxTextureSize || t.image.height > kMaxTextureSize, t.loc, "a texture's size");
+  }
+  for (const Sector& s : src.sectors) {
+    name(s.name, s.loc, "a sector");
+    coordinate(s.floor, s.loc, "a floor height");
+    coordinate(s.ceiling, s.loc, "a ceiling height");
+    fail_if(s.light < 0 || s.light > 255, s.loc, "a light level");
+  }
+  for (const Wall& w : src.walls)
+    for (const Side& side : {w.front, w.back}) {
+      bool offsets_fit = std::fabs(side.x_offset) <= limits::kMaxOffset && std::fabs(side.y_offset) <= limits::kMaxOffset;
+      for (int k = 0; k < 3; ++k)
+        offsets_fit = offsets_fit && std::fabs(side.part_x[k]) <= limits::kMaxOffset && std::fabs(side.part_y[k]) <= limits::kMaxOffset;
+      fail_if(!offsets_fit, w.loc, "a texture offset");
+      fail_if(side.light != kNone && (side.light < 0 || side.light > 255), w.loc, "a wall's light level");
+    }
+  for (const SpriteImage& i : src.sprite_images) {
+    name(i.name, file, "a sprite image");
+    fail_if(i.image.width > kMaxTextureSize || i.image.height > kMaxTextureSize ||
+                std::abs(i.left) > kMaxTextureSize || std::abs(i.top) > kMaxTextureSize,
+            file, "sprite image " + i.name);
+  }
+  for (const SpriteFrame& f : src.sprites) {
+    name(f.name, file, "a sprite frame");
+    coordinate(f.drop, file, "a sprite's drop");
+  }
+  for (const Thing& t : src.things) {
+    coordinate(t.pos.x, file, "a thing's position");
+    coordinate(t.pos.y, file, "a thing's position");
+    fail_if(!std::isfinite(t.angle), file, "a thing's angle");
+  }
+}
+
 void validate(const Source& src) {
+  check_limits(src);
   if (src.walls.empty()) throw Error(FileLoc{src.path.string(), 0}, "the map has no walls");
   for (const Wall& w : src.walls) {
     if (src.point(w.v1) == src.point(w.v2)) throw Error(w.loc, "zero-length wall: both ends are at the same point");

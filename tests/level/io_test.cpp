@@ -53,6 +53,54 @@ TEST_F(LevelIo, RoundTripIsExact) {
   EXPECT_EQ(back.bounds.min, level_->bounds.min);
 }
 
+// The compiler never writes what the reader refuses: random levels, and one with every
+// value at the limits the parsers allow, round-trip exactly; one value past a limit is
+// refused by the compiler, not written.
+TEST(LevelRoundTrip, WhatCompilesIsReadBack) {
+  std::vector<map::Source> sources;
+  for (uint64_t seed = 1; seed <= 6; ++seed) {
+    sources.push_back(test::random_rooms(150 * seed, seed));
+    sources.push_back(test::random_soup(200 * seed, seed));
+  }
+  map::Source edge = test::random_rooms(100, 7);
+  edge.title = std::string(limits::kMaxTitleLength, 't');
+  edge.sectors[0].name = std::string(limits::kMaxNameLength, 's');
+  edge.textures[0].name = std::string(limits::kMaxNameLength, 'x');
+  edge.sectors[1].floor = -geom::kMaxCoord;
+  edge.sectors[1].ceiling = geom::kMaxCoord;
+  edge.sectors[2].light = 0;
+  edge.sectors[3].light = 255;
+  for (map::Side* side : {&edge.walls[0].front, &edge.walls[1].front}) {
+    side->x_offset = limits::kMaxOffset;
+    side->y_offset = -limits::kMaxOffset;
+    for (double& v : side->part_x) v = -limits::kMaxOffset;
+    for (double& v : side->part_y) v = limits::kMaxOffset;
+  }
+  map::validate(edge);
+  sources.push_back(edge);
+  for (const map::Source& src : sources) {
+    const std::vector<uint8_t> bytes = encode(test::compile(src));
+    std::vector<uint8_t> again;
+    ASSERT_NO_THROW(again = encode(decode(bytes, "x.bsp"))) << src.title.substr(0, 40);
+    EXPECT_EQ(again, bytes);
+  }
+  const auto refused = [](void (*edit)(map::Source&)) {
+    map::Source s = test::random_rooms(100, 7);
+    edit(s);
+    try {
+      test::compile(s);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(compiled)");
+  };
+  EXPECT_NE(refused([](map::Source& s) { s.title = std::string(limits::kMaxTitleLength + 1, 't'); }), "(compiled)");
+  EXPECT_NE(refused([](map::Source& s) { s.sectors[0].name = std::string(limits::kMaxNameLength + 1, 's'); }), "(compiled)");
+  EXPECT_NE(refused([](map::Source& s) { s.textures[0].name = std::string(limits::kMaxNameLength + 1, 'x'); }), "(compiled)");
+  EXPECT_NE(refused([](map::Source& s) { s.walls[0].front.x_offset = limits::kMaxOffset * 2; }), "(compiled)");
+  EXPECT_NE(refused([](map::Source& s) { s.sectors[1].ceiling = geom::kMaxCoord * 2; }), "(compiled)");
+}
+
 TEST_F(LevelIo, RejectsDamagedFiles) {
   const std::vector<uint8_t> good = encode(*level_);
   EXPECT_EQ(decode_error({}), "x.bsp: not a compiled level (bad magic; compile maps with mapc)");
