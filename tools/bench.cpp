@@ -400,27 +400,7 @@ void bench_strategies(const Settings& s) {
 
 // ---- wad: every map of WADs compiled beside ZDBSP, and rendered ---------------
 
-// Runs a program with its output discarded; the wall time in seconds. Throws if it fails.
-double run_process(const std::vector<std::string>& args) {
-  std::vector<char*> argv;
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  const auto start = Clock::now();
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    const int null = ::open("/dev/null", O_WRONLY);
-    ::dup2(null, 1);
-    ::dup2(null, 2);
-    ::execvp(argv[0], argv.data());
-    ::_exit(127);
-  }
-  int status = 0;
-  if (pid < 0 || ::waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw Error(args[0] + " failed (" + args.back() + ")");
-  return cli::seconds_since(start);
-}
-
-// A child's wall time, peak memory and exit status.
+// Runs a program with its output discarded: its wall time, peak memory and exit status.
 struct Measured {
   double seconds = 0;
   double peak_mb = 0;
@@ -443,6 +423,13 @@ Measured run_measured(const std::vector<std::string>& args) {
   rusage usage{};
   if (pid < 0 || ::wait4(pid, &status, 0, &usage) < 0 || !WIFEXITED(status)) throw Error(args[0] + " did not finish");
   return {cli::seconds_since(start), double(usage.ru_maxrss) / 1024, WEXITSTATUS(status)};
+}
+
+// A child's wall time; it must succeed.
+double run_process(const std::vector<std::string>& args) {
+  const Measured m = run_measured(args);
+  if (m.status != 0) throw Error(args[0] + " failed (" + args.back() + ")");
+  return m.seconds;
 }
 
 std::filesystem::path own_directory() { return std::filesystem::read_symlink("/proc/self/exe").parent_path(); }
