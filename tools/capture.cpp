@@ -1,6 +1,9 @@
 // capture: headless frames of a compiled level as PNG, with per-column hits
 // (--columns) and per-frame statistics (--stats). Same inputs, same bytes.
 #include <algorithm>
+#include <deque>
+#include <future>
+#include <thread>
 
 #include "engine/image/image.h"
 #include "engine/bsp/load.h"
@@ -25,6 +28,33 @@ std::string columns_csv(const level::Level& level, const render::ColumnHits& hit
   return out;
 }
 
+// PNGs encoded on worker threads while the next frames render; kept in camera order, so
+// the outputs do not depend on the thread count. At most 2 x threads frames wait.
+class PngEncoder {
+ public:
+  explicit PngEncoder(int threads) : threads_(threads) {}
+  void add(const std::filesystem::path& path, const image::Image& frame, Outputs& outputs) {
+    if (threads_ <= 1) return outputs.add(path, image::encode_png(frame));
+    while (pending_.size() >= size_t(2 * threads_)) finish_oldest(outputs);
+    pending_.push_back({path, std::async(std::launch::async, [frame] { return image::encode_png(frame); })});
+  }
+  void finish(Outputs& outputs) {
+    while (!pending_.empty()) finish_oldest(outputs);
+  }
+
+ private:
+  void finish_oldest(Outputs& outputs) {
+    outputs.add(pending_.front().path, pending_.front().bytes.get());
+    pending_.pop_front();
+  }
+  struct Pending {
+    std::filesystem::path path;
+    std::future<std::vector<uint8_t>> bytes;
+  };
+  int threads_;
+  std::deque<Pending> pending_;
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -34,7 +64,7 @@ int main(int argc, char** argv) {
   std::optional<double> angle;
   double eye = render::kEyeHeight, fov = 90;
   bool stats = false, all_warnings = false;
-  int skill = level::kDefaultSkill;
+  int skill = level::kDefaultSkill, threads = int(std::max(1u, std::thread::hardware_concurrency()));
   render::RendererOptions ropt;
   cli::add_level_options(app, level_args);
   app.add_option("--pos", pos_text, "camera position X,Y (map units; default: the player start)");
@@ -56,6 +86,9 @@ int main(int argc, char** argv) {
   app.add_flag("--all-warnings", all_warnings, "list every warning about a WAD map's quirks");
   cli::add_skill_option(app, skill);
   cli::add_renderer_options(app, ropt);
+  app.add_option("--threads", threads, "threads encoding PNGs (default: every core); the files are the same for any count")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
 
   return cli::run(app, argc, argv, [&] {
     int width = 0, height = 0;
@@ -99,6 +132,7 @@ int main(int argc, char** argv) {
     probe.want_columns = !columns.empty();
     std::vector<std::string> json_frames;
     Outputs outputs;  // every frame, all or nothing
+    PngEncoder encoder(threads);
     for (const render::CameraSpec& shot : shots) {
       cli::warn_if_outside("capture", level, shot);
       const render::Camera camera = render::camera_at(level, shot.pos, shot.angle, shot.eye, shot.fov);
@@ -107,8 +141,8 @@ int main(int argc, char** argv) {
       double ms = cli::seconds_since(start) * 1000;
 
       const bool many = !cameras.empty();
-      outputs.add(many ? std::filesystem::path(output) / (shot.name + ".png") : std::filesystem::path(output),
-                  image::encode_png(frame));
+      encoder.add(many ? std::filesystem::path(output) / (shot.name + ".png") : std::filesystem::path(output), frame,
+                  outputs);
       if (!columns.empty())
         outputs.add(many ? std::filesystem::path(columns) / (shot.name + ".csv") : std::filesystem::path(columns),
                     columns_csv(level, probe.columns));
@@ -128,6 +162,7 @@ int main(int argc, char** argv) {
                               ", \"time\": " + stats_json({{"ms_per_frame", std::round(ms * 1000) / 1000}}) + "}");
       }
     }
+    encoder.finish(outputs);
     if (!json.empty()) {
       std::string j = "{\"level\": " + json_string(opened.name) + ", \"renderer\": " + json_string(renderer_name) +
                       ", \"frames\": [\n";

@@ -1,7 +1,6 @@
 #include "engine/image/image.h"
 
 #include <stb_image.h>
-#include <stb_image_write.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -46,17 +45,6 @@ Image decode_png(std::span<const uint8_t> bytes, const std::string& what) {
 }
 
 Image load_png(const std::filesystem::path& path) { return decode_png(read_file_bytes(path), path.string()); }
-
-std::vector<uint8_t> encode_png(const Image& image) {
-  std::vector<uint8_t> out;
-  auto sink = [](void* context, void* data, int size) {
-    auto* v = static_cast<std::vector<uint8_t>*>(context);
-    v->insert(v->end(), static_cast<uint8_t*>(data), static_cast<uint8_t*>(data) + size);
-  };
-  if (!stbi_write_png_to_func(sink, &out, image.width, image.height, 4, image.pixels.data(), image.width * 4))
-    throw Error("cannot encode PNG");
-  return out;
-}
 
 void save_png(const Image& image, const std::filesystem::path& path) {
   write_file_atomically(path, encode_png(image));

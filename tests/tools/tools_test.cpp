@@ -98,6 +98,15 @@ TEST_F(Tools, CompileAndCaptureAreReproducible) {
       << o;
   EXPECT_TRUE(std::filesystem::exists(out("shots/one.png")));
   EXPECT_TRUE(std::filesystem::exists(out("shots/two.csv")));
+  // PNGs encoded on other threads: the same files for any thread count.
+  for (const char* threads : {"1", "3"})
+    ASSERT_EQ(test::run(tool("capture") + " " + out("a.bsp") + " --cameras " + out("cams") + " --size 64x40 --threads " +
+                            threads + " -o " + out(std::string("t") + threads),
+                        o), 0) << o;
+  for (const char* name : {"one.png", "two.png"}) {
+    EXPECT_EQ(read_file_bytes(out(std::string("t1/") + name)), read_file_bytes(out(std::string("t3/") + name))) << name;
+    EXPECT_EQ(read_file_bytes(out(std::string("t1/") + name)), read_file_bytes(out(std::string("shots/") + name))) << name;
+  }
 }
 
 TEST_F(Tools, DamagedLevelsAreRejected) {
