@@ -16,10 +16,12 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <thread>
 
 #include "engine/bsp/build.h"
 #include "engine/bsp/load.h"
 #include "engine/util/rng.h"
+#include <stb_image_write.h>
 #include "engine/wad/write.h"
 #include "engine/level/io.h"
 #include "engine/map/generate.h"
@@ -666,6 +668,64 @@ void bench_hostile(const Settings& s) {
   std::filesystem::remove_all(dir);
 }
 
+// ---- capture ------------------------------------------------------------------
+
+std::vector<uint8_t> stb_png(const image::Image& img) {  // the encoder we replaced, for comparison
+  std::vector<uint8_t> out;
+  auto sink = [](void* context, void* data, int size) {
+    auto* v = static_cast<std::vector<uint8_t>*>(context);
+    v->insert(v->end(), static_cast<uint8_t*>(data), static_cast<uint8_t*>(data) + size);
+  };
+  stbi_write_png_to_func(sink, &out, img.width, img.height, 4, img.pixels.data(), img.width * 4);
+  return out;
+}
+
+// The outpost path's frames: render, PNG encoding by ours and by stb_image_write (in one
+// run), and whole `capture --cameras` processes on one thread and on every core.
+void bench_capture(const Settings& s) {
+  const auto dir = std::filesystem::temp_directory_path() / ("p3d-bench-capture-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto maps = std::filesystem::path(s.source_dir) / "maps";
+  const level::Level level = bsp::build(map::load_map(maps / "outpost.map"), {});
+  const auto path = cameras_from(level, render::read_camera_list(maps / "outpost.path"));
+  auto renderer = render::make_renderer("bsp");
+  renderer->prepare(level);
+  const level::State state = level::start_state(level);
+  render::Frame frame(s.width, s.height);
+  double render_ms = 0, ours_ms = 0, stb_ms = 0, ours_bytes = 0, stb_bytes = 0;
+  for (const render::Camera& camera : path) {
+    auto t = Clock::now();
+    renderer->render(level, state, camera, frame);
+    render_ms += cli::seconds_since(t) * 1000;
+    t = Clock::now();
+    ours_bytes += double(image::encode_png(frame).size());
+    ours_ms += cli::seconds_since(t) * 1000;
+    t = Clock::now();
+    stb_bytes += double(stb_png(frame).size());
+    stb_ms += cli::seconds_since(t) * 1000;
+  }
+  const double n = double(path.size());
+  report.print("\n### Capture: %zu frames of the outpost path, %dx%d\n\n", path.size(), s.width, s.height);
+  report.print("| step | ms/frame | KB/frame |\n|---|---:|---:|\n");
+  report.print("| render (bsp) | %s | |\n", fixed(render_ms / n, 2).c_str());
+  report.print("| PNG, ours (libdeflate) | %s | %s |\n", fixed(ours_ms / n, 2).c_str(), fixed(ours_bytes / n / 1024, 0).c_str());
+  report.print("| PNG, stb_image_write | %s | %s |\n", fixed(stb_ms / n, 2).c_str(), fixed(stb_bytes / n / 1024, 0).c_str());
+  report.print("| stb / ours | %s | %s |\n", fixed(stb_ms / ours_ms, 2).c_str(), fixed(stb_bytes / ours_bytes, 2).c_str());
+  const std::string capture = (own_directory() / "capture").string();
+  const std::string cores = std::to_string(std::max(1u, std::thread::hardware_concurrency()));
+  report.print("\n| `capture --cameras` (whole process) | seconds | frames/s |\n|---|---:|---:|\n");
+  for (const std::string& threads : {std::string("1"), cores}) {
+    std::vector<double> runs;
+    for (int r = 0; r < 3; ++r)
+      runs.push_back(run_process({capture, (maps / "outpost.map").string(), "--cameras", (maps / "outpost.path").string(),
+                                  "--size", std::to_string(s.width) + "x" + std::to_string(s.height), "--threads", threads,
+                                  "-o", (dir / "frames").string()}));
+    const double seconds = median(runs);
+    report.print("| --threads %s | %s | %s |\n", threads.c_str(), fixed(seconds, 2).c_str(), fixed(n / seconds, 0).c_str());
+  }
+  std::filesystem::remove_all(dir);
+}
+
 std::string cpu_name() {
   std::ifstream in("/proc/cpuinfo");
   std::string line;
@@ -682,8 +742,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> sections;
   std::string size_text = "640x400";
   app.add_option("sections", sections,
-                 "render, scaling, grids, strategies, hostile, wad (default: all but wad; with --iwad, wad)")
-      ->check(CLI::IsMember({"render", "scaling", "grids", "strategies", "hostile", "wad"}));
+                 "render, scaling, grids, strategies, hostile, capture, wad (default: all but wad; with --iwad, wad)")
+      ->check(CLI::IsMember({"render", "scaling", "grids", "strategies", "hostile", "capture", "wad"}));
   cli::add_wad_options(app, s.wads);
   app.add_option("--cameras", s.cameras, "wad: random cameras per map")->check(CLI::Range(1, 100000))->capture_default_str();
   app.add_option("--runs", s.runs, "wad: compiles per map and tool (median)")->check(CLI::Range(1, 1000))->capture_default_str();
@@ -706,7 +766,7 @@ int main(int argc, char** argv) {
     for (const auto& r : s.renderers)
       if (!render::make_renderer(r)) throw CLI::ValidationError("--renderers", "unknown renderer '" + r + "'");
     if (sections.empty())
-      sections = s.wads.iwad.empty() ? std::vector<std::string>{"render", "scaling", "grids", "strategies", "hostile"}
+      sections = s.wads.iwad.empty() ? std::vector<std::string>{"render", "scaling", "grids", "strategies", "hostile", "capture"}
                                      : std::vector<std::string>{"wad"};
     if (std::count(sections.begin(), sections.end(), "wad") && s.wads.iwad.empty())
       throw CLI::ValidationError("--iwad", "the wad section needs WADs: --iwad [--file ...] [--map ...]");
@@ -720,6 +780,7 @@ int main(int argc, char** argv) {
       if (section == "grids") bench_grids(s);
       if (section == "strategies") bench_strategies(s);
       if (section == "hostile") bench_hostile(s);
+      if (section == "capture") bench_capture(s);
       if (section == "wad") bench_wad(s);
     }
     if (!json.empty()) write_file_atomically(json, report.json());

@@ -168,6 +168,8 @@ inline bool is_wad_file(const std::string& path) {
 }
 
 // Throws CLI::ValidationError for a contradictory or missing choice.
+inline std::filesystem::path bundled_maps_dir();
+
 inline bsp::LevelSource level_source(const LevelArgs& a) {
   bsp::LevelSource s;
   s.map = a.map;
@@ -185,6 +187,7 @@ inline bsp::LevelSource level_source(const LevelArgs& a) {
     if (!a.map.empty()) throw CLI::ValidationError("--map", "names a map in WADs: use it with --iwad");
     s.file = a.path;
     s.load.textures_anywhere = a.textures_anywhere;
+    s.load.bundled_textures = bundled_maps_dir() / "textures";
     return s;
   }
   for (const std::string& f : a.files) s.wads.push_back(f);

@@ -8,26 +8,14 @@ using namespace p3d;
 
 namespace {
 
-// The textures a generated map uses, copied into a textures/ folder beside it (a map
-// reads pictures only from its own directory): the map and its folder move together.
-// Returns the paths as the map names them.
-std::vector<std::string> texture_files(const std::string& texture_dir, const std::vector<std::string>& names,
-                                       const std::filesystem::path& output) {
-  const std::filesystem::path beside = output.parent_path() / "textures";
+// The bundled textures a generated map uses, by bare file name: a map finds them
+// among the bundled textures wherever it is moved (map::LoadOptions).
+std::vector<std::string> texture_files(const std::string& texture_dir, const std::vector<std::string>& names) {
   std::vector<std::string> files;
   for (const std::string& name : names) {
     const std::filesystem::path file = std::filesystem::path(texture_dir) / (name + ".png");
-    if (!std::filesystem::is_regular_file(file)) throw Error(file.string() + ": texture not found (see --textures)");
-    const std::filesystem::path copy = beside / file.filename();
-    std::error_code ec;
-    if (!std::filesystem::equivalent(file, copy, ec)) {
-      const std::vector<uint8_t> bytes = read_file_bytes(file);
-      if (!std::filesystem::exists(copy) || read_file_bytes(copy) != bytes) {
-        std::filesystem::create_directories(beside);
-        write_file_atomically(copy, bytes);
-      }
-    }
-    files.push_back("textures/" + file.filename().string());
+    if (!std::filesystem::is_regular_file(file)) throw Error(file.string() + ": bundled texture not found");
+    files.push_back(file.filename().string());
   }
   return files;
 }
@@ -36,7 +24,8 @@ std::vector<std::string> texture_files(const std::string& texture_dir, const std
 
 int main(int argc, char** argv) {
   CLI::App app{"mapgen: write a random level: a .map (soup, rooms) or a .grid (maze, caves)", "mapgen"};
-  std::string kind, output, texture_dir = (cli::bundled_maps_dir() / "textures").string(), grid_size = "64x64";
+  const std::string texture_dir = (cli::bundled_maps_dir() / "textures").string();
+  std::string kind, output, grid_size = "64x64";
   map::GenerateOptions options;
   map::GridOptions grid;
   app.add_option("kind", kind,
@@ -50,9 +39,6 @@ int main(int argc, char** argv) {
   app.add_option("--grid", grid_size, "maze, caves, arena: tiles WxH")->capture_default_str();
   app.add_option("--cell", grid.cell, "maze, caves, arena: cell size in map units")->check(CLI::Range(8, 512))->capture_default_str();
   app.add_option("--seed", options.seed, "random seed")->capture_default_str();
-  app.add_option("--textures", texture_dir, "directory with the bundled texture PNGs")
-      ->check(CLI::ExistingDirectory)
-      ->capture_default_str();
   app.add_option("-o,--output", output, "file to write")->required();
 
   return cli::run(app, argc, argv, [&] {
@@ -61,22 +47,23 @@ int main(int argc, char** argv) {
     if (ext != (grid_kind ? ".grid" : ".map"))
       throw CLI::ValidationError("--output", kind + " writes a " + (grid_kind ? ".grid tile map" : ".map") + ": name it " +
                                                  std::filesystem::path(output).replace_extension(grid_kind ? ".grid" : ".map").string());
+    if (const auto parent = std::filesystem::path(output).parent_path(); !parent.empty())
+      std::filesystem::create_directories(parent);
     if (grid_kind) {
       cli::parse_size(grid_size, grid.cols, grid.rows);
       if (grid.cols < 8 || grid.rows < 8 || grid.cols > 4096 || grid.rows > 4096)
         throw CLI::ValidationError("--grid", "between 8x8 and 4096x4096 tiles");
       grid.kind = kind;
       grid.seed = options.seed;
-      grid.texture_files =
-          texture_files(texture_dir, {"brick", "stone", "metal", "wood", "tech", "tiles", "ceiling"}, output);
+      grid.texture_files = texture_files(texture_dir, {"brick", "stone", "metal", "wood", "tech", "tiles", "ceiling"});
       const std::string text = map::generate_grid_text(grid);
-      map::validate(map::parse_grid(text, output));  // never write a map mapc would refuse
+      map::validate(map::parse_grid(text, output, {.bundled_textures = texture_dir}));  // never write what mapc refuses
       write_file_atomically(output, text);
       std::printf("%s: %dx%d tiles\n", output.c_str(), grid.cols, grid.rows);
       return 0;
     }
     const std::vector<std::string> names = {"brick", "stone", "metal", "wood", "tech", "rock"};
-    const auto files = texture_files(texture_dir, names, output);
+    const auto files = texture_files(texture_dir, names);
     for (size_t i = 0; i < names.size(); ++i)
       options.textures.push_back({names[i], image::load_png(std::filesystem::path(texture_dir) / (names[i] + ".png")), {}});
     const map::Source source = kind == "soup" ? map::generate_soup(options) : map::generate_rooms(options);

@@ -139,9 +139,12 @@ struct Source {
 
 // How a text map may reach other files. Texture and sprite pictures resolve relative to
 // the map's directory and may not leave it (no absolute paths, no "..": a map from
-// elsewhere reads only what lies beside it) unless textures_anywhere is set.
+// elsewhere reads only what lies beside it) unless textures_anywhere is set. A bare
+// file name found nowhere beside the map is looked for among the bundled textures, as
+// a Doom PWAD takes the IWAD's art: a map naming them works wherever it is moved.
 struct LoadOptions {
   bool textures_anywhere = false;
+  std::filesystem::path bundled_textures;  // the project's maps/textures; empty: no fallback
 };
 
 // Parses and validates a .map file (see maps/FORMAT.md). Throws Error("file:line: message").

@@ -17,8 +17,12 @@ void check_stays_beside_the_map(const Statement& s, const std::string& kind, std
 image::Image load_picture(const Statement& s, const std::string& kind, const std::string& name,
                           const std::filesystem::path& map_path, std::string_view file_name, const LoadOptions& options) {
   if (!options.textures_anywhere) check_stays_beside_the_map(s, kind, file_name);
-  const std::filesystem::path file = map_path.parent_path() / std::string(file_name);
+  std::filesystem::path file = map_path.parent_path() / std::string(file_name);
   std::error_code ec;
+  const bool bare = std::filesystem::path(std::string(file_name)).filename() == std::string(file_name);
+  if (!std::filesystem::exists(file, ec) && !ec && bare && !options.bundled_textures.empty() &&
+      std::filesystem::exists(options.bundled_textures / std::string(file_name), ec))
+    file = options.bundled_textures / std::string(file_name);
   if (!std::filesystem::exists(file, ec))
     s.fail(kind + " file '" + file.string() + "' " + (ec ? "cannot be opened: " + ec.message() : "does not exist"));
   const std::string what = kind + " '" + name + "'";

@@ -138,6 +138,24 @@ TEST_F(ParseTest, PicturesStayInTheMapsDirectory) {
   std::filesystem::remove_all(sibling);
 }
 
+// A bare file name found nowhere beside the map comes from the bundled textures, as a
+// PWAD takes the IWAD's art; one beside the map wins, and paths with folders never fall back.
+TEST_F(ParseTest, BareNamesFallBackOnTheBundledTextures) {
+  const std::filesystem::path bundled = test::temp_dir("parse-bundled");
+  image::save_png(image::Image(8, 4), bundled / "lib.png");
+  image::save_png(image::Image(2, 2), bundled / "wall.png");
+  write_file_atomically(dir_ / "test.map", std::string(kRoomHeader) + "texture b lib.png\n" + kRoomWalls);
+  EXPECT_THROW(load_map(dir_ / "test.map"), Error);  // no fallback without a bundled directory
+  const LoadOptions options{.bundled_textures = bundled};
+  const Source s = load_map(dir_ / "test.map", options);
+  EXPECT_EQ(s.textures.back().image.width, 8);
+  EXPECT_EQ(s.textures[0].image.width, 64);  // wall.png beside the map, not the bundled one
+  std::filesystem::create_directories(dir_ / "sub");
+  write_file_atomically(dir_ / "test.map", std::string(kRoomHeader) + "texture b sub/lib.png\n" + kRoomWalls);
+  EXPECT_THROW(load_map(dir_ / "test.map", options), Error);
+  std::filesystem::remove_all(bundled);
+}
+
 TEST_F(ParseTest, CommentsAndFractionsAndTabs) {
   const Source s = load("# heading\ntexture wall wall.png # trailing\nvertex a\t0.5 -0.25\nvertex b 10 0\n\n"
                         "segment a b texture=wall\nplayer 5 5 0\n");
