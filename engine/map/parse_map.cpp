@@ -197,17 +197,17 @@ class Parser {
   }
 
   int vertex_ref(const Statement& s, std::string_view name) const {
-    auto it = vertex_index_.find(std::string(name));
+    auto it = vertex_index_.find(name);
     if (it == vertex_index_.end()) s.fail("unknown vertex '" + std::string(name) + "'");
     return it->second;
   }
   int sector_ref(const Statement& s, std::string_view name) const {
-    auto it = sector_index_.find(std::string(name));
+    auto it = sector_index_.find(name);
     if (it == sector_index_.end()) s.fail("unknown sector '" + std::string(name) + "'");
     return it->second;
   }
   int texture_ref(const Statement& s, std::string_view name) const {
-    auto it = texture_index_.find(std::string(name));
+    auto it = texture_index_.find(name);
     if (it == texture_index_.end()) s.fail("unknown texture '" + std::string(name) + "'");
     return it->second;
   }
@@ -233,7 +233,13 @@ class Parser {
   Source source_;
   detail::Sprites sprites_;
   bool have_player_ = false;
-  std::unordered_map<std::string, int> vertex_index_, sector_index_, texture_index_;
+  // Looked up by string_view without building a string (C++20 heterogeneous lookup).
+  struct NameHash {
+    using is_transparent = void;
+    size_t operator()(std::string_view name) const { return std::hash<std::string_view>()(name); }
+  };
+  using NameIndex = std::unordered_map<std::string, int, NameHash, std::equal_to<>>;
+  NameIndex vertex_index_, sector_index_, texture_index_;
 };
 
 }  // namespace

@@ -172,35 +172,35 @@ void check_crossings(const Source& src) {
 // Walking a sector's boundary with the sector on the right, every point is
 // entered as often as it is left; otherwise the sector leaks.
 std::vector<OpenSector> find_open_sectors_impl(const Source& src) {
-  struct Key {
+  // (sector, point, +1 leaving / -1 entering), sorted so that each sector's points come
+  // together, smallest coordinates first: a flat sort, not a hash map of millions of nodes.
+  struct Visit {
     int sector;
     IPoint p;
-    bool operator==(const Key&) const = default;
+    int delta;
+    auto key() const { return std::tie(sector, p.x, p.y); }
   };
-  struct KeyHash {
-    size_t operator()(const Key& k) const {
-      return std::hash<int64_t>()(k.p.x * 0x9E3779B97F4A7C15ll ^ k.p.y * 31 ^ k.sector);
-    }
-  };
-  std::unordered_map<Key, int, KeyHash> balance;
-  auto edge = [&](int sector, int from, int to) {
-    balance[{sector, src.point(from)}] += 1;
-    balance[{sector, src.point(to)}] -= 1;
-  };
+  std::vector<Visit> visits;
+  visits.reserve(src.walls.size() * 4);
   for (const Wall& w : src.walls) {
     if (w.segment) continue;
-    edge(w.front.sector, w.v1, w.v2);
-    if (w.two_sided()) edge(w.back.sector, w.v2, w.v1);
+    visits.push_back({w.front.sector, src.point(w.v1), +1});
+    visits.push_back({w.front.sector, src.point(w.v2), -1});
+    if (!w.two_sided()) continue;
+    visits.push_back({w.back.sector, src.point(w.v2), +1});
+    visits.push_back({w.back.sector, src.point(w.v1), -1});
   }
-  // Per sector, its open point at the smallest coordinates.
-  std::map<int, IPoint> open;
-  for (const auto& [key, count] : balance) {
-    if (count == 0) continue;
-    auto [it, fresh] = open.emplace(key.sector, key.p);
-    if (!fresh && std::tie(key.p.x, key.p.y) < std::tie(it->second.x, it->second.y)) it->second = key.p;
-  }
+  std::sort(visits.begin(), visits.end(), [](const Visit& a, const Visit& b) { return a.key() < b.key(); });
+  // Per sector, its open point at the smallest coordinates: the first unbalanced one.
   std::vector<OpenSector> out;
-  for (const auto& [sector, p] : open) out.push_back({sector, p});
+  for (size_t begin = 0; begin < visits.size();) {
+    size_t end = begin;
+    int balance = 0;
+    for (; end < visits.size() && visits[end].key() == visits[begin].key(); ++end) balance += visits[end].delta;
+    const Visit& v = visits[begin];
+    if (balance != 0 && (out.empty() || out.back().sector != v.sector)) out.push_back({v.sector, v.p});
+    begin = end;
+  }
   return out;
 }
 
