@@ -13,18 +13,26 @@ void check_stays_beside_the_map(const Statement& s, const std::string& kind, std
            "' lies outside the map's directory (name it relative to the map, or allow it with --textures-anywhere)");
 }
 
+// Where a picture statement's file is: beside the map, else (a bare file name) among
+// the bundled textures.
+std::filesystem::path resolve_picture(const Statement& s, const std::string& kind, std::string_view file_name,
+                                      const std::filesystem::path& map_path, const LoadOptions& options) {
+  if (!options.textures_anywhere) check_stays_beside_the_map(s, kind, file_name);
+  const std::filesystem::path name{std::string(file_name)};
+  const std::filesystem::path beside = map_path.parent_path() / name;
+  std::error_code ec;
+  if (std::filesystem::exists(beside, ec)) return beside;
+  if (ec) s.fail(kind + " file '" + beside.string() + "' cannot be opened: " + ec.message());
+  if (name.filename() == name && !options.bundled_textures.empty() &&
+      std::filesystem::exists(options.bundled_textures / name, ec))
+    return options.bundled_textures / name;
+  s.fail(kind + " file '" + beside.string() + "' does not exist");
+}
+
 // kind: "texture" or "sprite"; name: what the map calls it.
 image::Image load_picture(const Statement& s, const std::string& kind, const std::string& name,
                           const std::filesystem::path& map_path, std::string_view file_name, const LoadOptions& options) {
-  if (!options.textures_anywhere) check_stays_beside_the_map(s, kind, file_name);
-  std::filesystem::path file = map_path.parent_path() / std::string(file_name);
-  std::error_code ec;
-  const bool bare = std::filesystem::path(std::string(file_name)).filename() == std::string(file_name);
-  if (!std::filesystem::exists(file, ec) && !ec && bare && !options.bundled_textures.empty() &&
-      std::filesystem::exists(options.bundled_textures / std::string(file_name), ec))
-    file = options.bundled_textures / std::string(file_name);
-  if (!std::filesystem::exists(file, ec))
-    s.fail(kind + " file '" + file.string() + "' " + (ec ? "cannot be opened: " + ec.message() : "does not exist"));
+  const std::filesystem::path file = resolve_picture(s, kind, file_name, map_path, options);
   const std::string what = kind + " '" + name + "'";
   image::Image img;
   try {
