@@ -83,6 +83,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--quit-after-tics", quit_after, "quit after this many tics (0: never)")->capture_default_str();
   cli::add_skill_option(app, skill);
+  render::RendererOptions renderer_options;
+  cli::add_renderer_options(app, renderer_options);
   app.add_flag("--all-keys", all_keys, "start every map with every key (recorded in demos)");
 
   return cli::run(app, argc, argv, [&] {
@@ -111,6 +113,7 @@ int main(int argc, char** argv) {
     }
     game::Session session(source, skill);
     session.fov = fov;
+    session.renderer_options = renderer_options;
     session.give_all_keys(all_keys);
     const std::string& map_path = session.name();
     if (!session.select_renderer(renderer)) throw Error("renderer '" + renderer + "' cannot draw " + map_path);

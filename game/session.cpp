@@ -88,7 +88,7 @@ render::Camera Session::camera(double alpha) const {
 }
 
 bool Session::select_renderer(const std::string& name) {
-  auto r = render::make_renderer(name);
+  auto r = render::make_renderer(name, renderer_options);
   if (!r) {
     say("no renderer '" + name + "'");
     return false;

@@ -61,6 +61,7 @@ class Session {
   // ---- rendering
   // Switches renderer; false (with a message) if it cannot draw this level.
   bool select_renderer(const std::string& name);
+  render::RendererOptions renderer_options;  // for the renderers select_renderer makes
   const std::string& renderer_name() const { return renderer_name_; }
   const render::RenderStats& render(render::Frame& frame, double alpha);
   void draw_overlays(render::Frame& frame, const FrameTimes& times, double alpha) const;

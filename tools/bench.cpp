@@ -21,6 +21,7 @@
 #include "engine/bsp/build.h"
 #include "engine/bsp/load.h"
 #include "engine/util/rng.h"
+#include "engine/util/thread_pool.h"
 #include <stb_image_write.h>
 #include "engine/wad/write.h"
 #include "engine/level/io.h"
@@ -668,6 +669,55 @@ void bench_hostile(const Settings& s) {
   std::filesystem::remove_all(dir);
 }
 
+// ---- threads ------------------------------------------------------------------
+
+// The BSP renderer's column strips on one thread and on every core, at 640x400 and
+// 1920x1080, on the outpost path and (when Freedoom is installed) random views of
+// freedoom2 MAP01 with its things; and what one dispatch to the pool costs.
+void bench_threads(const Settings& s) {
+  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  report.print("\n### Threads: the BSP renderer's column strips on %d core%s\n\n", cores, cores == 1 ? "" : "s");
+  report.print("| map | size | 1 thread ms/frame | %d threads ms/frame | speed-up |\n|---|---|---:|---:|---:|\n", cores);
+  struct Case {
+    std::string name;
+    level::Level level;
+    std::vector<render::Camera> path;
+  };
+  std::vector<Case> cases;
+  const auto maps = std::filesystem::path(s.source_dir) / "maps";
+  {
+    level::Level level = bsp::build(map::load_map(maps / "outpost.map"), {});
+    auto path = cameras_from(level, render::read_camera_list(maps / "outpost.path"));
+    cases.push_back({"outpost", std::move(level), std::move(path)});
+  }
+  const std::filesystem::path freedoom = "/usr/share/games/doom/freedoom2.wad";
+  if (std::filesystem::exists(freedoom)) {
+    level::Level level = bsp::build_wad_map(bsp::read_wads({freedoom}), "MAP01", {}, nullptr);
+    auto path = random_cameras(level, 100, 1);
+    cases.push_back({"freedoom2 MAP01", std::move(level), std::move(path)});
+  }
+  for (const Case& c : cases)
+    for (const auto& [w, h] : {std::pair{640, 400}, std::pair{1920, 1080}}) {
+      Settings sized = s;
+      sized.width = w, sized.height = h;
+      auto one = render::make_renderer("bsp", {.threads = 1});
+      auto all = render::make_renderer("bsp", {.threads = cores});
+      const double t1 = time_renderer(*one, c.level, c.path, sized).median_ms;
+      const double tn = time_renderer(*all, c.level, c.path, sized).median_ms;
+      report.print("| %s | %dx%d | %s | %s | %s |\n", c.name.c_str(), w, h, fixed(t1, 3).c_str(), fixed(tn, 3).c_str(),
+                   fixed(t1 / tn, 2).c_str());
+    }
+  ThreadPool pool(cores);
+  std::vector<double> us;
+  std::atomic<int> sink{0};
+  for (int i = 0; i < 2000; ++i) {
+    const auto t0 = Clock::now();
+    pool.run(8, [&](int task) { sink += task; });
+    us.push_back(cli::seconds_since(t0) * 1e6);
+  }
+  report.print("\nA dispatch of 8 empty strips to the pool: median %s us.\n", fixed(median(us), 1).c_str());
+}
+
 // ---- capture ------------------------------------------------------------------
 
 std::vector<uint8_t> stb_png(const image::Image& img) {  // the encoder we replaced, for comparison
@@ -742,8 +792,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> sections;
   std::string size_text = "640x400";
   app.add_option("sections", sections,
-                 "render, scaling, grids, strategies, hostile, capture, wad (default: all but wad; with --iwad, wad)")
-      ->check(CLI::IsMember({"render", "scaling", "grids", "strategies", "hostile", "capture", "wad"}));
+                 "render, scaling, grids, strategies, hostile, capture, threads, wad (default: all but wad; with --iwad, wad)")
+      ->check(CLI::IsMember({"render", "scaling", "grids", "strategies", "hostile", "capture", "threads", "wad"}));
   cli::add_wad_options(app, s.wads);
   app.add_option("--cameras", s.cameras, "wad: random cameras per map")->check(CLI::Range(1, 100000))->capture_default_str();
   app.add_option("--runs", s.runs, "wad: compiles per map and tool (median)")->check(CLI::Range(1, 1000))->capture_default_str();
@@ -766,7 +816,7 @@ int main(int argc, char** argv) {
     for (const auto& r : s.renderers)
       if (!render::make_renderer(r)) throw CLI::ValidationError("--renderers", "unknown renderer '" + r + "'");
     if (sections.empty())
-      sections = s.wads.iwad.empty() ? std::vector<std::string>{"render", "scaling", "grids", "strategies", "hostile", "capture"}
+      sections = s.wads.iwad.empty() ? std::vector<std::string>{"render", "scaling", "grids", "strategies", "hostile", "capture", "threads"}
                                      : std::vector<std::string>{"wad"};
     if (std::count(sections.begin(), sections.end(), "wad") && s.wads.iwad.empty())
       throw CLI::ValidationError("--iwad", "the wad section needs WADs: --iwad [--file ...] [--map ...]");
@@ -781,6 +831,7 @@ int main(int argc, char** argv) {
       if (section == "strategies") bench_strategies(s);
       if (section == "hostile") bench_hostile(s);
       if (section == "capture") bench_capture(s);
+      if (section == "threads") bench_threads(s);
       if (section == "wad") bench_wad(s);
     }
     if (!json.empty()) write_file_atomically(json, report.json());

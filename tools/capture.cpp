@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <deque>
 #include <future>
-#include <thread>
 
 #include "engine/image/image.h"
 #include "engine/bsp/load.h"
@@ -64,7 +63,7 @@ int main(int argc, char** argv) {
   std::optional<double> angle;
   double eye = render::kEyeHeight, fov = 90;
   bool stats = false, all_warnings = false;
-  int skill = level::kDefaultSkill, threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  int skill = level::kDefaultSkill;
   render::RendererOptions ropt;
   cli::add_level_options(app, level_args);
   app.add_option("--pos", pos_text, "camera position X,Y (map units; default: the player start)");
@@ -86,9 +85,6 @@ int main(int argc, char** argv) {
   app.add_flag("--all-warnings", all_warnings, "list every warning about a WAD map's quirks");
   cli::add_skill_option(app, skill);
   cli::add_renderer_options(app, ropt);
-  app.add_option("--threads", threads, "threads encoding PNGs (default: every core); the files are the same for any count")
-      ->check(CLI::Range(1, 256))
-      ->capture_default_str();
 
   return cli::run(app, argc, argv, [&] {
     int width = 0, height = 0;
@@ -132,7 +128,7 @@ int main(int argc, char** argv) {
     probe.want_columns = !columns.empty();
     std::vector<std::string> json_frames;
     Outputs outputs;  // every frame, all or nothing
-    PngEncoder encoder(threads);
+    PngEncoder encoder(ropt.threads);
     for (const render::CameraSpec& shot : shots) {
       cli::warn_if_outside("capture", level, shot);
       const render::Camera camera = render::camera_at(level, shot.pos, shot.angle, shot.eye, shot.fov);

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <thread>
 
 #include "engine/bsp/load.h"
 #include "engine/geom/geom.h"
@@ -118,6 +119,12 @@ inline void add_renderer_options(CLI::App& app, render::RendererOptions& o) {
       ->capture_default_str();
   app.add_option("--max-steps", o.sphere_max_steps, "sphere: steps before a ray gives up")
       ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
+  o.threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  app.add_option("--threads", o.threads,
+                 "threads drawing each frame (bsp: column strips; capture: also encoding PNGs); "
+                 "frames and statistics are the same for any count (default: every core)")
+      ->check(CLI::Range(1, 256))
       ->capture_default_str();
 }
 

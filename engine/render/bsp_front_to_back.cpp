@@ -4,62 +4,54 @@
 // skip any subtree whose bounding box projects onto closed columns only, and stop
 // the walk the moment every column is closed. Things met on the way (attached to the
 // nodes and leaves the walk reaches) are drawn as sprites at the end, farthest first.
+//
+// The screen is split into column strips, each walked alone with its own W-bit array
+// (the columns outside it closed from the start), canvas and sprites, so strips draw
+// on as many threads as given. What a column shows depends only on the walls met in
+// it, front to back, so the picture is the same for any split; the split depends only
+// on the width, so the statistics are the same for any thread count.
+#include <algorithm>
+
 #include "engine/render/draw.h"
 #include "engine/render/occlusion.h"
 #include "engine/render/renderer.h"
+#include "engine/util/thread_pool.h"
 
 namespace p3d::render {
 
 namespace {
 
+// Strips per frame, of a width that is a whole number of 64-byte cache lines of
+// pixels (16 columns), so that two threads never write one line.
+constexpr int kStrips = 8;
+constexpr int kStripAlign = 16;
+
 class BspFrontToBack final : public Renderer {
  public:
+  explicit BspFrontToBack(int threads) : pool_(std::max(1, threads)) {}
   std::string_view name() const override { return "bsp"; }
   using Renderer::render;
 
   RenderStats render(const level::Level& level, const level::State& state, const Camera& camera, Frame& frame,
                      Probe* probe) override {
     const View view(camera, frame.width, frame.height);
-    canvas_.begin(level, state, view, frame, level.sector_at(camera.pos), probe);
-    order_ = probe && probe->want_order ? &probe->order : nullptr;
-    if (order_) order_->clear();
-    mask_.reset(view.width);
-    RenderStats stats;
-
-    stack_.assign(1, {0, false});
-    while (!stack_.empty()) {
-      if (mask_.full()) {
-        stats.early_exit = true;
-        break;
-      }
-      const Item item = stack_.back();
-      stack_.pop_back();
-      if (level::is_leaf(item.child)) {
-        add_sprites(level, level.leaves[size_t(level::leaf_index(item.child))].things);
-        continue;
-      }
-      const level::Node& node = level.nodes[item.child];
-      if (item.draw_fragments) {
-        draw_fragments(level, view, node, stats);
-        continue;
-      }
-      // The culling box covers the subtree's fragments and the sprites of its things
-      // (see level::finalize): nothing visible is skipped.
-      const ColumnRange range = columns_of_box(view, node.cull_box);
-      if (range.empty() || mask_.all_closed(range.x0, range.x1)) {
-        ++stats.subtrees_culled;
-        continue;
-      }
-      ++stats.nodes_visited;
-      add_sprites(level, node.things);
-      const int near = level::splitter_side(node, camera.pos) > 0 ? 1 : 0;
-      stack_.push_back({node.child[1 - near], false});
-      stack_.push_back({item.child, true});
-      stack_.push_back({node.child[near], false});
-    }
-    canvas_.finish();
-    canvas_.count_into(stats);
-    return stats;
+    const int camera_sector = level.sector_at(camera.pos);
+    // The order fragments drew in is one walk's: a probe asking for it gets one strip.
+    const bool one_walk = probe && probe->want_order;
+    const int width = one_walk ? view.width : (view.width + kStrips - 1) / kStrips;
+    const int strip_width = std::max(kStripAlign, (width + kStripAlign - 1) / kStripAlign * kStripAlign);
+    const int strips = (view.width + strip_width - 1) / strip_width;
+    if (strips_.size() < size_t(strips)) strips_.resize(size_t(strips));
+    Canvas::prepare_probe(view, probe);
+    pool_.run(strips, [&](int i) {
+      Strip& s = strips_[size_t(i)];
+      s.x0 = i * strip_width;
+      s.x1 = std::min(view.width, s.x0 + strip_width);
+      s.canvas.begin(level, state, view, frame, camera_sector, probe, s.x0, s.x1);
+      s.order = one_walk ? &probe->order : nullptr;
+      walk(level, view, camera, s);
+    });
+    return merged_stats(strips);
   }
 
  private:
@@ -67,13 +59,64 @@ class BspFrontToBack final : public Renderer {
     int32_t child;
     bool draw_fragments;  // draw this node's own fragments (its near subtree is done)
   };
+  // One strip's walk: its columns [x0, x1), its scratch, what it counted.
+  struct Strip {
+    int x0 = 0, x1 = 0;
+    Canvas canvas;
+    ColumnMask mask;
+    std::vector<Item> stack;
+    std::vector<uint32_t>* order = nullptr;
+    std::vector<uint32_t> fragments_drawn;
+    RenderStats stats;
+  };
 
-  void add_sprites(const level::Level& level, const level::ThingRange& things) {
-    for (uint32_t k = things.first; k < things.first + things.count; ++k) canvas_.add_sprite(level.attached_things[k]);
+  void walk(const level::Level& level, const View& view, const Camera& camera, Strip& s) {
+    s.mask.reset(view.width);
+    s.mask.close_outside(s.x0, s.x1);
+    s.stats = {};
+    s.fragments_drawn.clear();
+    if (s.order) s.order->clear();
+    s.stack.assign(1, {0, false});
+    while (!s.stack.empty()) {
+      if (s.mask.full()) {
+        s.stats.early_exit = true;
+        break;
+      }
+      const Item item = s.stack.back();
+      s.stack.pop_back();
+      if (level::is_leaf(item.child)) {
+        add_sprites(level, level.leaves[size_t(level::leaf_index(item.child))].things, s.canvas);
+        continue;
+      }
+      const level::Node& node = level.nodes[item.child];
+      if (item.draw_fragments) {
+        draw_fragments(level, view, node, s);
+        continue;
+      }
+      // The culling box covers the subtree's fragments and the sprites of its things
+      // (see level::finalize): nothing visible is skipped.
+      const ColumnRange range = columns_of_box(view, node.cull_box);
+      if (range.empty() || s.mask.all_closed(range.x0, range.x1)) {
+        ++s.stats.subtrees_culled;
+        continue;
+      }
+      ++s.stats.nodes_visited;
+      add_sprites(level, node.things, s.canvas);
+      const int near = level::splitter_side(node, camera.pos) > 0 ? 1 : 0;
+      s.stack.push_back({node.child[1 - near], false});
+      s.stack.push_back({item.child, true});
+      s.stack.push_back({node.child[near], false});
+    }
+    s.canvas.finish();
+    s.canvas.count_into(s.stats);
   }
 
-  void draw_fragments(const level::Level& level, const View& view, const level::Node& node, RenderStats& stats) {
-    for (uint32_t i = node.first_fragment; i < node.first_fragment + node.fragment_count && !mask_.full(); ++i) {
+  static void add_sprites(const level::Level& level, const level::ThingRange& things, Canvas& canvas) {
+    for (uint32_t k = things.first; k < things.first + things.count; ++k) canvas.add_sprite(level.attached_things[k]);
+  }
+
+  static void draw_fragments(const level::Level& level, const View& view, const level::Node& node, Strip& s) {
+    for (uint32_t i = node.first_fragment; i < node.first_fragment + node.fragment_count && !s.mask.full(); ++i) {
       const level::Fragment& f = level.fragments[i];
       const level::Wall& wall = level.walls[f.wall];
       const int side = facing_side(wall, view.pos);
@@ -82,25 +125,53 @@ class BspFrontToBack final : public Renderer {
       if (range.empty()) continue;
       const WallProjector projector(view, wall.a, wall.b);
       bool drew = false;
-      mask_.for_each_open(range.x0, range.x1, [&](int x) {
+      s.mask.for_each_open(range.x0, range.x1, [&](int x) {
         double depth, t;
         if (!projector.hit(x, depth, t) || !in_fragment(f, t)) return;
         drew = true;
-        if (canvas_.draw_wall(x, {f.wall, side, depth, t, int32_t(i)})) mask_.close(x);
+        if (s.canvas.draw_wall(x, {f.wall, side, depth, t, int32_t(i)})) s.mask.close(x);
       });
-      stats.fragments_drawn += drew;
-      if (drew && order_) order_->push_back(i);
+      if (!drew) continue;
+      s.fragments_drawn.push_back(i);
+      if (s.order) s.order->push_back(i);
     }
   }
 
-  Canvas canvas_;
-  ColumnMask mask_;
-  std::vector<Item> stack_;
-  std::vector<uint32_t>* order_ = nullptr;
+  // Sums over the strips; a fragment or a sprite drawn in several strips counts once,
+  // and the walk exited early when every strip's did.
+  RenderStats merged_stats(int strips) {
+    RenderStats total;
+    total.early_exit = true;
+    fragments_.clear();
+    things_.clear();
+    for (int i = 0; i < strips; ++i) {
+      const Strip& s = strips_[size_t(i)];
+      total.nodes_visited += s.stats.nodes_visited;
+      total.subtrees_culled += s.stats.subtrees_culled;
+      total.columns_closed += s.stats.columns_closed;
+      total.pixels_written += s.stats.pixels_written;
+      total.masked_pixels += s.stats.masked_pixels;
+      total.sprite_pixels += s.stats.sprite_pixels;
+      total.early_exit = total.early_exit && s.stats.early_exit;
+      fragments_.insert(fragments_.end(), s.fragments_drawn.begin(), s.fragments_drawn.end());
+      things_.insert(things_.end(), s.canvas.things_drawn().begin(), s.canvas.things_drawn().end());
+    }
+    total.fragments_drawn = distinct(fragments_);
+    total.sprites_drawn = distinct(things_);
+    return total;
+  }
+  static uint64_t distinct(std::vector<uint32_t>& ids) {
+    std::sort(ids.begin(), ids.end());
+    return uint64_t(std::unique(ids.begin(), ids.end()) - ids.begin());
+  }
+
+  ThreadPool pool_;
+  std::vector<Strip> strips_;
+  std::vector<uint32_t> fragments_, things_;  // merged_stats' scratch
 };
 
 }  // namespace
 
-std::unique_ptr<Renderer> make_bsp_front_to_back() { return std::make_unique<BspFrontToBack>(); }
+std::unique_ptr<Renderer> make_bsp_front_to_back(int threads) { return std::make_unique<BspFrontToBack>(threads); }
 
 }  // namespace p3d::render

@@ -100,8 +100,13 @@ int64_t to_int(double v) {
 
 }  // namespace
 
+void Canvas::prepare_probe(const View& view, Probe* probe) {
+  if (probe && probe->want_columns) probe->columns.assign(view.width, ColumnHit{});
+  if (probe && probe->want_writes) probe->writes.assign(size_t(view.width) * view.height, 0);
+}
+
 void Canvas::begin(const level::Level& level, const level::State& state, const View& view, Frame& frame,
-                   int camera_sector, Probe* probe) {
+                   int camera_sector, Probe* probe, int x0, int x1) {
   level_ = &level;
   state_ = &state;
   view_ = &view;
@@ -112,6 +117,9 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
   if (steps_.size() != size_t(view.width)) steps_.resize(view.width);
   for (auto& column : steps_) column.clear();
   sprites_.clear();
+  things_drawn_.clear();
+  x0_ = std::max(0, x0);
+  x1_ = std::min(view.width, x1);
   if (row_dy_.size() != size_t(view.height) || (!row_dy_.empty() && row_dy_[0] != 0.5 - view.half_h)) {
     row_dy_.resize(view.height);
     row_inv_.resize(view.height);
@@ -120,8 +128,7 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
       row_inv_[y] = row_dy_[y] != 0 ? 1 / row_dy_[y] : 0;
     }
   }
-  if (hits_) hits_->assign(view.width, ColumnHit{});
-  if (writes_) writes_->assign(size_t(view.width) * view.height, 0);
+  if (x0_ == 0 && x1_ == view.width) prepare_probe(view, probe);
   pixels_ = closed_count_ = masked_pixels_ = sprites_drawn_ = sprite_pixels_ = 0;
 }
 
@@ -171,7 +178,7 @@ void Canvas::close(int x, const WallHit& hit) {
 }
 
 void Canvas::finish() {
-  for (int x = 0; x < view_->width; ++x) {
+  for (int x = x0_; x < x1_; ++x) {
     Column& c = columns_[x];
     planes_to_horizon(x, c.top, c.bottom, c.sector);
   }
@@ -374,8 +381,8 @@ void Canvas::add_sprite(uint32_t thing) {
   s.top = origin + image.top;
   // Columns whose centre's ray crosses the picture (one more on each side: draw_sprite_column checks).
   const double scale = view_->d / depth;
-  s.x0 = std::max(0, int(std::floor(view_->half_w + s.left * scale)) - 1);
-  s.x1 = std::min(view_->width - 1, int(std::ceil(view_->half_w + (s.left + tex.width) * scale)) + 1);
+  s.x0 = std::max(x0_, int(std::floor(view_->half_w + s.left * scale)) - 1);
+  s.x1 = std::min(x1_ - 1, int(std::ceil(view_->half_w + (s.left + tex.width) * scale)) + 1);
   if (s.x0 > s.x1) return;
   s.light_map = frame.bright ? 0 : wall_light_map(light_start(sector.light, 0), depth);
   sprites_.push_back(s);
@@ -427,7 +434,7 @@ void Canvas::draw_layers() {
   });
   std::vector<int>& next_masked = layer_cursor_;  // per column: the farthest step not yet passed
   next_masked.resize(view_->width);
-  for (int x = 0; x < view_->width; ++x) next_masked[x] = int(steps_[x].size()) - 1;
+  for (int x = x0_; x < x1_; ++x) next_masked[x] = int(steps_[x].size()) - 1;
   auto masked_down_to = [&](int x, double depth) {  // the masked steps of column x at depth >= `depth`
     const std::vector<Step>& steps = steps_[x];
     for (int& i = next_masked[x]; i >= 0 && steps[size_t(i)].hit.depth >= depth; --i)
@@ -446,8 +453,9 @@ void Canvas::draw_layers() {
       if (top < bottom) draw_sprite_column(s, x, top, bottom, drew);
     }
     sprites_drawn_ += drew;
+    if (drew) things_drawn_.push_back(s.thing);
   }
-  for (int x = 0; x < view_->width; ++x) masked_down_to(x, -INFINITY);
+  for (int x = x0_; x < x1_; ++x) masked_down_to(x, -INFINITY);
 }
 
 // Floor or ceiling at height h: row y's ray meets the plane at k = (eye - h) / dy

@@ -9,6 +9,7 @@
 // rows its column had open at its depth, so what lies behind shows through.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -27,9 +28,13 @@ struct WallHit {
 
 class Canvas {
  public:
-  // Resets every column to fully open, in `camera_sector` (may be kNone).
+  // Resets every column to fully open, in `camera_sector` (may be kNone). A canvas may
+  // own only the columns [x0, x1) of the frame (a strip drawn by its own thread): it then
+  // draws nothing outside them, and the probe's arrays must have been sized already
+  // (prepare_probe), since other strips fill them at the same time.
   void begin(const level::Level& level, const level::State& state, const View& view, Frame& frame, int camera_sector,
-             Probe* probe);
+             Probe* probe, int x0 = 0, int x1 = INT32_MAX);
+  static void prepare_probe(const View& view, Probe* probe);
 
   // Front to back: draws what the hit shows in the column's open rows and narrows
   // them. Returns true when this hit closes the column.
@@ -56,6 +61,10 @@ class Canvas {
   // to the rows its column had open at its depth. Equal depths: the masked wall
   // first, then sprites by thing index.
   void draw_layers();
+
+  // The things whose sprite wrote a pixel (strips merge them: a sprite across two
+  // strips is one sprite drawn).
+  const std::vector<uint32_t>& things_drawn() const { return things_drawn_; }
 
   // Copies the canvas's counts into the frame's statistics.
   void count_into(RenderStats& stats) const {
@@ -123,6 +132,8 @@ class Canvas {
   std::vector<Column> columns_;
   std::vector<std::vector<Step>> steps_;  // per column, nearest first
   std::vector<Sprite> sprites_;
+  std::vector<uint32_t> things_drawn_;
+  int x0_ = 0, x1_ = 0;  // the columns this canvas owns
   std::vector<int> layer_cursor_;  // draw_layers: per column, the farthest step not yet passed
   std::vector<double> row_dy_;   // (y + 0.5) - H/2 per row
   std::vector<double> row_inv_;  // 1 / row_dy_

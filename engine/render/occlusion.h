@@ -17,6 +17,12 @@ class ColumnMask {
     words_.assign((width + 63) / 64, 0);
   }
 
+  // Closes every column outside [x0, x1): a strip of the screen walks the tree alone.
+  void close_outside(int x0, int x1) {
+    for (int x = 0; x < width_; ++x)
+      if (x < x0 || x >= x1) close(x);
+  }
+
   bool full() const { return closed_ == width_; }
   int closed_count() const { return closed_; }
   bool is_closed(int x) const { return words_[x >> 6] >> (x & 63) & 1; }

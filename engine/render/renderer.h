@@ -17,6 +17,7 @@ struct RendererOptions {
   double sphere_epsilon = 0.1;     // map units: closer than this, a marching ray tests walls exactly
   double sphere_relaxation = 1.6;  // over-relaxation factor omega in [1, 2); 1 is plain sphere tracing
   int sphere_max_steps = 512;      // marching steps before a ray gives up (grazing rays)
+  int threads = 1;                 // bsp: threads drawing the frame's column strips (same frame for any count)
 };
 
 class Renderer {
@@ -47,7 +48,7 @@ std::unique_ptr<Renderer> make_renderer(std::string_view name, const RendererOpt
 const std::vector<std::string>& renderer_names();
 
 // Internal factories, one per renderer file.
-std::unique_ptr<Renderer> make_bsp_front_to_back();
+std::unique_ptr<Renderer> make_bsp_front_to_back(int threads);
 std::unique_ptr<Renderer> make_painter();
 std::unique_ptr<Renderer> make_grid_ray_caster();
 std::unique_ptr<Renderer> make_sphere_tracer(const RendererOptions& options, bool accelerated);

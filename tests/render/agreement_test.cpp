@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "engine/bsp/load.h"
 #include "engine/map/source.h"
 #include "engine/render/renderer.h"
 #include "tests/support/support.h"
@@ -136,6 +137,51 @@ TEST(Rendering, IsDeterministicAndCulls) {
   EXPECT_EQ(s.columns_closed, 320u);
   EXPECT_GT(s.subtrees_culled, 0u);
   EXPECT_LT(s.nodes_visited, level.nodes.size() / 10) << "a view inside one room should touch few nodes";
+}
+
+}  // namespace
+}  // namespace p3d::render
+
+namespace p3d::render {
+namespace {
+
+// The frame is split into column strips drawn on as many threads as given: the
+// pixels, the per-column hits and every statistic are the same for any count, and
+// the same as the reference's pixels. Freedoom MAP01 with its things, and random rooms.
+TEST(Threads, FramesAndStatisticsAreTheSameForAnyThreadCount) {
+  std::vector<std::pair<std::string, level::Level>> levels;
+  levels.push_back({"rooms", test::compile(test::random_rooms(600, 12))});
+  levels.push_back({"freedoom2 MAP01", bsp::build_wad_map(bsp::read_wads({test::freedoom_path("freedoom2.wad")}), "MAP01", {},
+                                                           nullptr)});
+  size_t frames = 0, sprites = 0;
+  for (const auto& [name, level] : levels) {
+    std::vector<std::unique_ptr<Renderer>> renderers;
+    for (int threads : {1, 2, 3, 8}) renderers.push_back(make_renderer("bsp", {.threads = threads}));
+    auto reference = make_renderer("reference");
+    Rng rng(77);
+    for (int i = 0; i < 24; ++i) {
+      const Camera c = test::random_camera(level, rng);
+      const int w = 40 + int(rng.below(300)), h = 30 + int(rng.below(200));
+      Frame first(w, h), frame(w, h), ref(w, h);
+      Probe first_probe, probe;
+      first_probe.want_columns = probe.want_columns = true;
+      const RenderStats s1 = renderers[0]->render(level, c, first, &first_probe);
+      for (size_t r = 1; r < renderers.size(); ++r) {
+        const RenderStats s = renderers[r]->render(level, c, frame, &probe);
+        EXPECT_EQ(frame.pixels, first.pixels) << name << " camera " << i << " renderer " << r;
+        EXPECT_EQ(statdump(stat_fields(s)), statdump(stat_fields(s1))) << name << " camera " << i;
+        for (int x = 0; x < w; ++x)
+          EXPECT_TRUE(probe.columns[x].wall == first_probe.columns[x].wall && probe.columns[x].dist == first_probe.columns[x].dist)
+              << name << " camera " << i << " column " << x;
+      }
+      reference->render(level, c, ref);
+      EXPECT_EQ(ref.pixels, first.pixels) << name << " camera " << i;
+      ++frames;
+      sprites += s1.sprites_drawn;
+    }
+  }
+  std::printf("[ stats    ] %zu frames on 1, 2, 3 and 8 threads, %zu sprites\n", frames, sprites);
+  EXPECT_GT(sprites, 0u);
 }
 
 }  // namespace

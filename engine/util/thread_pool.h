@@ -1,0 +1,43 @@
+// A persistent pool of worker threads for work split into independent tasks (a
+// frame's column strips): run(n, task) calls task(0..n-1) on the workers and the
+// calling thread and returns when every call has returned. Tasks are handed out in
+// order but finish in any order, so a task writes only its own results.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace p3d {
+
+class ThreadPool {
+ public:
+  // threads counts the caller: 1 runs everything on the calling thread.
+  explicit ThreadPool(int threads);
+  ~ThreadPool();
+  ThreadPool(const ThreadPool&) = delete;
+  ThreadPool& operator=(const ThreadPool&) = delete;
+
+  int threads() const { return int(workers_.size()) + 1; }
+  void run(int tasks, const std::function<void(int)>& task);
+
+ private:
+  void work();
+  void take_tasks();
+
+  std::vector<std::thread> workers_;
+  std::mutex mutex_;
+  std::condition_variable wake_, done_;
+  const std::function<void(int)>* task_ = nullptr;
+  int tasks_ = 0;
+  std::atomic<int> next_{0};
+  int busy_ = 0;             // workers still in the current run
+  uint64_t generation_ = 0;  // bumped by each run: a worker's signal to start
+  bool stop_ = false;
+};
+
+}  // namespace p3d
