@@ -21,8 +21,8 @@ namespace p3d::render {
 
 namespace {
 
-// Strips per frame, of a width that is a whole number of 64-byte cache lines of
-// pixels (16 columns), so that two threads never write one line.
+// Strips per frame, each a whole number of 64-byte cache lines of pixels wide (16
+// columns): where rows start on a line, two threads never write the same one.
 constexpr int kStrips = 8;
 constexpr int kStripAlign = 16;
 
