@@ -174,9 +174,9 @@ inline bool is_wad_file(const std::string& path) {
   return wad;
 }
 
-// Throws CLI::ValidationError for a contradictory or missing choice.
 inline std::filesystem::path bundled_maps_dir();
 
+// Throws CLI::ValidationError for a contradictory or missing choice.
 inline bsp::LevelSource level_source(const LevelArgs& a) {
   bsp::LevelSource s;
   s.map = a.map;
