@@ -698,12 +698,19 @@ void bench_threads(const Settings& s) {
   }
   for (const Case& c : cases)
     for (const auto& [w, h] : {std::pair{640, 400}, std::pair{1920, 1080}}) {
-      Settings sized = s;
-      sized.width = w, sized.height = h;
+      // Interleaved frame by frame, so that the machine's noise falls on both alike.
       auto one = render::make_renderer("bsp", {.threads = 1});
       auto all = render::make_renderer("bsp", {.threads = cores});
-      const double t1 = time_renderer(*one, c.level, c.path, sized).median_ms;
-      const double tn = time_renderer(*all, c.level, c.path, sized).median_ms;
+      render::Frame frame(w, h);
+      std::vector<double> ms1, msn;
+      for (int pass = 0; pass < 1 + s.repeat; ++pass)
+        for (const render::Camera& camera : c.path)
+          for (auto [r, out] : {std::pair{one.get(), &ms1}, std::pair{all.get(), &msn}}) {
+            const auto t0 = Clock::now();
+            r->render(c.level, camera, frame);
+            if (pass > 0) out->push_back(cli::seconds_since(t0) * 1000);  // pass 0 warms up
+          }
+      const double t1 = median(ms1), tn = median(msn);
       report.print("| %s | %dx%d | %s | %s | %s |\n", c.name.c_str(), w, h, fixed(t1, 3).c_str(), fixed(tn, 3).c_str(),
                    fixed(t1 / tn, 2).c_str());
     }

@@ -1,6 +1,20 @@
 #include "engine/util/thread_pool.h"
 
+#include <chrono>
+
 namespace p3d {
+
+namespace {
+
+constexpr auto kSpin = std::chrono::microseconds(50);
+
+inline void relax() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#endif
+}
+
+}  // namespace
 
 ThreadPool::ThreadPool(int threads) {
   for (int i = 1; i < threads; ++i) workers_.emplace_back([this] { work(); });
@@ -24,33 +38,39 @@ void ThreadPool::run(int tasks, const std::function<void(int)>& task) {
     for (int i = 0; i < tasks; ++i) task(i);
     return;
   }
+  task_ = &task;
+  tasks_ = tasks;
+  next_ = 0;
+  busy_ = int(workers_.size());
   {
-    std::lock_guard lock(mutex_);
-    task_ = &task;
-    tasks_ = tasks;
-    next_ = 0;
-    busy_ = int(workers_.size());
-    ++generation_;
+    std::lock_guard lock(mutex_);  // a worker about to sleep sees the new generation or is woken
+    generation_.fetch_add(1, std::memory_order_release);
   }
   wake_.notify_all();
   take_tasks();
-  std::unique_lock lock(mutex_);
-  done_.wait(lock, [this] { return busy_ == 0; });
-  task_ = nullptr;
+  for (int spins = 0; busy_.load(std::memory_order_acquire) != 0; ++spins)
+    spins < 4096 ? relax() : std::this_thread::yield();
+}
+
+// Spins for a moment, then sleeps, until the generation moves past `seen`.
+bool ThreadPool::wait_for_run(uint64_t seen) {
+  const auto until = std::chrono::steady_clock::now() + kSpin;
+  for (int spins = 0; generation_.load(std::memory_order_acquire) == seen && !stop_; ++spins) {
+    relax();
+    if (spins % 64 == 63 && std::chrono::steady_clock::now() > until) {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return stop_ || generation_.load() != seen; });
+    }
+  }
+  return !stop_;
 }
 
 void ThreadPool::work() {
   uint64_t seen = 0;
-  for (;;) {
-    {
-      std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
-      if (stop_) return;
-      seen = generation_;
-    }
+  while (wait_for_run(seen)) {
+    seen = generation_.load(std::memory_order_acquire);
     take_tasks();
-    std::lock_guard lock(mutex_);
-    if (--busy_ == 0) done_.notify_one();
+    busy_.fetch_sub(1, std::memory_order_release);
   }
 }
 
