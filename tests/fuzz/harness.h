@@ -6,7 +6,11 @@
 #include <filesystem>
 #include <span>
 
+#include "engine/bsp/build.h"
+#include "engine/bsp/check.h"
+#include "engine/level/io.h"
 #include "engine/level/level.h"
+#include "engine/map/source.h"
 #include "engine/render/renderer.h"
 #include "engine/util/error.h"
 
@@ -30,6 +34,16 @@ inline void render_a_little(const level::Level& level) {
     for (size_t i = 0; i < std::size(spots); ++i)
       r->render(level, state, render::camera_at(level, spots[i], 45.0 * double(i)), frame);
   }
+}
+
+// A text map's path of inputs, whatever its format: validated, compiled, checked
+// against the BSP invariants, written, read back and drawn. A broken promise traps.
+inline void compile_and_draw(const map::Source& src) {
+  map::validate(src);
+  const level::Level level = bsp::build(src, {});
+  if (!bsp::check_invariants(level).empty()) __builtin_trap();                  // the compiler's promise
+  const level::Level back = level::decode(level::encode(level), "round trip");  // never writes what it cannot read
+  render_a_little(back);
 }
 
 }  // namespace p3d::fuzz
