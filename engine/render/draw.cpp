@@ -1,12 +1,12 @@
-// Column drawing: walls (perspective-correct texture columns), floors and
-// ceilings (exact per-pixel plane intersection), sky, masked middle textures, and
+// Drawing: walls (perspective-correct texture columns), floors and ceilings (filed
+// per column, drawn as rows: plane_spans.h), sky, masked middle textures, and
 // Doom's light (its light levels and distance diminishing, through the level's own
 // light maps when its art is paletted). Every pixel is a pure function of (surface,
 // x, y), whatever order the renderer visits surfaces in, so all renderers can
 // agree to the bit.
 //
 // Index: lighting, texel sources, Canvas::begin/draw_wall/paint_wall/finish,
-// draw_hit (the rows of one hit), wall_span, draw_masked, plane_span, sky_span.
+// draw_hit (the rows of one hit), wall_span, draw_masked, sprites, plane_span, sky_span.
 #include "engine/render/draw.h"
 
 #include <algorithm>
@@ -128,6 +128,7 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
       row_inv_[y] = row_dy_[y] != 0 ? 1 / row_dy_[y] : 0;
     }
   }
+  planes_.begin(x0_, x1_, view.height);
   if (x0_ == 0 && x1_ == view.width) prepare_probe(view, probe);
   pixels_ = closed_count_ = masked_pixels_ = sprites_drawn_ = sprite_pixels_ = 0;
 }
@@ -166,10 +167,16 @@ bool Canvas::clip_wall(int x, const WallHit& hit) {
 
 void Canvas::paint_wall(int x, const WallHit& hit) {
   int top = 0, bottom = view_->height;
+  painting_ = true;
   draw_hit(x, hit, near_sector(level_->walls[hit.wall], hit, -1), top, bottom);
+  painting_ = false;
 }
 
-void Canvas::paint_background(int x, int sector) { planes_to_horizon(x, 0, view_->height, sector); }
+void Canvas::paint_background(int x, int sector) {
+  painting_ = true;
+  planes_to_horizon(x, 0, view_->height, sector);
+  painting_ = false;
+}
 
 void Canvas::close(int x, const WallHit& hit) {
   columns_[x].top = columns_[x].bottom;
@@ -182,6 +189,7 @@ void Canvas::finish() {
     Column& c = columns_[x];
     planes_to_horizon(x, c.top, c.bottom, c.sector);
   }
+  planes_.for_each_span([this](const PlaneKey& key, int y, int xa, int xb) { plane_pixels(key, y, xa, xb); });
   draw_layers();
 }
 
@@ -290,7 +298,8 @@ double Canvas::texture_u(const WallHit& hit, int part) const {
 }
 
 // Texture row v at screen row y is v0 + y * step, v0 = anchor - eye + offsets at row
-// 0: computed from row 0 so a pixel does not depend on where its span starts.
+// 0: computed from row 0 so a pixel does not depend on where its span starts. Both
+// are reduced modulo the texture's height in 16.16 (a mask for a power of two).
 void Canvas::wall_span(int x, int y0, int y1, const Part& part, const WallHit& hit) {
   if (y0 >= y1 || dry_) return;
   if (part.texture == kNone) return fill_span(x, y0, y1, kMissingTexture);
@@ -300,12 +309,11 @@ void Canvas::wall_span(int x, int y0, int y1, const Part& part, const WallHit& h
   const level::Texture& tex = level_->textures[part.texture];
   const int64_t u = to_int(texture_u(hit, part.part));
   const double inv_scale = hit.depth / view_->d;
-  const double v0 = std::fmod(part.anchor - view_->eye + side.y_offset + side.part_y[part.part] +
-                                  (0.5 - view_->half_h) * inv_scale,
-                              double(tex.height));
+  const double v0 = part.anchor - view_->eye + side.y_offset + side.part_y[part.part] + (0.5 - view_->half_h) * inv_scale;
   const int64_t period = int64_t(tex.height) << 16;
-  const int64_t step = level::floor_mod(std::llround(inv_scale * kFix), period);
-  const int64_t v = level::floor_mod(std::llround(v0 * kFix) + level::floor_mod(int64_t(y0) * step, period), period);
+  auto reduce = [&](int64_t v) { return tex.pow2_height ? v & (period - 1) : level::floor_mod(v, period); };
+  const int64_t step = reduce(std::llround(inv_scale * kFix));
+  const int64_t v = reduce(std::llround(v0 * kFix) + int64_t(y0) * step);
   const int map = wall_light_map(light_start(part.light, w.contrast), hit.depth);
   uint32_t* out = pixel(x, y0);
   if (level_->paletted())
@@ -458,38 +466,63 @@ void Canvas::draw_layers() {
   for (int x = x0_; x < x1_; ++x) masked_down_to(x, -INFINITY);
 }
 
-// Floor or ceiling at height h: row y's ray meets the plane at k = (eye - h) / dy
-// ray lengths, i.e. at pos + ray(x) * k, depth k * d. Exact per pixel. (Camera
-// positions, heights and the projection are bounded, so the 16.16 texture
-// coordinates fit in 64 bits.)
+// Floor or ceiling at height h: row y's ray through column x meets the plane at
+// k = (eye - h) / dy ray lengths, i.e. at pos + ray(x) * k, depth k * d. Along a row
+// k is constant and ray(x) = ray0 + right * x, so the texture coordinates are linear
+// in x: row y's are rounded once to 16.16 (u0, du, v0, dv) and column x samples
+// u0 + x du (mod 2^64), exactly, whether a row span steps along x or the painter
+// evaluates one pixel. Its light is the row's depth's. (Camera positions, heights and
+// the projection are bounded, so the doubles stay far inside 64 bits.)
+struct Canvas::PlaneRow {
+  uint64_t u0, du, v0, dv;  // texture v runs south: north is up
+  int light_map;
+};
+
+Canvas::PlaneRow Canvas::plane_row(const PlaneKey& key, int y) const {
+  const double h_rel = view_->eye - key.height;
+  const double k = h_rel * row_inv_[y];
+  const Vec2 p = view_->pos * kFix, r0 = view_->ray0 * kFix, dr = view_->right * kFix;
+  const double depth = std::fabs(h_rel) * view_->d * std::fabs(row_inv_[y]);  // |h| d / |dy|
+  return {uint64_t(to_int(p.x + r0.x * k)), uint64_t(to_int(dr.x * k)), uint64_t(to_int(-p.y - r0.y * k)),
+          uint64_t(to_int(-dr.y * k)), flat_light_map(key.light, depth)};
+}
+
+// A floor or ceiling seen in rows [y0, y1) of column x: filed as a plane run, drawn by
+// rows in finish(); the painter, which draws over itself, draws it at once.
 void Canvas::plane_span(int x, int y0, int y1, int sector, bool ceiling) {
   if (y0 >= y1 || dry_) return;
   const level::SectorState& s = state_->sectors[sector];
   const int texture = ceiling ? s.ceiling_texture : s.floor_texture;
   if (texture == kSky) return sky_span(x, y0, y1);
   count(x, y0, y1);
-  const level::Texture& tex = level_->textures[texture];
-  const double h_rel = view_->eye - (ceiling ? s.ceiling : s.floor);
-  const Vec2 ray = view_->ray(x);
-  const double px = view_->pos.x * kFix, py = -view_->pos.y * kFix;  // texture v runs south: north is up
-  const double rx = ray.x * kFix, ry = -ray.y * kFix;
-  const int start = light_start(s.light, 0);
-  const double depth_per_dy = std::fabs(h_rel) * view_->d;  // depth = |h| d / |dy|
-  // Four loops, chosen once per span: paletted or RGBA art, wrapped by mask or by modulo.
-  auto draw = [&](auto lit, auto texel_of) {
-    uint32_t* out = pixel(x, y0);
-    for (int y = y0; y < y1; ++y, out += view_->width) {
-      const double k = h_rel * row_inv_[y];
-      const int64_t u = static_cast<int64_t>(px + rx * k) >> 16, v = static_cast<int64_t>(py + ry * k) >> 16;
-      *out = lit(texel_of(u, v), flat_light_map(start, depth_per_dy * std::fabs(row_inv_[y])));
-    }
+  const PlaneKey key{ceiling ? s.ceiling : s.floor, texture, light_start(s.light, 0)};
+  if (painting_)
+    for (int y = y0; y < y1; ++y) plane_pixels(key, y, x, x + 1);
+  else
+    planes_.add(key, x, y0, y1);
+}
+
+// Pixels [xa, xb) of row y of a plane. Four loops, chosen once per span: paletted or
+// RGBA art, wrapped by mask or by modulo.
+void Canvas::plane_pixels(const PlaneKey& key, int y, int xa, int xb) {
+  const level::Texture& tex = level_->textures[key.texture];
+  const PlaneRow row = plane_row(key, y);
+  auto draw = [&](auto colour_of_texel, auto texel_of) {
+    uint64_t u = row.u0 + uint64_t(xa) * row.du, v = row.v0 + uint64_t(xa) * row.dv;
+    uint32_t* out = pixel(xa, y);
+    for (int x = xa; x < xb; ++x, u += row.du, v += row.dv)
+      *out++ = colour_of_texel(texel_of(int64_t(u) >> 16, int64_t(v) >> 16));
   };
   auto by_art = [&](auto texel_of) {
-    if (level_->paletted())
-      draw([&](size_t texel, int map) { return level_->light_maps[size_t(map) * limits::kPaletteSize + tex.indices[texel]]; },
-           texel_of);
-    else
-      draw([&](size_t texel, int map) { return shade(tex.texels[texel], multiplier(map)); }, texel_of);
+    if (level_->paletted()) {
+      const uint32_t* light_map = level_->light_maps.data() + size_t(row.light_map) * limits::kPaletteSize;
+      const uint8_t* indices = tex.indices.data();
+      draw([=](size_t texel) { return light_map[indices[texel]]; }, texel_of);
+    } else {
+      const uint32_t* texels = tex.texels.data();
+      const uint32_t m = multiplier(row.light_map);
+      draw([=](size_t texel) { return shade(texels[texel], m); }, texel_of);
+    }
   };
   if (tex.pow2_width && tex.pow2_height) {
     const int64_t umask = tex.width - 1, vmask = tex.height - 1;

@@ -1,10 +1,11 @@
 // The only writer of pixels. A Canvas holds, per screen column, the rows still
 // open (Doom's ceilingclip/floorclip as one [top, bottom) range) and the sector
 // the column's ray is travelling through. Renderers hand it wall hits, column by
-// column, nearest first; it draws the wall's visible parts and the floor and
-// ceiling in front of it, then narrows (or closes) the column, and remembers each
-// step (Doom's drawsegs, per column). Renderers also hand it the things that may be
-// seen; finish() then draws the layers over the solid picture farthest first: the
+// column, nearest first; it draws the wall's visible parts, files the floor and
+// ceiling in front of it (drawn as rows by finish(), Doom's visplanes), then narrows
+// (or closes) the column, and remembers each step (Doom's drawsegs, per column).
+// Renderers also hand it the things that may be seen; finish() then draws the
+// layers over the solid picture farthest first: the
 // masked middle textures of two-sided walls and the sprites, each clipped to the
 // rows its column had open at its depth, so what lies behind shows through.
 #pragma once
@@ -13,6 +14,7 @@
 #include <span>
 #include <vector>
 
+#include "engine/render/plane_spans.h"
 #include "engine/render/view.h"
 
 namespace p3d::render {
@@ -55,7 +57,8 @@ class Canvas {
   void add_sprite(uint32_t thing);
 
   // Fills the rows still open in every column with the planes of the column's
-  // sector, out to the horizon, then draws the layers (see draw_layers).
+  // sector, out to the horizon, draws the floors and ceilings filed so far as rows,
+  // then draws the layers (see draw_layers).
   void finish();
   // Masked middle textures and sprites, farthest first in every column, each clipped
   // to the rows its column had open at its depth. Equal depths: the masked wall
@@ -110,6 +113,9 @@ class Canvas {
   void close(int x, const WallHit& hit);
   void near_plane(int x, int y0, int y1, int sector, bool ceiling);
   void plane_span(int x, int y0, int y1, int sector, bool ceiling);
+  struct PlaneRow;
+  PlaneRow plane_row(const PlaneKey& key, int y) const;
+  void plane_pixels(const PlaneKey& key, int y, int xa, int xb);
   void sky_span(int x, int y0, int y1);
   void wall_span(int x, int y0, int y1, const Part& part, const WallHit& hit);
   void draw_masked(int x, const Step& step);
@@ -131,6 +137,7 @@ class Canvas {
   std::vector<uint16_t>* writes_ = nullptr;
   std::vector<Column> columns_;
   std::vector<std::vector<Step>> steps_;  // per column, nearest first
+  PlaneSpans planes_;  // floors and ceilings waiting for finish()
   std::vector<Sprite> sprites_;
   std::vector<uint32_t> things_drawn_;
   int x0_ = 0, x1_ = 0;  // the columns this canvas owns
@@ -138,7 +145,8 @@ class Canvas {
   std::vector<double> row_dy_;   // (y + 0.5) - H/2 per row
   std::vector<double> row_inv_;  // 1 / row_dy_
   uint64_t pixels_ = 0, closed_count_ = 0, masked_pixels_ = 0, sprites_drawn_ = 0, sprite_pixels_ = 0;
-  bool dry_ = false;  // clip_wall: compute rows, write nothing
+  bool dry_ = false;       // clip_wall: compute rows, write nothing
+  bool painting_ = false;  // paint_wall, paint_background: draw planes at once
 };
 
 }  // namespace p3d::render
