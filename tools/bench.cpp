@@ -725,6 +725,99 @@ void bench_threads(const Settings& s) {
   report.print("\nA dispatch of 8 empty strips to the pool: median %s us.\n", fixed(median(us), 1).c_str());
 }
 
+// ---- doom: beside Crispy Doom ---------------------------------------------------
+
+// Our ms/frame on the cameras at w x h, on one thread and on `cores`, interleaved frame
+// by frame so that the machine's noise falls on both alike; medians.
+std::pair<double, double> time_threads(const level::Level& level, const level::State& state,
+                                       const std::vector<render::Camera>& cameras, int w, int h, int cores, int repeat) {
+  auto one = render::make_renderer("bsp", {.threads = 1});
+  auto all = render::make_renderer("bsp", {.threads = cores});
+  render::Frame frame(w, h);
+  std::vector<double> ms1, msn;
+  for (int pass = 0; pass < 1 + repeat; ++pass)
+    for (const render::Camera& camera : cameras)
+      for (auto [r, out] : {std::pair{one.get(), &ms1}, std::pair{all.get(), &msn}}) {
+        const auto t0 = Clock::now();
+        r->render(level, state, camera, frame);
+        if (pass > 0) out->push_back(cli::seconds_since(t0) * 1000);  // pass 0 warms up
+      }
+  return {median(ms1), median(msn)};
+}
+
+// The map a demo lump plays: its header holds skill, episode and map (after a version
+// byte since Doom 1.4).
+std::string demo_map(const wad::Lump& demo, bool numbered_maps) {
+  const std::span<const uint8_t> d = demo.bytes;
+  const size_t at = !d.empty() && d[0] >= 104 ? 2 : 1;
+  if (d.size() < at + 2) throw Error(demo.name + ": not a demo");
+  char name[16];
+  if (numbered_maps) std::snprintf(name, sizeof name, "MAP%02d", d[at + 1]);
+  else std::snprintf(name, sizeof name, "E%dM%d", d[at], d[at + 1]);
+  return name;
+}
+
+// Crispy Doom's render-only ms/frame on a demo, by tools/peers/doom_render_ms.py; 0 when it cannot run.
+double crispy_ms(const Settings& s, const std::filesystem::path& iwad, const std::string& demo) {
+  const auto script = std::filesystem::path(s.source_dir) / "tools" / "peers" / "doom_render_ms.py";
+  const std::string command = "python3 '" + script.string() + "' --port crispy --iwad '" + iwad.string() + "' --demo " +
+                              demo + " --res 640 2>/dev/null";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return 0;
+  std::string out;
+  char buffer[256];
+  while (std::fgets(buffer, sizeof buffer, pipe)) out += buffer;
+  if (::pclose(pipe) != 0) return 0;
+  const size_t at = out.find("render_ms_per_frame=");
+  return at == std::string::npos ? 0 : std::atof(out.c_str() + at + 20);
+}
+
+// For every demo of the IWADs (Freedoom's eight by default), the map it plays: Crispy
+// Doom's render time on the demo beside ours on random cameras inside the map, at
+// 640x400 on one thread and on every core, and ours at 1920x1080.
+void bench_doom(const Settings& s) {
+  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<std::filesystem::path> iwads;
+  if (!s.wads.iwad.empty()) iwads.push_back(s.wads.iwad);
+  else
+    for (const char* name : {"freedoom1.wad", "freedoom2.wad"})
+      if (std::filesystem::exists(std::filesystem::path("/usr/share/games/doom") / name))
+        iwads.push_back(std::filesystem::path("/usr/share/games/doom") / name);
+  if (iwads.empty()) return report.print("\n### Beside Crispy Doom: no IWAD (apt-get install freedoom, or --iwad)\n");
+  const bool crispy = on_path("crispy-doom");
+  report.print("\n### Beside Crispy Doom: render-only ms/frame, things drawn (%d random cameras per map; Crispy on the map's demo)\n\n",
+               s.cameras);
+  report.print("| iwad | demo | map | Crispy 640x400 | ours 640x400, 1 thread | ÷ Crispy | ours, %d threads | ÷ Crispy | "
+               "ours 1920x1080, %d threads |\n|---|---|---|---:|---:|---:|---:|---:|---:|\n", cores, cores);
+  std::vector<double> ratio1, ration, hd;
+  for (const auto& iwad : iwads) {
+    const wad::Stack wads = bsp::read_wads({iwad});
+    const bool numbered = wads.map("MAP01").has_value();
+    for (int n = 1; n <= 4; ++n) {
+      const std::string demo = "demo" + std::to_string(n);
+      const wad::Lump* lump = wads.find(demo);
+      if (!lump) continue;
+      const std::string map = demo_map(*lump, numbered);
+      if (!wads.map(map)) continue;
+      const level::Level level = bsp::build_wad_map(wads, map, {}, nullptr);
+      const level::State state = level::start_state(level, s.skill);
+      const auto cameras = random_cameras(level, s.cameras, 1);
+      const double peer = crispy ? crispy_ms(s, iwad, demo) : 0;
+      const auto [one, all] = time_threads(level, state, cameras, 640, 400, cores, s.repeat);
+      const double big = time_threads(level, state, cameras, 1920, 1080, cores, s.repeat).second;
+      hd.push_back(big);
+      if (peer > 0) ratio1.push_back(one / peer), ration.push_back(all / peer);
+      report.print("| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", iwad.filename().c_str(), demo.c_str(), map.c_str(),
+                   peer > 0 ? fixed(peer, 3).c_str() : "n/a", fixed(one, 3).c_str(),
+                   peer > 0 ? fixed(one / peer, 2).c_str() : "n/a", fixed(all, 3).c_str(),
+                   peer > 0 ? fixed(all / peer, 2).c_str() : "n/a", fixed(big, 3).c_str());
+      std::fflush(stdout);
+    }
+  }
+  report.print("| geomean | | | | | %s | | %s | %s |\n", ratio1.empty() ? "n/a" : fixed(geomean(ratio1), 2).c_str(),
+               ration.empty() ? "n/a" : fixed(geomean(ration), 2).c_str(), fixed(geomean(hd), 3).c_str());
+}
+
 // ---- capture ------------------------------------------------------------------
 
 std::vector<uint8_t> stb_png(const image::Image& img) {  // the encoder we replaced, for comparison
@@ -799,8 +892,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> sections;
   std::string size_text = "640x400";
   app.add_option("sections", sections,
-                 "render, scaling, grids, strategies, hostile, capture, threads, wad (default: all but wad; with --iwad, wad)")
-      ->check(CLI::IsMember({"render", "scaling", "grids", "strategies", "hostile", "capture", "threads", "wad"}));
+                 "render, scaling, grids, strategies, hostile, capture, threads, wad, doom (default: all but wad and doom; with --iwad, wad)")
+      ->check(CLI::IsMember({"render", "scaling", "grids", "strategies", "hostile", "capture", "threads", "wad", "doom"}));
   cli::add_wad_options(app, s.wads);
   app.add_option("--cameras", s.cameras, "wad: random cameras per map")->check(CLI::Range(1, 100000))->capture_default_str();
   app.add_option("--runs", s.runs, "wad: compiles per map and tool (median)")->check(CLI::Range(1, 1000))->capture_default_str();
@@ -840,6 +933,7 @@ int main(int argc, char** argv) {
       if (section == "capture") bench_capture(s);
       if (section == "threads") bench_threads(s);
       if (section == "wad") bench_wad(s);
+      if (section == "doom") bench_doom(s);
     }
     if (!json.empty()) write_file_atomically(json, report.json());
     return 0;
