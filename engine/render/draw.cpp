@@ -82,8 +82,24 @@ struct RgbaColumn {
 
 // Rows y0..y1 of a column whose texel row is (v >> 16) mod period, v stepping by step.
 // v and step are already reduced modulo period, so one subtraction keeps v in range.
+// A power-of-two period (at most 2^32, as textures are at most 4096 high) divides
+// 2^32: v may then wrap in 32 bits and the row be masked.
 template <typename Source>
 void wrapped_column(uint32_t* out, size_t pitch, int count, int64_t v, int64_t step, int64_t period, const Source& texel) {
+  if ((period & (period - 1)) == 0) {
+    const uint32_t row_mask = uint32_t((period >> 16) - 1);
+    const uint32_t step32 = uint32_t(step);
+    uint32_t v32 = uint32_t(v);
+    int i = 0;
+    for (; i + 4 <= count; i += 4, out += 4 * pitch, v32 += 4 * step32) {  // unrolled: a wall is most of a frame
+      out[0] = texel((v32 >> 16) & row_mask);
+      out[pitch] = texel(((v32 + step32) >> 16) & row_mask);
+      out[2 * pitch] = texel(((v32 + 2 * step32) >> 16) & row_mask);
+      out[3 * pitch] = texel(((v32 + 3 * step32) >> 16) & row_mask);
+    }
+    for (; i < count; ++i, out += pitch, v32 += step32) *out = texel((v32 >> 16) & row_mask);
+    return;
+  }
   for (int i = 0; i < count; ++i, out += pitch) {
     *out = texel(size_t(v >> 16));
     v += step;
@@ -129,6 +145,7 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
     }
   }
   planes_.begin(x0_, x1_, view.height);
+  tabulate_sky_rows();
   if (x0_ == 0 && x1_ == view.width) prepare_probe(view, probe);
   pixels_ = closed_count_ = masked_pixels_ = sprites_drawn_ = sprite_pixels_ = 0;
 }
@@ -510,8 +527,7 @@ void Canvas::plane_pixels(const PlaneKey& key, int y, int xa, int xb) {
   auto draw = [&](auto colour_of_texel, auto texel_of) {
     uint64_t u = row.u0 + uint64_t(xa) * row.du, v = row.v0 + uint64_t(xa) * row.dv;
     uint32_t* out = pixel(xa, y);
-    for (int x = xa; x < xb; ++x, u += row.du, v += row.dv)
-      *out++ = colour_of_texel(texel_of(int64_t(u) >> 16, int64_t(v) >> 16));
+    for (int x = xa; x < xb; ++x, u += row.du, v += row.dv) *out++ = colour_of_texel(texel_of(u, v));
   };
   auto by_art = [&](auto texel_of) {
     if (level_->paletted()) {
@@ -525,33 +541,50 @@ void Canvas::plane_pixels(const PlaneKey& key, int y, int xa, int xb) {
     }
   };
   if (tex.pow2_width && tex.pow2_height) {
-    const int64_t umask = tex.width - 1, vmask = tex.height - 1;
-    const int shift = std::countr_zero(unsigned(tex.height));
-    by_art([=](int64_t u, int64_t v) { return size_t(((u & umask) << shift) | (v & vmask)); });
+    // Texel (u mod width) * height + v mod height, from the 16.16 coordinates: the
+    // low 32 bits suffice (a texture is at most 4096 wide).
+    const uint32_t shift = uint32_t(std::countr_zero(unsigned(tex.height)));
+    const uint32_t umask = uint32_t(tex.width - 1) << shift, vmask = uint32_t(tex.height - 1);
+    by_art([=](uint32_t u, uint32_t v) { return size_t(((u >> (16 - shift)) & umask) | ((v >> 16) & vmask)); });
   } else {
-    by_art([&](int64_t u, int64_t v) { return size_t(tex.wrap_u(u)) * tex.height + tex.wrap_v(v); });
+    by_art([&](uint64_t u, uint64_t v) {
+      return size_t(tex.wrap_u(int64_t(u) >> 16)) * tex.height + tex.wrap_v(int64_t(v) >> 16);
+    });
   }
 }
 
 // Doom's sky: 1024 texture columns around the horizon (a 256-wide sky repeats four
 // times), the column at the ray's angle; texture row 100 at the horizon and one row
 // per pixel at Doom's projection (d = 160), so the sky keeps its angular size at any
-// resolution. Full bright.
+// resolution. Full bright. A screen row's texture row is the same in every column:
+// begin() tabulates it.
+constexpr double kSkyColumns = 1024, kSkyMidRow = 100, kDoomProjection = 160;
+
+void Canvas::tabulate_sky_rows() {
+  sky_rows_.clear();
+  if (level_->sky_texture == kNone) return;
+  const level::Texture& tex = level_->textures[level_->sky_texture];
+  const double rows_per_pixel = kDoomProjection / view_->d;
+  sky_rows_.resize(size_t(view_->height));
+  for (int y = 0; y < view_->height; ++y) sky_rows_[size_t(y)] = tex.wrap_v(to_int(kSkyMidRow + row_dy_[y] * rows_per_pixel));
+}
+
 void Canvas::sky_span(int x, int y0, int y1) {
   if (dry_) return;
   if (level_->sky_texture == kNone) return fill_span(x, y0, y1, kVoidColor);
   count(x, y0, y1);
-  constexpr double kSkyColumns = 1024, kSkyMidRow = 100, kDoomProjection = 160;
   const level::Texture& tex = level_->textures[level_->sky_texture];
   const double angle = view_->angle + std::atan2(view_->half_w - (x + 0.5), view_->d);
   const int64_t u = to_int(angle / (2 * M_PI) * kSkyColumns);
-  const uint32_t* texels = tex.column(u);
-  const uint8_t* indices = level_->paletted() ? tex.index_column(u) : nullptr;
-  const double rows_per_pixel = kDoomProjection / view_->d;
+  const int* rows = sky_rows_.data();
   uint32_t* out = pixel(x, y0);
-  for (int y = y0; y < y1; ++y, out += view_->width) {
-    const int v = tex.wrap_v(to_int(kSkyMidRow + row_dy_[y] * rows_per_pixel));
-    *out = indices ? level_->light_maps[indices[v]] : texels[v] | 0xFF000000u;
+  if (level_->paletted()) {
+    const uint8_t* indices = tex.index_column(u);
+    const uint32_t* light_map = level_->light_maps.data();
+    for (int y = y0; y < y1; ++y, out += view_->width) *out = light_map[indices[rows[y]]];
+  } else {
+    const uint32_t* texels = tex.column(u);
+    for (int y = y0; y < y1; ++y, out += view_->width) *out = texels[rows[y]] | 0xFF000000u;
   }
 }
 

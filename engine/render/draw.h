@@ -117,6 +117,7 @@ class Canvas {
   PlaneRow plane_row(const PlaneKey& key, int y) const;
   void plane_pixels(const PlaneKey& key, int y, int xa, int xb);
   void sky_span(int x, int y0, int y1);
+  void tabulate_sky_rows();
   void wall_span(int x, int y0, int y1, const Part& part, const WallHit& hit);
   void draw_masked(int x, const Step& step);
   void draw_sprite_column(const Sprite& s, int x, int top, int bottom, bool& drew);
@@ -144,6 +145,7 @@ class Canvas {
   std::vector<int> layer_cursor_;  // draw_layers: per column, the farthest step not yet passed
   std::vector<double> row_dy_;   // (y + 0.5) - H/2 per row
   std::vector<double> row_inv_;  // 1 / row_dy_
+  std::vector<int> sky_rows_;    // the sky's texture row at each screen row
   uint64_t pixels_ = 0, closed_count_ = 0, masked_pixels_ = 0, sprites_drawn_ = 0, sprite_pixels_ = 0;
   bool dry_ = false;       // clip_wall: compute rows, write nothing
   bool painting_ = false;  // paint_wall, paint_background: draw planes at once
