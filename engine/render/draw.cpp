@@ -145,6 +145,8 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
     }
   }
   planes_.begin(x0_, x1_, view.height);
+  painted_index_.clear();
+  painted_count_ = 0;
   tabulate_sky_rows();
   if (x0_ == 0 && x1_ == view.width) prepare_probe(view, probe);
   pixels_ = closed_count_ = masked_pixels_ = sprites_drawn_ = sprite_pixels_ = 0;
@@ -486,15 +488,10 @@ void Canvas::draw_layers() {
 // Floor or ceiling at height h: row y's ray through column x meets the plane at
 // k = (eye - h) / dy ray lengths, i.e. at pos + ray(x) * k, depth k * d. Along a row
 // k is constant and ray(x) = ray0 + right * x, so the texture coordinates are linear
-// in x: row y's are rounded once to 16.16 (u0, du, v0, dv) and column x samples
-// u0 + x du (mod 2^64), exactly, whether a row span steps along x or the painter
-// evaluates one pixel. Its light is the row's depth's. (Camera positions, heights and
-// the projection are bounded, so the doubles stay far inside 64 bits.)
-struct Canvas::PlaneRow {
-  uint64_t u0, du, v0, dv;  // texture v runs south: north is up
-  int light_map;
-};
-
+// in x: row y's are rounded once to 16.16 (PlaneRow: u0, du, v0, dv) and column x
+// samples u0 + x du (mod 2^64), exactly, whether a row span steps along x or the
+// painter draws a column. Its light is the row's depth's. (Camera positions, heights
+// and the projection are bounded, so the doubles stay far inside 64 bits.)
 Canvas::PlaneRow Canvas::plane_row(const PlaneKey& key, int y) const {
   const double h_rel = view_->eye - key.height;
   const double k = h_rel * row_inv_[y];
@@ -514,13 +511,34 @@ void Canvas::plane_span(int x, int y0, int y1, int sector, bool ceiling) {
   count(x, y0, y1);
   const PlaneKey key{ceiling ? s.ceiling : s.floor, texture, light_start(s.light, 0)};
   if (painting_)
-    for (int y = y0; y < y1; ++y) plane_pixels(key, y, x, x + 1);
+    plane_column(key, x, y0, y1);
   else
     planes_.add(key, x, y0, y1);
 }
 
-// Pixels [xa, xb) of row y of a plane. Four loops, chosen once per span: paletted or
-// RGBA art, wrapped by mask or by modulo.
+namespace {
+
+// Calls draw(texel_of): texel_of(u, v) is the texel index at 16.16 coordinates (u, v),
+// wrapped by mask for power-of-two sizes (the low 32 bits then suffice: a texture is
+// at most 4096 wide), else by modulo.
+template <typename Draw>
+void with_texel_index(const level::Texture& tex, Draw&& draw) {
+  if (tex.pow2_width && tex.pow2_height) {
+    const uint32_t shift = uint32_t(std::countr_zero(unsigned(tex.height)));
+    const uint32_t umask = uint32_t(tex.width - 1) << shift, vmask = uint32_t(tex.height - 1);
+    draw([=](uint64_t u, uint64_t v) {
+      return size_t(((uint32_t(u) >> (16 - shift)) & umask) | ((uint32_t(v) >> 16) & vmask));
+    });
+  } else {
+    draw([&](uint64_t u, uint64_t v) {
+      return size_t(tex.wrap_u(int64_t(u) >> 16)) * tex.height + tex.wrap_v(int64_t(v) >> 16);
+    });
+  }
+}
+
+}  // namespace
+
+// Pixels [xa, xb) of row y of a plane: one light map for the row.
 void Canvas::plane_pixels(const PlaneKey& key, int y, int xa, int xb) {
   const level::Texture& tex = level_->textures[key.texture];
   const PlaneRow row = plane_row(key, y);
@@ -529,7 +547,7 @@ void Canvas::plane_pixels(const PlaneKey& key, int y, int xa, int xb) {
     uint32_t* out = pixel(xa, y);
     for (int x = xa; x < xb; ++x, u += row.du, v += row.dv) *out++ = colour_of_texel(texel_of(u, v));
   };
-  auto by_art = [&](auto texel_of) {
+  with_texel_index(tex, [&](auto texel_of) {
     if (level_->paletted()) {
       const uint32_t* light_map = level_->light_maps.data() + size_t(row.light_map) * limits::kPaletteSize;
       const uint8_t* indices = tex.indices.data();
@@ -539,18 +557,31 @@ void Canvas::plane_pixels(const PlaneKey& key, int y, int xa, int xb) {
       const uint32_t m = multiplier(row.light_map);
       draw([=](size_t texel) { return shade(texels[texel], m); }, texel_of);
     }
-  };
-  if (tex.pow2_width && tex.pow2_height) {
-    // Texel (u mod width) * height + v mod height, from the 16.16 coordinates: the
-    // low 32 bits suffice (a texture is at most 4096 wide).
-    const uint32_t shift = uint32_t(std::countr_zero(unsigned(tex.height)));
-    const uint32_t umask = uint32_t(tex.width - 1) << shift, vmask = uint32_t(tex.height - 1);
-    by_art([=](uint32_t u, uint32_t v) { return size_t(((u >> (16 - shift)) & umask) | ((v >> 16) & vmask)); });
-  } else {
-    by_art([&](uint64_t u, uint64_t v) {
-      return size_t(tex.wrap_u(int64_t(u) >> 16)) * tex.height + tex.wrap_v(int64_t(v) >> 16);
-    });
-  }
+  });
+}
+
+// The painter's column of a plane: the same pixels as plane_pixels gives by rows, from
+// the plane's rows, each computed once a frame (painted_rows).
+void Canvas::plane_column(const PlaneKey& key, int x, int y0, int y1) {
+  const level::Texture& tex = level_->textures[key.texture];
+  const PlaneRow* rows = painted_rows(key, y0, y1);
+  uint32_t* out = pixel(x, y0);
+  with_texel_index(tex, [&](auto texel_of) {
+    for (int y = y0; y < y1; ++y, out += view_->width) {
+      const PlaneRow& r = rows[y];
+      *out = lit(tex, texel_of(r.u0 + uint64_t(x) * r.du, r.v0 + uint64_t(x) * r.dv), r.light_map);
+    }
+  });
+}
+
+const Canvas::PlaneRow* Canvas::painted_rows(const PlaneKey& key, int y0, int y1) {
+  auto [it, added] = painted_index_.try_emplace(key, painted_count_);
+  if (added && painted_.size() <= painted_count_++) painted_.emplace_back();
+  PaintedPlane& p = painted_[it->second];
+  if (added) p.ready.assign(size_t(view_->height), 0), p.rows.resize(size_t(view_->height));
+  for (int y = y0; y < y1; ++y)
+    if (!p.ready[size_t(y)]) p.rows[size_t(y)] = plane_row(key, y), p.ready[size_t(y)] = 1;
+  return p.rows.data();
 }
 
 // Doom's sky: 1024 texture columns around the horizon (a 256-wide sky repeats four

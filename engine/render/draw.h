@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 #include "engine/render/plane_spans.h"
@@ -113,9 +114,15 @@ class Canvas {
   void close(int x, const WallHit& hit);
   void near_plane(int x, int y0, int y1, int sector, bool ceiling);
   void plane_span(int x, int y0, int y1, int sector, bool ceiling);
-  struct PlaneRow;
+  // Row y of a plane: texture coordinates 16.16 at column 0 and per column, light map.
+  struct PlaneRow {
+    uint64_t u0, du, v0, dv;  // texture v runs south: north is up
+    int light_map;
+  };
   PlaneRow plane_row(const PlaneKey& key, int y) const;
   void plane_pixels(const PlaneKey& key, int y, int xa, int xb);
+  void plane_column(const PlaneKey& key, int x, int y0, int y1);
+  const PlaneRow* painted_rows(const PlaneKey& key, int y0, int y1);
   void sky_span(int x, int y0, int y1);
   void tabulate_sky_rows();
   void wall_span(int x, int y0, int y1, const Part& part, const WallHit& hit);
@@ -139,6 +146,14 @@ class Canvas {
   std::vector<Column> columns_;
   std::vector<std::vector<Step>> steps_;  // per column, nearest first
   PlaneSpans planes_;  // floors and ceilings waiting for finish()
+  // The painter's planes: rows computed once a frame, on first use.
+  struct PaintedPlane {
+    std::vector<PlaneRow> rows;
+    std::vector<uint8_t> ready;
+  };
+  std::unordered_map<PlaneKey, size_t, PlaneKeyHash> painted_index_;
+  std::vector<PaintedPlane> painted_;
+  size_t painted_count_ = 0;
   std::vector<Sprite> sprites_;
   std::vector<uint32_t> things_drawn_;
   int x0_ = 0, x1_ = 0;  // the columns this canvas owns

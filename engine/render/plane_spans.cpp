@@ -19,6 +19,8 @@ size_t hash_of(const PlaneKey& key) {
 
 }  // namespace
 
+size_t PlaneKeyHash::operator()(const PlaneKey& key) const { return hash_of(key); }
+
 void PlaneSpans::begin(int x0, int x1, int height) {
   x0_ = x0;
   x1_ = std::max(x0, x1);

@@ -22,6 +22,9 @@ struct PlaneKey {
   int light;  // the light map at depth zero (light_start)
   bool operator==(const PlaneKey&) const = default;
 };
+struct PlaneKeyHash {
+  size_t operator()(const PlaneKey& key) const;
+};
 
 class PlaneSpans {
  public:
