@@ -130,6 +130,7 @@ struct Settings {
   int skill = level::kDefaultSkill;
   int cameras = 30;            // the wad section: random cameras per map
   int runs = 5;                // the wad section: compiles per map and tool (median)
+  int peer_reps = 3;           // the doom section: Crispy Doom timings per demo (median); 0: ours only
   int width = 640, height = 400;
   int repeat = 3;              // renders per camera; the median of all frames is reported
   double budget_seconds = 2;   // per renderer and map: slow renderers render a prefix of the path
@@ -764,7 +765,7 @@ std::string demo_map(const wad::Lump& demo, bool numbered_maps) {
 double crispy_ms(const Settings& s, const std::filesystem::path& iwad, const std::string& demo) {
   const auto script = std::filesystem::path(s.source_dir) / "tools" / "peers" / "doom_render_ms.py";
   const std::string command = "python3 '" + script.string() + "' --port crispy --iwad '" + iwad.string() + "' --demo " +
-                              demo + " --res 640 2>/dev/null";
+                              demo + " --res 640 --reps " + std::to_string(s.peer_reps) + " 2>/dev/null";
   FILE* pipe = ::popen(command.c_str(), "r");
   if (!pipe) return 0;
   std::string out;
@@ -787,7 +788,7 @@ void bench_doom(const Settings& s) {
       if (std::filesystem::exists(std::filesystem::path("/usr/share/games/doom") / name))
         iwads.push_back(std::filesystem::path("/usr/share/games/doom") / name);
   if (iwads.empty()) return report.print("\n### Beside Crispy Doom: no IWAD (apt-get install freedoom, or --iwad)\n");
-  const bool crispy = on_path("crispy-doom");
+  const bool crispy = s.peer_reps > 0 && on_path("crispy-doom");
   report.print("\n### Beside Crispy Doom: render-only ms/frame, things drawn (%d random cameras per map; Crispy on the map's demo)\n\n",
                s.cameras);
   report.print("| iwad | demo | map | Crispy 640x400 | ours 640x400, 1 thread | ÷ Crispy | ours, %d threads | ÷ Crispy | "
@@ -909,6 +910,9 @@ int main(int argc, char** argv) {
   app.add_option("--sizes", s.sizes, "wall counts for the scaling section")->delimiter(',')->capture_default_str();
   app.add_option("--renderers", s.renderers, "renderers to time (default: all)")->delimiter(',');
   std::string json;
+  app.add_option("--peer-reps", s.peer_reps, "doom: Crispy Doom's timings per demo (median); 0: ours only")
+      ->check(CLI::Range(0, 100))
+      ->capture_default_str();
   app.add_option("--json", json, "also write the tables as JSON (sections of rows, columns by name)");
   app.add_option("--source-dir", s.source_dir, "the project's source directory (for maps/)")
       ->check(CLI::ExistingDirectory)
