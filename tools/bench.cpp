@@ -678,6 +678,24 @@ void bench_hostile(const Settings& s) {
 // The BSP renderer's column strips on one thread and on every core, at 640x400 and
 // 1920x1080, on the outpost path and (when Freedoom is installed) random views of
 // freedoom2 MAP01 with its things; and what one dispatch to the pool costs.
+// The bsp renderer's ms/frame on the cameras at w x h, on one thread and on `cores`, interleaved frame
+// by frame so that the machine's noise falls on both alike; medians.
+std::pair<double, double> time_threads(const level::Level& level, const level::State& state,
+                                       const std::vector<render::Camera>& cameras, int w, int h, int cores, int repeat) {
+  auto one = render::make_renderer("bsp", {.threads = 1});
+  auto all = render::make_renderer("bsp", {.threads = cores});
+  render::Frame frame(w, h);
+  std::vector<double> ms1, msn;
+  for (int pass = 0; pass < 1 + repeat; ++pass)
+    for (const render::Camera& camera : cameras)
+      for (auto [r, out] : {std::pair{one.get(), &ms1}, std::pair{all.get(), &msn}}) {
+        const auto t0 = Clock::now();
+        r->render(level, state, camera, frame);
+        if (pass > 0) out->push_back(cli::seconds_since(t0) * 1000);  // pass 0 warms up
+      }
+  return {median(ms1), median(msn)};
+}
+
 void bench_threads(const Settings& s) {
   const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
   report.print("\n### Threads: the BSP renderer's column strips on %d core%s\n\n", cores, cores == 1 ? "" : "s");
@@ -702,19 +720,7 @@ void bench_threads(const Settings& s) {
   }
   for (const Case& c : cases)
     for (const auto& [w, h] : {std::pair{640, 400}, std::pair{1920, 1080}}) {
-      // Interleaved frame by frame, so that the machine's noise falls on both alike.
-      auto one = render::make_renderer("bsp", {.threads = 1});
-      auto all = render::make_renderer("bsp", {.threads = cores});
-      render::Frame frame(w, h);
-      std::vector<double> ms1, msn;
-      for (int pass = 0; pass < 1 + s.repeat; ++pass)
-        for (const render::Camera& camera : c.path)
-          for (auto [r, out] : {std::pair{one.get(), &ms1}, std::pair{all.get(), &msn}}) {
-            const auto t0 = Clock::now();
-            r->render(c.level, camera, frame);
-            if (pass > 0) out->push_back(cli::seconds_since(t0) * 1000);  // pass 0 warms up
-          }
-      const double t1 = median(ms1), tn = median(msn);
+      const auto [t1, tn] = time_threads(c.level, level::start_state(c.level), c.path, w, h, cores, s.repeat);
       report.print("| %s | %dx%d | %s | %s | %s |\n", c.name.c_str(), w, h, fixed(t1, 3).c_str(), fixed(tn, 3).c_str(),
                    fixed(t1 / tn, 2).c_str());
     }
@@ -730,24 +736,6 @@ void bench_threads(const Settings& s) {
 }
 
 // ---- doom: beside Crispy Doom ---------------------------------------------------
-
-// Our ms/frame on the cameras at w x h, on one thread and on `cores`, interleaved frame
-// by frame so that the machine's noise falls on both alike; medians.
-std::pair<double, double> time_threads(const level::Level& level, const level::State& state,
-                                       const std::vector<render::Camera>& cameras, int w, int h, int cores, int repeat) {
-  auto one = render::make_renderer("bsp", {.threads = 1});
-  auto all = render::make_renderer("bsp", {.threads = cores});
-  render::Frame frame(w, h);
-  std::vector<double> ms1, msn;
-  for (int pass = 0; pass < 1 + repeat; ++pass)
-    for (const render::Camera& camera : cameras)
-      for (auto [r, out] : {std::pair{one.get(), &ms1}, std::pair{all.get(), &msn}}) {
-        const auto t0 = Clock::now();
-        r->render(level, state, camera, frame);
-        if (pass > 0) out->push_back(cli::seconds_since(t0) * 1000);  // pass 0 warms up
-      }
-  return {median(ms1), median(msn)};
-}
 
 // The map a demo lump plays: its header holds skill, episode and map (after a version
 // byte since Doom 1.4).
