@@ -22,23 +22,31 @@ void write_side(ByteWriter& out, const Side& s) {
   out.i32(s.light);
 }
 
-// Rows of palette indices, then one opacity bit per texel; or rows of RGBA8.
+// Rows of palette indices, then one opacity bit per texel; or rows of RGBA8. The
+// texels are stored column-major, so each is written in place at its row-major offset.
 void write_texels(ByteWriter& out, const Texture& t, bool paletted) {
+  const size_t w = size_t(t.width), h = size_t(t.height);
   if (!paletted) {
-    for (int y = 0; y < t.height; ++y)
-      for (int x = 0; x < t.width; ++x) out.u32(t.at(x, y));  // R,G,B,A byte order
+    uint8_t* rows = out.extend(w * h * 4);
+    for (size_t x = 0; x < w; ++x)
+      for (size_t y = 0; y < h; ++y) {
+        const uint32_t c = t.texels[x * h + y];  // R,G,B,A byte order
+        uint8_t* p = rows + (y * w + x) * 4;
+        p[0] = uint8_t(c), p[1] = uint8_t(c >> 8), p[2] = uint8_t(c >> 16), p[3] = uint8_t(c >> 24);
+      }
     return;
   }
-  for (int y = 0; y < t.height; ++y)
-    for (int x = 0; x < t.width; ++x) out.u8(t.index_column(x)[y]);
-  uint8_t bits = 0;
-  size_t p = 0;
-  for (int y = 0; y < t.height; ++y)
-    for (int x = 0; x < t.width; ++x, ++p) {
-      if (t.at(x, y) >> 24) bits |= uint8_t(1u << (p % 8));
-      if (p % 8 == 7) out.u8(bits), bits = 0;
-    }
-  if (p % 8) out.u8(bits);
+  uint8_t* rows = out.extend(w * h);
+  for (size_t x = 0; x < w; ++x)
+    for (size_t y = 0; y < h; ++y) rows[y * w + x] = t.indices[x * h + y];
+  uint8_t* bits = out.extend((w * h + 7) / 8);
+  std::memset(bits, 0, (w * h + 7) / 8);
+  for (size_t x = 0; x < w; ++x)
+    for (size_t y = 0; y < h; ++y)
+      if (t.texels[x * h + y] >> 24) {
+        const size_t p = y * w + x;
+        bits[p / 8] |= uint8_t(1u << (p % 8));
+      }
 }
 
 void write_payload(ByteWriter& out, const Level& level) {
@@ -164,10 +172,22 @@ void write_payload(ByteWriter& out, const Level& level) {
   }
 }
 
+// An upper estimate of the encoded size, so the buffer is allocated once: texels, and
+// a generous bound for every other record.
+size_t encoded_size_bound(const Level& level) {
+  size_t bytes = 1 << 16;
+  for (const Texture& t : level.textures) bytes += t.name.size() + 16 + t.texels.size() * (level.paletted() ? 2 : 4);
+  if (level.grid) bytes += level.grid->solid.size() + level.grid->faces.size() * 4;
+  return bytes + level.palette.size() * 4 + level.light_maps.size() * 4 +
+         256 * (level.walls.size() + level.sectors.size() + level.nodes.size() + level.leaves.size() +
+                level.fragments.size() + level.things.size() + level.sprite_frames.size());
+}
+
 }  // namespace
 
 std::vector<uint8_t> encode(const Level& level) {
   ByteWriter out;
+  out.reserve(encoded_size_bound(level));
   out.raw(std::span(reinterpret_cast<const uint8_t*>(format::kMagic), 8));
   out.u32(format::kVersion);
   out.u32(0);

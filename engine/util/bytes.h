@@ -27,16 +27,26 @@ class ByteWriter {
     out_.insert(out_.end(), s.begin(), s.end());
   }
   void raw(std::span<const uint8_t> bytes) { out_.insert(out_.end(), bytes.begin(), bytes.end()); }
+  // n bytes appended for the caller to fill (bulk data such as texels, written in place).
+  uint8_t* extend(size_t n) {
+    out_.resize(out_.size() + n);
+    return out_.data() + out_.size() - n;
+  }
   void patch_u64(size_t offset, uint64_t v) {
     for (int i = 0; i < 8; ++i) out_[offset + i] = static_cast<uint8_t>(v >> (8 * i));
   }
   size_t size() const { return out_.size(); }
+  void reserve(size_t n) { out_.reserve(n); }
   std::vector<uint8_t>& bytes() { return out_; }
 
  private:
   template <typename U>
   void put(U v) {
-    for (size_t i = 0; i < sizeof(U); ++i) out_.push_back(static_cast<uint8_t>(v >> (8 * i)));
+    uint8_t b[sizeof(U)];
+    if constexpr (std::endian::native == std::endian::little) std::memcpy(b, &v, sizeof(U));
+    else
+      for (size_t i = 0; i < sizeof(U); ++i) b[i] = static_cast<uint8_t>(v >> (8 * i));
+    out_.insert(out_.end(), b, b + sizeof(U));
   }
   std::vector<uint8_t> out_;
 };
