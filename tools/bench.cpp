@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdarg>
@@ -30,8 +31,12 @@
 #include "engine/render/renderer.h"
 #include "engine/util/file.h"
 #include "tools/cli.h"
+#include "tools/plot_svg.h"
 
 using namespace p3d;
+using tools::BarChart;
+using tools::LineChart;
+using tools::LineSeries;
 using Clock = std::chrono::steady_clock;
 
 namespace {
@@ -53,6 +58,20 @@ class Report {
     for (size_t nl; (nl = pending_.find('\n')) != std::string::npos; pending_.erase(0, nl + 1)) line(pending_.substr(0, nl));
   }
 
+  struct Section {
+    std::string title;
+    std::vector<std::string> columns;           // as printed
+    std::vector<std::string> rows;              // as JSON objects
+    std::vector<std::vector<std::string>> cells;  // as printed, per row
+  };
+
+  // The first section whose title starts with prefix, or null.
+  const Section* find(const std::string& prefix) const {
+    for (const Section& s : sections_)
+      if (s.title.rfind(prefix, 0) == 0) return &s;
+    return nullptr;
+  }
+
   std::string json() const {
     std::string out = "{\"sections\": [";
     for (size_t i = 0; i < sections_.size(); ++i) {
@@ -64,11 +83,6 @@ class Report {
   }
 
  private:
-  struct Section {
-    std::string title;
-    std::vector<std::string> columns, rows;
-  };
-
   static std::vector<std::string> cells(const std::string& line) {
     std::vector<std::string> out;
     size_t start = 1;
@@ -102,21 +116,22 @@ class Report {
 
   void line(const std::string& text) {
     if (text.rfind("### ", 0) == 0) {
-      sections_.push_back({text.substr(4), {}, {}});
+      sections_.push_back({text.substr(4), {}, {}, {}});
       return;
     }
     if (sections_.empty() || text.rfind("|", 0) != 0) return;
     Section& s = sections_.back();
     const std::vector<std::string> row = cells(text);
     if (s.columns.empty()) {
-      for (const std::string& c : row) s.columns.push_back(snake(c));
+      s.columns = row;
       return;
     }
     if (!row.empty() && row[0].rfind("---", 0) == 0) return;  // the header's rule
     std::string object = "{";
     for (size_t i = 0; i < row.size() && i < s.columns.size(); ++i)
-      object += (i ? ", " : "") + json_string(s.columns[i]) + ": " + value(row[i]);
+      object += (i ? ", " : "") + json_string(snake(s.columns[i])) + ": " + value(row[i]);
     s.rows.push_back(object + "}");
+    s.cells.push_back(row);
   }
 
   std::string pending_;
@@ -719,7 +734,7 @@ void bench_threads(const Settings& s) {
     cases.push_back({"freedoom2 MAP01", std::move(level), std::move(path)});
   }
   for (const Case& c : cases)
-    for (const auto& [w, h] : {std::pair{640, 400}, std::pair{1920, 1080}}) {
+    for (const auto& [w, h] : {std::pair{320, 200}, std::pair{640, 400}, std::pair{1280, 800}, std::pair{1920, 1080}}) {
       const auto [t1, tn] = time_threads(c.level, level::start_state(c.level), c.path, w, h, cores, s.repeat);
       report.print("| %s | %dx%d | %s | %s | %s |\n", c.name.c_str(), w, h, fixed(t1, 3).c_str(), fixed(tn, 3).c_str(),
                    fixed(t1 / tn, 2).c_str());
@@ -868,6 +883,94 @@ void bench_capture(const Settings& s) {
   std::filesystem::remove_all(dir);
 }
 
+// ---- plots -------------------------------------------------------------------
+
+// A table cell as a number: plain numbers and counts such as "100k" or "1M"; NaN for
+// text ("n/a", "skipped").
+double cell_number(const std::string& cell) {
+  char* end = nullptr;
+  double v = std::strtod(cell.c_str(), &end);
+  if (end == cell.c_str()) return NAN;
+  if (*end == 'k') v *= 1e3, ++end;
+  else if (*end == 'M') v *= 1e6, ++end;
+  return *end ? NAN : v;
+}
+
+// The index of the first column whose printed name starts with prefix, or -1.
+int column(const Report::Section& s, const std::string& prefix) {
+  for (size_t i = 0; i < s.columns.size(); ++i)
+    if (s.columns[i].rfind(prefix, 0) == 0) return int(i);
+  return -1;
+}
+
+double cell_at(const std::vector<std::string>& row, int column) {
+  return column >= 0 && size_t(column) < row.size() ? cell_number(row[size_t(column)]) : NAN;
+}
+
+// Frame time against map size, one chart per kind of generated map, a line per renderer.
+void plot_scaling(const Report::Section& table, const Settings& s, const std::filesystem::path& dir) {
+  std::vector<std::string> kinds;
+  for (const auto& row : table.cells)
+    if (std::find(kinds.begin(), kinds.end(), row[0]) == kinds.end()) kinds.push_back(row[0]);
+  for (const std::string& kind : kinds) {
+    LineChart chart{"ms/frame against map size: " + kind, "walls",
+                    "ms/frame, " + std::to_string(s.width) + "x" + std::to_string(s.height) + ", 1 thread", true, true, {}};
+    for (size_t c = 0; c < table.columns.size(); ++c) {
+      const std::string& name = table.columns[c];
+      if (name.size() < 9 || name.compare(name.size() - 9, 9, " ms/frame") != 0) continue;
+      LineSeries series{name.substr(0, name.size() - 9), {}, false};
+      for (const auto& row : table.cells)
+        if (row[0] == kind && std::isfinite(cell_at(row, int(c))))
+          series.points.push_back({cell_at(row, 1), cell_at(row, int(c))});
+      if (!series.points.empty()) chart.series.push_back(series);
+    }
+    write_file_atomically(dir / ("scaling-" + kind + ".svg"), line_chart_svg(chart));
+  }
+}
+
+// Frame time against resolution, a line per map and thread count.
+void plot_threads(const Report::Section& table, const std::filesystem::path& dir) {
+  LineChart chart{"ms/frame against resolution and threads (BSP renderer)", "pixels per frame", "ms/frame", false, false, {}};
+  std::vector<std::string> maps;
+  for (const auto& row : table.cells)
+    if (std::find(maps.begin(), maps.end(), row[0]) == maps.end()) maps.push_back(row[0]);
+  for (size_t m = 0; m < maps.size(); ++m)
+    for (const int c : {2, 3}) {  // the map's colour; one thread solid, every core dashed
+      const std::string& map = maps[m];
+      LineSeries series{map + ", " + table.columns[size_t(c)].substr(0, table.columns[size_t(c)].find(" ms")), {}, c == 3,
+                        int(m)};
+      for (const auto& row : table.cells) {
+        int w = 0, h = 0;
+        if (row[0] == map && std::sscanf(row[1].c_str(), "%dx%d", &w, &h) == 2)
+          series.points.push_back({double(w) * h, cell_at(row, c)});
+      }
+      chart.series.push_back(series);
+    }
+  write_file_atomically(dir / "threads.svg", line_chart_svg(chart));
+}
+
+// Ours beside Crispy Doom per demo map: bars of ms/frame.
+void plot_doom(const Report::Section& table, const std::filesystem::path& dir) {
+  BarChart chart{"Render ms/frame beside Crispy Doom, 640x400", "ms/frame", {}, {}, 0, ""};
+  const int crispy = column(table, "Crispy"), one = column(table, "ours 640x400, 1 thread"), all = column(table, "ours, ");
+  if (crispy < 0 || one < 0 || all < 0) return;
+  for (const int c : {crispy, one, all}) chart.series.push_back({table.columns[size_t(c)], {}});
+  for (const auto& row : table.cells) {
+    if (row[0] == "geomean") continue;
+    chart.groups.push_back(row[2]);
+    for (size_t i = 0; i < 3; ++i) chart.series[i].values.push_back(cell_at(row, std::array{crispy, one, all}[i]));
+  }
+  write_file_atomically(dir / "doom.svg", bar_chart_svg(chart));
+}
+
+// Charts of the tables this run printed, where a picture says it better.
+void write_plots(const Settings& s, const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  if (const auto* table = report.find("Scaling")) plot_scaling(*table, s, dir);
+  if (const auto* table = report.find("Threads")) plot_threads(*table, dir);
+  if (const auto* table = report.find("Beside Crispy")) plot_doom(*table, dir);
+}
+
 std::string cpu_name() {
   std::ifstream in("/proc/cpuinfo");
   std::string line;
@@ -902,6 +1005,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 100))
       ->capture_default_str();
   app.add_option("--json", json, "also write the tables as JSON (sections of rows, columns by name)");
+  std::string plots;
+  app.add_option("--plots", plots, "also draw charts of the scaling, threads and doom tables as SVG files in this directory");
   app.add_option("--source-dir", s.source_dir, "the project's source directory (for maps/)")
       ->check(CLI::ExistingDirectory)
       ->capture_default_str();
@@ -933,6 +1038,7 @@ int main(int argc, char** argv) {
       if (section == "doom") bench_doom(s);
     }
     if (!json.empty()) write_file_atomically(json, report.json());
+    if (!plots.empty()) write_plots(s, plots);
     return 0;
   });
 }

@@ -441,6 +441,21 @@ TEST_F(Tools, BenchWritesItsTablesAsJson) {
   EXPECT_NE(json.find("\"dda_ms_frame\": "), std::string::npos) << json;
 }
 
+TEST_F(Tools, BenchDrawsItsScalingTableAsCharts) {
+  std::string o;
+  ASSERT_EQ(test::run(tool("bench") + " scaling --sizes 100,300 --renderers bsp,reference --size 32x20 --repeat 1 "
+                          "--budget 0.01 --plots " + out("plots"), o), 0) << o;
+  for (const char* kind : {"rooms", "soup"}) {
+    const std::string svg = read_file_text(out(std::string("plots/scaling-") + kind + ".svg"));
+    EXPECT_NE(svg.find(std::string("ms/frame against map size: ") + kind), std::string::npos) << svg;
+    size_t lines = 0;
+    for (size_t at = 0; (at = svg.find("<polyline", at)) != std::string::npos; ++at) ++lines;
+    EXPECT_EQ(lines, 2u) << "a line per renderer";
+    EXPECT_NE(svg.find(">reference<"), std::string::npos) << svg;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out("plots/threads.svg"))) << "only the tables this run printed";
+}
+
 // Every program that opens a .map takes --textures-anywhere to let its pictures leave
 // the map's directory (tests/bad/outside_texture.map is refused without it).
 TEST_F(Tools, TexturesAnywhereIsAnExplicitChoice) {
