@@ -101,6 +101,10 @@ class Builder {
     out_.title = src_.title;
     out_.palette = src_.palette;
     out_.light_maps = src_.light_maps;
+    out_.textures.reserve(src_.textures.size() + src_.sprite_images.size());  // exact sizes: no growth slack
+    out_.sectors.reserve(src_.sectors.size());
+    out_.walls.reserve(src_.walls.size());
+    out_.things.reserve(src_.things.size());
     for (const map::Texture& t : src_.textures)
       out_.textures.push_back(level::make_texture(t.name, t.image.width, t.image.height, t.image.pixels.data(),
                                                   t.indices.empty() ? nullptr : t.indices.data()));

@@ -172,22 +172,24 @@ void write_payload(ByteWriter& out, const Level& level) {
   }
 }
 
-// An upper estimate of the encoded size, so the buffer is allocated once: texels, and
-// a generous bound for every other record.
-size_t encoded_size_bound(const Level& level) {
-  size_t bytes = 1 << 16;
-  for (const Texture& t : level.textures) bytes += t.name.size() + 16 + t.texels.size() * (level.paletted() ? 2 : 4);
-  if (level.grid) bytes += level.grid->solid.size() + level.grid->faces.size() * 4;
-  return bytes + level.palette.size() * 4 + level.light_maps.size() * 4 +
-         256 * (level.walls.size() + level.sectors.size() + level.nodes.size() + level.leaves.size() +
-                level.fragments.size() + level.things.size() + level.sprite_frames.size());
+// The encoded size, near enough that the buffer is allocated once: the records' sizes
+// as write_payload writes them, their names, and the texels.
+size_t encoded_size_estimate(const Level& level) {
+  size_t bytes = 4096 + level.title.size() + (level.palette.size() + level.light_maps.size()) * 4;
+  for (const Texture& t : level.textures) bytes += 16 + t.name.size() + t.texels.size() * (level.paletted() ? 2 : 4);
+  for (const Sector& s : level.sectors) bytes += 48 + s.name.size();
+  for (const SpriteFrame& f : level.sprite_frames) bytes += 64 + f.name.size();
+  bytes += 12 * level.sprite_images.size() + 216 * level.walls.size() + 28 * level.fragments.size() +
+           52 * level.nodes.size() + 4 * level.leaves.size() + 40 * level.things.size();
+  if (level.grid) bytes += 24 + level.grid->solid.size() + level.grid->faces.size() * 4;
+  return bytes;
 }
 
 }  // namespace
 
 std::vector<uint8_t> encode(const Level& level) {
   ByteWriter out;
-  out.reserve(encoded_size_bound(level));
+  out.reserve(encoded_size_estimate(level));
   out.raw(std::span(reinterpret_cast<const uint8_t*>(format::kMagic), 8));
   out.u32(format::kVersion);
   out.u32(0);

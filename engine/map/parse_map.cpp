@@ -15,25 +15,45 @@ namespace {
 
 class Parser {
  public:
-  Parser(const std::filesystem::path& path, const LoadOptions& options) : options_(options) { source_.path = path; }
+  Parser(const std::filesystem::path& path, const LoadOptions& options) : options_(options), file_(path.string()) {
+    source_.path = path;
+  }
 
   Source run(const std::string& text) {
+    const std::vector<std::string_view> lines = detail::split_lines(text);
+    reserve(lines);
     int line_number = 0;
-    for (const std::string_view line : detail::split_lines(text)) {
+    for (const std::string_view line : lines) {
       ++line_number;
       if (line.find('\0') != std::string_view::npos)
-        throw Error(FileLoc{source_.path.string(), line_number}, "binary data in a text map");
+        throw Error(FileLoc{file_, line_number}, "binary data in a text map");
       auto words = split_words(line);
-      if (!words.empty()) statement(Statement({source_.path.string(), line_number}, std::move(words)));
+      if (!words.empty()) statement(Statement({file_, line_number}, std::move(words)));
     }
-    if (!have_player_) throw Error(FileLoc{source_.path.string(), 0}, "no player start (add 'player X Y ANGLE')");
-    if (source_.walls.empty()) throw Error(FileLoc{source_.path.string(), 0}, "the map has no walls");
+    if (!have_player_) throw Error(FileLoc{file_, 0}, "no player start (add 'player X Y ANGLE')");
+    if (source_.walls.empty()) throw Error(FileLoc{file_, 0}, "the map has no walls");
     if (source_.sectors.empty() && source_.default_sector == kNone) add_builtin_default_sector();
     sprites_.assign(source_);
     return std::move(source_);
   }
 
  private:
+  // Room for the records the lines announce, so that a big map's vectors and indices
+  // are allocated once rather than grown (a rough count is enough: it is only room).
+  void reserve(const std::vector<std::string_view>& lines) {
+    size_t walls = 0, vertices = 0, sectors = 0;
+    for (const std::string_view line : lines) {
+      walls += line.starts_with("wall ");
+      vertices += line.starts_with("vertex ");
+      sectors += line.starts_with("sector ");
+    }
+    source_.walls.reserve(walls);
+    source_.vertices.reserve(vertices);
+    vertex_index_.reserve(vertices);
+    source_.sectors.reserve(sectors + 1);
+    sector_index_.reserve(sectors + 1);
+  }
+
   void statement(Statement s) {
     const std::string_view k = s.keyword();
     if (k == "title") return title(s);
@@ -230,6 +250,7 @@ class Parser {
   }
 
   LoadOptions options_;
+  std::string file_;  // the path as messages name it, made once rather than per line
   Source source_;
   detail::Sprites sprites_;
   bool have_player_ = false;

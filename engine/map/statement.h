@@ -2,8 +2,10 @@
 // arguments, key=value options consumed exactly once, numbers with located errors.
 #pragma once
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -26,9 +28,10 @@ class Statement {
         if (!options_.empty()) fail("positional argument '" + std::string(words[i]) + "' after key=value options");
         args_.push_back(words[i]);
       } else {
-        const std::string key(words[i].substr(0, eq));
+        const std::string_view key = words[i].substr(0, eq);
         if (key.empty()) fail("missing key before '=' in '" + std::string(words[i]) + "'");
-        if (!options_.emplace(key, words[i].substr(eq + 1)).second) fail("option '" + key + "' given twice");
+        if (find(key) != options_.end()) fail("option '" + std::string(key) + "' given twice");
+        options_.emplace_back(key, words[i].substr(eq + 1));
       }
     }
   }
@@ -90,27 +93,33 @@ class Statement {
   }
 
   // Options: each must be consumed exactly once; leftovers are reported as unknown.
-  std::optional<std::string_view> take(const std::string& key) {
-    auto it = options_.find(key);
+  std::optional<std::string_view> take(std::string_view key) {
+    const auto it = find(key);
     if (it == options_.end()) return std::nullopt;
-    std::string_view v = it->second;
+    const std::string_view v = it->second;
     options_.erase(it);
     return v;
   }
-  std::string_view require(const std::string& key) {
+  std::string_view require(std::string_view key) {
     auto v = take(key);
-    if (!v) fail(std::string(keyword_) + ": missing option " + key + "=");
+    if (!v) fail(std::string(keyword_) + ": missing option " + std::string(key) + "=");
     return *v;
   }
-  void finish() const {
-    if (!options_.empty()) fail(std::string(keyword_) + ": unknown option '" + options_.begin()->first + "'");
+  void finish() const {  // the first unknown option in name order: the same message whatever the order given
+    if (!options_.empty())
+      fail(std::string(keyword_) + ": unknown option '" + std::string(std::min_element(options_.begin(), options_.end())->first) +
+           "'");
   }
 
  private:
   FileLoc loc_;
   std::string_view keyword_;
   std::vector<std::string_view> args_;
-  std::map<std::string, std::string_view> options_;  // ordered: deterministic messages
+  using Options = std::vector<std::pair<std::string_view, std::string_view>>;  // a few per line: searched in turn
+  Options::iterator find(std::string_view key) {
+    return std::find_if(options_.begin(), options_.end(), [&](const auto& o) { return o.first == key; });
+  }
+  Options options_;
 };
 
 // A text map's lines: LF, CRLF and old Mac CR-only line ends alike, a leading UTF-8 byte
@@ -119,9 +128,12 @@ inline std::vector<std::string_view> split_lines(std::string_view text) {
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
   std::vector<std::string_view> lines;
   size_t pos = 0;
-  for (;;) {
-    const size_t end = text.find_first_of("\r\n", pos);
-    if (end == std::string_view::npos) {
+  for (;;) {  // memchr for the next LF, then for a CR before it (rare: CRLF or CR-only files)
+    const char* lf = static_cast<const char*>(std::memchr(text.data() + pos, '\n', text.size() - pos));
+    const size_t newline = lf ? size_t(lf - text.data()) : text.size();
+    const char* cr = static_cast<const char*>(std::memchr(text.data() + pos, '\r', newline - pos));
+    const size_t end = cr ? size_t(cr - text.data()) : newline;
+    if (end == text.size()) {
       lines.push_back(text.substr(pos));
       return lines;
     }

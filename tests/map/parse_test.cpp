@@ -197,6 +197,8 @@ TEST_F(ParseTest, BadInputGivesLocatedMessages) {
       {"unknown texture", base + "segment v0 v4 texture=nope\n" + walls, "DIR/test.map:14: unknown texture 'nope'"},
       {"unknown option", base + "wall v0 v5 front=a middle=wall colour=red\n" + walls,
        "DIR/test.map:14: wall: unknown option 'colour'"},
+      {"unknown options, first by name", base + "wall v0 v5 zebra=1 front=a middle=wall colour=red\n" + walls,
+       "DIR/test.map:14: wall: unknown option 'colour'"},
       {"missing option", base + "sector c floor=0 ceiling=1 floor_tex=flat\n" + walls,
        "DIR/test.map:14: sector: missing option ceiling_tex="},
       {"repeated option", base + "segment v0 v4 texture=wall texture=wall\n" + walls,
