@@ -3,7 +3,9 @@
 //   scaling     compile time and frame time as generated maps grow from 1k to 1M walls
 //   grids       grid ray casting against open distance: mazes and open arenas
 //   strategies  tree size, depth, build time and frame time per BSP strategy
-// Timings are wall-clock medians on one thread; compare ratios within one run.
+//   hostile, capture, threads, wad, doom: see main's help and the README
+// Timings are wall-clock medians; compare ratios within one run. --json writes the
+// tables as JSON, --plots draws the scaling, threads and doom tables as SVG charts.
 #include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
