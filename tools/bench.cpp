@@ -560,6 +560,24 @@ double geomean(const std::vector<double>& v) {
   return v.empty() ? 0 : std::exp(log_sum / double(v.size()));
 }
 
+// The bsp renderer's ms/frame on the cameras at w x h, on one thread and on `cores`, interleaved frame
+// by frame so that the machine's noise falls on both alike; medians.
+std::pair<double, double> time_threads(const level::Level& level, const level::State& state,
+                                       const std::vector<render::Camera>& cameras, int w, int h, int cores, int repeat) {
+  auto one = render::make_renderer("bsp", {.threads = 1});
+  auto all = render::make_renderer("bsp", {.threads = cores});
+  render::Frame frame(w, h);
+  std::vector<double> ms1, msn;
+  for (int pass = 0; pass < 1 + repeat; ++pass)
+    for (const render::Camera& camera : cameras)
+      for (auto [r, out] : {std::pair{one.get(), &ms1}, std::pair{all.get(), &msn}}) {
+        const auto t0 = Clock::now();
+        r->render(level, state, camera, frame);
+        if (pass > 0) out->push_back(cli::seconds_since(t0) * 1000);  // pass 0 warms up
+      }
+  return {median(ms1), median(msn)};
+}
+
 void bench_wad(const Settings& s) {
   const bsp::LevelSource source = cli::level_source(s.wads);
   const wad::Stack wads = bsp::read_wads(source.wads);
@@ -570,11 +588,13 @@ void bench_wad(const Settings& s) {
   const std::string mapc = (own_directory() / "mapc").string();
   report.print("\n### %s: every map compiled (whole process, median of %d) beside ZDBSP, and rendered\n\n",
               source.wads.back().filename().c_str(), s.runs);
+  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
   report.print("| map | lines | mapc ms | zdbsp ms | mapc / zdbsp | segs (2-sided x2) | zdbsp segs | segs / zdbsp | "
-              "depth | zdbsp depth | bsp ms/frame %dx%d | fps | sprites / frame | without things ms | with / without |\n",
-              s.width, s.height);
-  report.print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  std::vector<double> time_ratios, seg_ratios, frame_ms, sprite_ratios;
+              "depth | zdbsp depth | bsp ms/frame %dx%d | fps | sprites / frame | without things ms | with / without | "
+              "%d threads ms | 1920x1080, %d threads ms |\n",
+              s.width, s.height, cores, cores);
+  report.print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  std::vector<double> time_ratios, seg_ratios, frame_ms, sprite_ratios, threads_ms, hd_ms;
   for (const std::string& map : maps) {
     bsp::Stats stats;
     const level::Level level = bsp::build_wad_map(wads, map, {}, nullptr, &stats);
@@ -599,19 +619,24 @@ void bench_wad(const Settings& s) {
     const SpriteCost t = time_sprites(level, cameras, s.skill, s);
     frame_ms.push_back(t.with_things_ms);
     sprite_ratios.push_back(t.ratio);
+    const level::State state = level::start_state(level, s.skill);  // things drawn, as t.with_things_ms
+    threads_ms.push_back(time_threads(level, state, cameras, s.width, s.height, cores, s.repeat).second);
+    hd_ms.push_back(time_threads(level, state, cameras, 1920, 1080, cores, s.repeat).second);
     if (zdbsp) time_ratios.push_back(ours_ms / peer_ms), seg_ratios.push_back(double(segs) / double(tree.segs));
-    report.print("| %s | %zu | %s | %s | %s | %zu | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", map.c_str(),
+    report.print("| %s | %zu | %s | %s | %s | %zu | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", map.c_str(),
                 stats.walls, fixed(ours_ms, 1).c_str(), zdbsp ? fixed(peer_ms, 1).c_str() : "n/a",
                 zdbsp ? fixed(ours_ms / peer_ms, 2).c_str() : "n/a", segs, zdbsp ? std::to_string(tree.segs).c_str() : "n/a",
                 zdbsp ? fixed(double(segs) / double(tree.segs), 3).c_str() : "n/a", fixed(stats.mean_depth, 1).c_str(),
                 zdbsp ? fixed(tree.mean_depth, 1).c_str() : "n/a", fixed(t.with_things_ms, 3).c_str(),
                 fixed(1000 / t.with_things_ms, 0).c_str(), fixed(t.sprites, 1).c_str(),
-                fixed(t.without_things_ms, 3).c_str(), fixed(t.ratio, 2).c_str());
+                fixed(t.without_things_ms, 3).c_str(), fixed(t.ratio, 2).c_str(), fixed(threads_ms.back(), 3).c_str(),
+                fixed(hd_ms.back(), 3).c_str());
     std::fflush(stdout);
   }
-  report.print("| geomean | | | | %s | | | %s | | | %s | | | | %s |\n",
+  report.print("| geomean | | | | %s | | | %s | | | %s | | | | %s | %s | %s |\n",
               zdbsp ? fixed(geomean(time_ratios), 2).c_str() : "n/a", zdbsp ? fixed(geomean(seg_ratios), 3).c_str() : "n/a",
-              fixed(geomean(frame_ms), 3).c_str(), fixed(geomean(sprite_ratios), 2).c_str());
+              fixed(geomean(frame_ms), 3).c_str(), fixed(geomean(sprite_ratios), 2).c_str(),
+              fixed(geomean(threads_ms), 3).c_str(), fixed(geomean(hd_ms), 3).c_str());
   std::filesystem::remove_all(dir);
 }
 
@@ -692,27 +717,10 @@ void bench_hostile(const Settings& s) {
 
 // ---- threads ------------------------------------------------------------------
 
-// The BSP renderer's column strips on one thread and on every core, at 640x400 and
-// 1920x1080, on the outpost path and (when Freedoom is installed) random views of
-// freedoom2 MAP01 with its things; and what one dispatch to the pool costs.
-// The bsp renderer's ms/frame on the cameras at w x h, on one thread and on `cores`, interleaved frame
-// by frame so that the machine's noise falls on both alike; medians.
-std::pair<double, double> time_threads(const level::Level& level, const level::State& state,
-                                       const std::vector<render::Camera>& cameras, int w, int h, int cores, int repeat) {
-  auto one = render::make_renderer("bsp", {.threads = 1});
-  auto all = render::make_renderer("bsp", {.threads = cores});
-  render::Frame frame(w, h);
-  std::vector<double> ms1, msn;
-  for (int pass = 0; pass < 1 + repeat; ++pass)
-    for (const render::Camera& camera : cameras)
-      for (auto [r, out] : {std::pair{one.get(), &ms1}, std::pair{all.get(), &msn}}) {
-        const auto t0 = Clock::now();
-        r->render(level, state, camera, frame);
-        if (pass > 0) out->push_back(cli::seconds_since(t0) * 1000);  // pass 0 warms up
-      }
-  return {median(ms1), median(msn)};
-}
-
+// The BSP renderer's column strips on one thread and on every core, at four
+// resolutions from 320x200 to 1920x1080, on the outpost path and (when Freedoom is
+// installed) random views of freedoom2 MAP01 with its things; and what one dispatch to
+// the pool costs.
 void bench_threads(const Settings& s) {
   const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
   report.print("\n### Threads: the BSP renderer's column strips on %d core%s\n\n", cores, cores == 1 ? "" : "s");

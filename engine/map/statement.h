@@ -30,6 +30,8 @@ class Statement {
       } else {
         const std::string_view key = words[i].substr(0, eq);
         if (key.empty()) fail("missing key before '=' in '" + std::string(words[i]) + "'");
+        // No statement knows more than a few keys; a cap keeps the search below linear.
+        if (options_.size() == kMaxOptions) fail("more than " + std::to_string(kMaxOptions) + " key=value options");
         if (find(key) != options_.end()) fail("option '" + std::string(key) + "' given twice");
         options_.emplace_back(key, words[i].substr(eq + 1));
       }
@@ -115,6 +117,7 @@ class Statement {
   FileLoc loc_;
   std::string_view keyword_;
   std::vector<std::string_view> args_;
+  static constexpr size_t kMaxOptions = 64;
   using Options = std::vector<std::pair<std::string_view, std::string_view>>;  // a few per line: searched in turn
   Options::iterator find(std::string_view key) {
     return std::find_if(options_.begin(), options_.end(), [&](const auto& o) { return o.first == key; });

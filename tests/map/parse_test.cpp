@@ -197,6 +197,12 @@ TEST_F(ParseTest, BadInputGivesLocatedMessages) {
       {"unknown texture", base + "segment v0 v4 texture=nope\n" + walls, "DIR/test.map:14: unknown texture 'nope'"},
       {"unknown option", base + "wall v0 v5 front=a middle=wall colour=red\n" + walls,
        "DIR/test.map:14: wall: unknown option 'colour'"},
+      {"a hundred options", base + "wall v0 v5" + [] {
+         std::string options;
+         for (int i = 0; i < 100; ++i) options += " k" + std::to_string(i) + "=1";
+         return options;
+       }() + "\n" + walls,
+       "DIR/test.map:14: more than 64 key=value options"},
       {"unknown options, first by name", base + "wall v0 v5 zebra=1 front=a middle=wall colour=red\n" + walls,
        "DIR/test.map:14: wall: unknown option 'colour'"},
       {"missing option", base + "sector c floor=0 ceiling=1 floor_tex=flat\n" + walls,
