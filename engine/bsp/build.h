@@ -25,9 +25,12 @@ const char* strategy_name(Strategy s);
 struct Options {
   Strategy strategy = Strategy::kGreedy;
   uint64_t seed = 1;
-  int greedy_candidates = 8;     // k: candidate splitters sampled per cell
+  // The defaults: on the 68 Freedoom maps, 32 candidates and a split weight of 8 made
+  // 6.3% fewer fragments than 8 and 4 and leaves 0.05 shallower on average (fewer and
+  // shallower on generated rooms, soups and grids too), for 1.0-1.5x the build time.
+  int greedy_candidates = 32;    // k: candidate splitters sampled per cell
   int greedy_sample = 128;       // fragments scored per candidate (all of them in smaller cells)
-  double split_weight = 4;       // cost of one split
+  double split_weight = 8;       // cost of one split
   double balance_weight = 1;     // cost of one fragment of imbalance between the sides
   double sliver_weight = 64;     // cost of a split leaving a piece shorter than kSliverLength
   std::function<void(double fraction_done)> progress;  // called now and then during the build

@@ -154,10 +154,12 @@ TEST(Collision, FreedoomWalksWithSectorsMoving) {
         ASSERT_NE(level.sector_at(p.pos), level::kNone) << what << " tic " << t << ": in the void";
         ASSERT_GE(h.ceiling - p.z, kPlayerHeight - 1e-9) << what << " tic " << t << ": head in the ceiling";
         if (teleported) continue;
-        for (const level::Wall& wall : level.walls)
-          if (!wall.two_sided())
+        for (const level::Wall& wall : level.walls) {
+          if (!wall.two_sided()) {
             ASSERT_FALSE(path_crosses(before.pos, p.pos, wall.a, wall.b))
                 << what << " tic " << t << ": through the wall at (" << wall.a.x << "," << wall.a.y << ")";
+          }
+        }
       }
       EXPECT_GT(started, 0) << what;
       ++maps;

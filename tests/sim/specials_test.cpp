@@ -418,7 +418,9 @@ TEST(Demos, ReplayIsExactWithDoorsAndLifts) {
         ASSERT_EQ(p.z, first[t].first.z) << "tic " << t;
         ASSERT_EQ(heights, first[t].second) << "tic " << t;
       }
-      if (pass == 1) EXPECT_GT(moved, 0) << "something moved during the walk";
+      if (pass == 1) {
+        EXPECT_GT(moved, 0) << "something moved during the walk";
+      }
     }
   }
 }

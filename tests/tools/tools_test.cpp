@@ -460,7 +460,7 @@ TEST_F(Tools, BenchDrawsItsScalingTableAsCharts) {
 // the map's directory (tests/bad/outside_texture.map is refused without it).
 TEST_F(Tools, TexturesAnywhereIsAnExplicitChoice) {
   std::string o;
-  for (const std::string& program : {"mapc", "capture"})
+  for (const std::string program : {"mapc", "capture"})
     EXPECT_EQ(run_in_source(tool(program) + " tests/bad/outside_texture.map --textures-anywhere -o " + out("t." +
                                 (program == "mapc" ? std::string("bsp") : std::string("png"))), o), 0) << program << o;
   EXPECT_EQ(run_in_source(tool("capture") + " tests/bad/outside_texture.map -o " + out("u.png"), o), 1) << o;
@@ -471,7 +471,7 @@ TEST_F(Tools, TexturesAnywhereIsAnExplicitChoice) {
 TEST_F(Tools, NotANumberIsRefusedEverywhere) {
   std::string o;
   const std::string outpost = (test::source_dir() / "maps/outpost.map").string();
-  for (const std::string& option : {"--fov nan", "--relaxation nan", "--epsilon inf", "--eye nan", "--angle nan", "--fov -inf"}) {
+  for (const std::string option : {"--fov nan", "--relaxation nan", "--epsilon inf", "--eye nan", "--angle nan", "--fov -inf"}) {
     EXPECT_EQ(test::run(tool("capture") + " " + outpost + " " + option + " -o " + out("n.png"), o), 2) << option << o;
     EXPECT_NE(o.find(option.substr(0, option.find(' ')) + ": must be a finite number"), std::string::npos) << option << o;
     EXPECT_EQ(test::run(tool("compare") + " " + outpost + " " + option + " -o " + out("n.png"), o), 2) << option << o;
