@@ -256,7 +256,19 @@ class Builder {
       const uint32_t candidate = k == m ? frags[c] : frags[rng_.below(m)];
       const Line& l = lines_[pool_[candidate].wall];
       double front = 0, back = 0, splits = 0, slivers = 0;
-      for (uint32_t f : sample) {
+      bool beaten = false;
+      for (size_t i = 0; i < sample.size() && !beaten; ++i) {
+        // Stop once this candidate cannot beat the best (the same choice, sooner):
+        // splits and slivers only add, and the fragments left can close the imbalance
+        // by at most their number.
+        if (i % 16 == 0 && i > 0) {
+          const double left = double(sample.size() - i);
+          beaten = opt_.split_weight * splits + opt_.sliver_weight * slivers +
+                       opt_.balance_weight * std::max(0.0, std::fabs(front - back) - left) >=
+                   best_cost;
+          if (beaten) break;
+        }
+        const uint32_t f = sample[i];
         const int s0 = end_side(pool_[f], 0, l), s1 = end_side(pool_[f], 1, l);
         if (s0 == 0 && s1 == 0) continue;
         if (s0 <= 0 && s1 <= 0) {
@@ -268,6 +280,7 @@ class Builder {
           if (makes_sliver(pool_[f], l)) ++slivers;
         }
       }
+      if (beaten) continue;
       const double cost = opt_.split_weight * splits + opt_.balance_weight * std::fabs(front - back) +
                           opt_.sliver_weight * slivers;
       if (cost < best_cost) best_cost = cost, best = candidate;
