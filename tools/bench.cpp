@@ -1023,6 +1023,7 @@ int main(int argc, char** argv) {
   return cli::run(app, argc, argv, [&] {
     cli::parse_size(size_text, s.width, s.height);
     if (!json.empty()) cli::output_file(json, ".json", "--json");
+    if (!plots.empty()) cli::output_dir(plots);  // before the run, not after it
     for (const auto& r : s.renderers)
       if (!render::make_renderer(r)) throw CLI::ValidationError("--renderers", "unknown renderer '" + r + "'");
     if (sections.empty())
