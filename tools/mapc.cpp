@@ -135,11 +135,11 @@ int compile_one(Args& a, const bsp::LevelSource& source, Progress& progress) {
   a.options.progress = [&](double done) { progress.fraction(done); };
   bsp::Stats stats;
   std::vector<std::string> warnings;
-  const level::Level level = parsed ? bsp::build(*parsed, a.options, &stats)
+  const level::Level level = parsed ? bsp::build(std::move(*parsed), a.options, &stats)
                                     : bsp::build_wad_map(*wads, map_name, a.options, &warnings, &stats, import_options(a));
   const double build_seconds = cli::seconds_since(build_start);
   const std::string name = parsed ? source.file.string() : source.wads.back().filename().string() + ":" + map_name;
-  parsed.reset();  // its memory, before the encoded bytes take theirs
+  parsed.reset();  // what the build left of it (its sectors, textures, things)
   wads.reset();
   for (const std::string& w : warnings) std::fprintf(stderr, "%s\n", w.c_str());
   if (a.check) {

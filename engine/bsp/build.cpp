@@ -72,13 +72,29 @@ enum class Place { kFront, kBack, kOn, kSplit };
 
 class Builder {
  public:
-  Builder(const map::Source& src, const Options& opt) : src_(src), opt_(opt), rng_(opt.seed) {
-    for (const map::Wall& w : src.walls) lines_.push_back(Line::through(src.point(w.v1), src.point(w.v2)));
-  }
+  // A source given as `consumable` (the same object as src) loses its walls and
+  // vertices once the level holds them: a big map's two copies never coexist for long.
+  Builder(const map::Source& src, const Options& opt, map::Source* consumable)
+      : src_(src), consumable_(consumable), opt_(opt), rng_(opt.seed) {}
 
   level::Level run(Stats* stats) {
     copy_source();
-    std::vector<uint32_t> all(src_.walls.size());
+    root_box_ = vertex_box();
+    segments_only_ = std::all_of(out_.walls.begin(), out_.walls.end(), [](const level::Wall& w) { return w.segment(); });
+    if (consumable_) {
+      std::vector<map::Wall>().swap(consumable_->walls);
+      std::vector<map::Vertex>().swap(consumable_->vertices);
+    }
+    lines_.reserve(out_.walls.size());
+    for (const level::Wall& w : out_.walls) lines_.push_back(w.line());
+    std::vector<uint32_t> all(out_.walls.size());
+    // Room for a few splits, and for a node per fragment at most: a big map's vectors
+    // are not copied as they grow (for a moment, twice their size). Room never
+    // written is never given pages.
+    pool_.reserve(all.size() + all.size() / 8);
+    out_.fragments.reserve(pool_.capacity());
+    out_.nodes.reserve(pool_.capacity());
+    out_.leaves.reserve(pool_.capacity() + 1);
     for (uint32_t i = 0; i < all.size(); ++i) {
       all[i] = i;
       pool_.push_back({i, {level::kNone, level::kNone}, {0.0, 1.0}, {false, false}});
@@ -148,10 +164,13 @@ class Builder {
     if (src_.grid) out_.grid = level::Grid{src_.grid->cols, src_.grid->rows, src_.grid->cell, src_.grid->solid, src_.grid->faces};
   }
 
-  static level::Side side(const map::Side& s) {
+  level::Side side(const map::Side& s) const {
     level::Side out{s.sector, s.upper, s.middle, s.lower, s.x_offset, s.y_offset, {}, {}, s.light};
-    std::copy(std::begin(s.part_x), std::end(s.part_x), out.part_x);
-    std::copy(std::begin(s.part_y), std::end(s.part_y), out.part_y);
+    if (s.parts != map::kNone) {
+      const map::PartOffsets& parts = src_.part_offsets[size_t(s.parts)];
+      std::copy(std::begin(parts.x), std::end(parts.x), out.part_x);
+      std::copy(std::begin(parts.y), std::end(parts.y), out.part_y);
+    }
     return out;
   }
 
@@ -166,9 +185,14 @@ class Builder {
   }
 
   // ---- the tree ------------------------------------------------------------
-  void build_tree(std::vector<uint32_t> all) {
+  geom::BBox vertex_box() const {
     geom::BBox box;
     for (const map::Vertex& v : src_.vertices) box.add(geom::to_world(v.pos));
+    return box;
+  }
+
+  void build_tree(std::vector<uint32_t> all) {
+    geom::BBox box = root_box_;
     const double margin = 64 + 0.01 * std::max(box.max.x - box.min.x, box.max.y - box.min.y);
     box.min -= Vec2(margin);
     box.max += Vec2(margin);
@@ -296,8 +320,8 @@ class Builder {
   // ---- exact classification ------------------------------------------------
   int end_side(const Frag& f, int k, const Line& l) const {
     if (f.cut[k] == level::kNone) {
-      const map::Wall& w = src_.walls[f.wall];
-      return geom::side_of(l, src_.point(f.t[k] == 0 ? w.v1 : w.v2));
+      const Line& w = lines_[f.wall];
+      return geom::side_of(l, f.t[k] == 0 ? w.a : IPoint{w.a.x + w.d.x, w.a.y + w.d.y});
     }
     return geom::side_of_crossing(l, lines_[f.wall], lines_[f.cut[k]]);
   }
@@ -395,16 +419,16 @@ class Builder {
       const level::Node& node = out_.nodes[cell[i].node];
       for (uint32_t k = node.first_fragment; k < node.first_fragment + node.fragment_count; ++k) {
         const level::Fragment& f = out_.fragments[k];
-        const map::Wall& w = src_.walls[f.wall];
-        if (w.segment) continue;
-        const Vec2 a = geom::to_world(src_.point(w.v1)), e = geom::to_world(src_.point(w.v2)) - a;
+        const level::Wall& w = out_.walls[f.wall];
+        if (w.segment()) continue;
+        const Vec2 a = geom::to_world(w.p1), e = geom::to_world(w.p2) - a;
         const double t = glm::dot(mid - a, e) / glm::dot(e, e);
         const double eps = 1e-9 + 1e-7 / std::sqrt(glm::dot(e, e));
         if (t <= f.t0 + eps || t >= f.t1 - eps) continue;
         const Line& splitter = lines_[node.splitter];
         const bool same_direction = double(splitter.d.x) * e.x + double(splitter.d.y) * e.y > 0;
         const bool on_right_of_wall = cell[i].front == same_direction;
-        sector = on_right_of_wall ? w.front.sector : w.back.sector;
+        sector = w.sides[on_right_of_wall ? 0 : 1].sector;
         if (sector == level::kNone) sector = src_.default_sector;
         return true;
       }
@@ -415,10 +439,8 @@ class Builder {
   // Leaves bounded by no wall: the first wall a ray from inside meets tells the sector.
   // A map of plain segments has only its default sector: no ray needed.
   void resolve_leaves_by_ray_cast() {
-    const bool segments_only =
-        std::all_of(src_.walls.begin(), src_.walls.end(), [](const map::Wall& w) { return w.segment; });
     for (const auto& [leaf, inside] : unresolved_)
-      out_.leaves[leaf].sector = segments_only ? out_.default_sector : ray_cast_sector(inside);
+      out_.leaves[leaf].sector = segments_only_ ? out_.default_sector : ray_cast_sector(inside);
   }
 
   int32_t ray_cast_sector(Vec2 origin) const {
@@ -464,7 +486,7 @@ class Builder {
   }
 
   void fill_stats(Stats& s) const {
-    s.walls = src_.walls.size();
+    s.walls = out_.walls.size();
     s.fragments = out_.fragments.size();
     s.splits = s.fragments - s.walls;
     s.nodes = out_.nodes.size();
@@ -473,17 +495,18 @@ class Builder {
     s.max_depth = max_depth_;
     s.mean_depth = s.leaves ? double(leaf_depth_sum_) / s.leaves : 0;
     s.shortest_fragment = shortest_;
-    s.ray_cast_leaves = std::all_of(src_.walls.begin(), src_.walls.end(), [](const map::Wall& w) { return w.segment; })
-                            ? 0
-                            : unresolved_.size();
+    s.ray_cast_leaves = segments_only_ ? 0 : unresolved_.size();
   }
 
   const map::Source& src_;
+  map::Source* consumable_;
   const Options& opt_;
   Rng rng_;
   std::vector<Line> lines_;  // one per wall
   std::vector<Frag> pool_;
   level::Level out_;
+  geom::BBox root_box_;  // of the source's vertices
+  bool segments_only_ = false;
   std::vector<std::pair<int32_t, Vec2>> unresolved_;
   size_t placed_ = 0, pending_ = 0, next_progress_ = 65536;
   size_t free_splits_ = 0, max_depth_ = 0, leaf_depth_sum_ = 0;
@@ -494,7 +517,12 @@ class Builder {
 
 level::Level build(const map::Source& source, const Options& options, Stats* stats) {
   map::check_limits(source);
-  return Builder(source, options).run(stats);
+  return Builder(source, options, nullptr).run(stats);
+}
+
+level::Level build(map::Source&& source, const Options& options, Stats* stats) {
+  map::check_limits(source);
+  return Builder(source, options, &source).run(stats);
 }
 
 }  // namespace p3d::bsp

@@ -54,5 +54,8 @@ struct Stats {
 // Throws Error (located at the player statement) if the player starts outside every
 // sector and options.player_must_be_inside.
 level::Level build(const map::Source& source, const Options& options, Stats* stats = nullptr);
+// The same, freeing the source's walls and vertices as soon as the level holds them
+// (what is left of it is of no further use): a million-wall map's peak memory.
+level::Level build(map::Source&& source, const Options& options, Stats* stats = nullptr);
 
 }  // namespace p3d::bsp

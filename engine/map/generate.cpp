@@ -74,7 +74,7 @@ class SourceBuilder {
   int vertex(int64_t x, int64_t y) {  // map units
     const IPoint p{x << geom::kFracBits, y << geom::kFracBits};
     auto [it, added] = index_.try_emplace(key(p), static_cast<int>(src_.vertices.size()));
-    if (added) src_.vertices.push_back({indexed('v', src_.vertices.size()), p, {}});
+    if (added) src_.vertices.push_back({p});
     return it->second;
   }
   int sector(const std::string& name, double floor, double ceiling, int light, int floor_tex, int ceiling_tex) {

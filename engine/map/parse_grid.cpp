@@ -21,13 +21,15 @@ bool is_empty_tile(char c) { return c == '.' || c == ' ' || is_marker(c); }
 
 class GridParser {
  public:
-  GridParser(const std::filesystem::path& path, const LoadOptions& options) : options_(options) { src_.path = path; }
+  GridParser(const std::filesystem::path& path, const LoadOptions& options) : options_(options), file_(path.string(), 0) {
+    src_.path = path;
+  }
 
   Source run(const std::string& text) {
     const std::vector<std::string_view> lines = detail::split_lines(text);
     size_t i = 0;
     for (; i < lines.size(); ++i) {
-      const FileLoc loc{src_.path.string(), int(i) + 1};
+      const FileLoc loc = file_.at(int(i) + 1);
       if (lines[i].find('\0') != std::string_view::npos) throw Error(loc, "binary data in a text map");
       auto words = detail::split_words(lines[i]);
       if (words.empty()) continue;
@@ -110,16 +112,16 @@ class GridParser {
       if (row == "end") break;
       rows.push_back({row, int(i) + 1});
     }
-    if (i == lines.size()) throw Error(FileLoc{src_.path.string(), map_line_}, "map rows are not closed by a line 'end'");
-    if (rows.empty()) throw Error(FileLoc{src_.path.string(), map_line_}, "the map has no rows");
+    if (i == lines.size()) throw Error(file_.at(map_line_), "map rows are not closed by a line 'end'");
+    if (rows.empty()) throw Error(file_.at(map_line_), "the map has no rows");
     cols_ = int(rows.front().first.size());
     rows_ = int(rows.size());
-    if (cols_ == 0) throw Error(FileLoc{src_.path.string(), rows.front().second}, "the first row is empty");
+    if (cols_ == 0) throw Error(file_.at(rows.front().second), "the first row is empty");
     if (cols_ > kMaxGridSide || rows_ > kMaxGridSide)
-      throw Error(FileLoc{src_.path.string(), map_line_}, "the grid is larger than " + std::to_string(kMaxGridSide) + "x" +
+      throw Error(file_.at(map_line_), "the grid is larger than " + std::to_string(kMaxGridSide) + "x" +
                                                            std::to_string(kMaxGridSide));
     if (double(std::max(cols_, rows_)) * cell_ > geom::kMaxCoord)
-      throw Error(FileLoc{src_.path.string(), map_line_}, "the grid does not fit in the coordinate range");
+      throw Error(file_.at(map_line_), "the grid does not fit in the coordinate range");
     tiles_.assign(size_t(cols_) * rows_, '.');
     row_lines_.resize(rows_);
     for (int k = 0; k < rows_; ++k) {
@@ -127,18 +129,18 @@ class GridParser {
       const int r = rows_ - 1 - k;  // row 0 is the south
       row_lines_[r] = line;
       if (int(text.size()) != cols_)
-        throw Error(FileLoc{src_.path.string(), line}, "row has " + std::to_string(text.size()) + " tiles, expected " +
+        throw Error(file_.at(line), "row has " + std::to_string(text.size()) + " tiles, expected " +
                                                         std::to_string(cols_));
       for (int c = 0; c < cols_; ++c) {
         const char t = text[c];
         if (!is_empty_tile(t) && !legend_.count(t))
-          throw Error(FileLoc{src_.path.string(), line},
+          throw Error(file_.at(line),
                       "unknown tile '" + std::string(1, t) + "' in column " + std::to_string(c + 1) +
                           " (add 'tile " + std::string(1, t) + " TEXTURE')");
         if (is_marker(t)) {
-          if (have_player_) throw Error(FileLoc{src_.path.string(), line}, "a second player marker");
+          if (have_player_) throw Error(file_.at(line), "a second player marker");
           have_player_ = true;
-          src_.player = {{(c + 0.5) * cell_, (r + 0.5) * cell_}, marker_angle(t), FileLoc{src_.path.string(), line}};
+          src_.player = {{(c + 0.5) * cell_, (r + 0.5) * cell_}, marker_angle(t), file_.at(line)};
         }
         tiles_[size_t(r) * cols_ + c] = t;
       }
@@ -147,13 +149,12 @@ class GridParser {
   }
 
   void finish() {
-    const FileLoc file{src_.path.string(), 0};
-    if (tiles_.empty()) throw Error(file, "no map rows (add 'map', the rows, then 'end')");
-    if (!have_player_) throw Error(file, "no player marker (> ^ < or v) in the map rows");
-    if (floor_.texture == kNone) throw Error(file, "no floor (add 'floor HEIGHT TEXTURE')");
-    if (ceiling_.texture == kNone) throw Error(file, "no ceiling (add 'ceiling HEIGHT TEXTURE')");
-    if (legend_.empty()) throw Error(file, "no tiles (add 'tile CHARACTER TEXTURE')");
-    if (ceiling_.height < floor_.height) throw Error(FileLoc{src_.path.string(), ceiling_.line}, "ceiling is below the floor");
+    if (tiles_.empty()) throw Error(file_, "no map rows (add 'map', the rows, then 'end')");
+    if (!have_player_) throw Error(file_, "no player marker (> ^ < or v) in the map rows");
+    if (floor_.texture == kNone) throw Error(file_, "no floor (add 'floor HEIGHT TEXTURE')");
+    if (ceiling_.texture == kNone) throw Error(file_, "no ceiling (add 'ceiling HEIGHT TEXTURE')");
+    if (legend_.empty()) throw Error(file_, "no tiles (add 'tile CHARACTER TEXTURE')");
+    if (ceiling_.height < floor_.height) throw Error(file_.at(ceiling_.line), "ceiling is below the floor");
     sprites_.assign(src_);
 
     Sector sector;
@@ -163,7 +164,7 @@ class GridParser {
     sector.light = light_;
     sector.floor_texture = floor_.texture;
     sector.ceiling_texture = ceiling_.texture;
-    sector.loc = FileLoc{src_.path.string(), floor_.line};
+    sector.loc = file_.at(floor_.line);
     src_.sectors.push_back(sector);
 
     GridInfo grid;
@@ -177,7 +178,8 @@ class GridParser {
       if (grid.solid[i]) tile_texture[i] = legend_.at(tiles_[i]);
     }
     grid_to_walls(src_, grid, tile_texture, legend_.begin()->second, 0);
-    for (Wall& w : src_.walls) w.loc = FileLoc{src_.path.string(), map_line_};
+    const FileLoc rows = file_.at(map_line_);
+    for (Wall& w : src_.walls) w.loc = rows;
   }
 
   int texture_ref(const Statement& s, std::string_view name) const {
@@ -194,6 +196,7 @@ class GridParser {
 
   Source src_;
   LoadOptions options_;
+  FileLoc file_;  // the path as messages name it, shared by every record
   detail::Sprites sprites_;
   std::unordered_map<std::string, int> textures_;
   std::map<char, int> legend_;  // ordered: the first tile textures the border
@@ -219,7 +222,7 @@ void grid_to_walls(Source& src, const GridInfo& g, const std::vector<int>& tile_
       int64_t x = 0, y = 0;
       geom::to_fixed(gx * grid.cell, x);
       geom::to_fixed(gy * grid.cell, y);
-      src.vertices.push_back({"g" + std::to_string(gx) + "_" + std::to_string(gy), {x, y}, {}});
+      src.vertices.push_back({{x, y}});
     }
     return it->second;
   };

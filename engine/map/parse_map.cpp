@@ -15,7 +15,7 @@ namespace {
 
 class Parser {
  public:
-  Parser(const std::filesystem::path& path, const LoadOptions& options) : options_(options), file_(path.string()) {
+  Parser(const std::filesystem::path& path, const LoadOptions& options) : options_(options), file_(path.string(), 0) {
     source_.path = path;
   }
 
@@ -26,12 +26,12 @@ class Parser {
     for (const std::string_view line : lines) {
       ++line_number;
       if (line.find('\0') != std::string_view::npos)
-        throw Error(FileLoc{file_, line_number}, "binary data in a text map");
+        throw Error(file_.at(line_number), "binary data in a text map");
       auto words = split_words(line);
-      if (!words.empty()) statement(Statement({file_, line_number}, std::move(words)));
+      if (!words.empty()) statement(Statement(file_.at(line_number), std::move(words)));
     }
-    if (!have_player_) throw Error(FileLoc{file_, 0}, "no player start (add 'player X Y ANGLE')");
-    if (source_.walls.empty()) throw Error(FileLoc{file_, 0}, "the map has no walls");
+    if (!have_player_) throw Error(file_, "no player start (add 'player X Y ANGLE')");
+    if (source_.walls.empty()) throw Error(file_, "the map has no walls");
     if (source_.sectors.empty() && source_.default_sector == kNone) add_builtin_default_sector();
     sprites_.assign(source_);
     return std::move(source_);
@@ -96,9 +96,9 @@ class Parser {
     s.expect_args(3, "vertex NAME X Y");
     s.finish();
     const std::string name = s.name(0, "vertex");
-    if (vertex_index_.count(name)) s.fail("vertex '" + name + "' is defined twice");
-    vertex_index_[name] = static_cast<int>(source_.vertices.size());
-    source_.vertices.push_back({name, {s.coordinate(s.arg(1), "x"), s.coordinate(s.arg(2), "y")}, s.loc()});
+    if (!vertex_index_.try_emplace(name, static_cast<int>(source_.vertices.size())).second)
+      s.fail("vertex '" + name + "' is defined twice");
+    source_.vertices.push_back({{s.coordinate(s.arg(1), "x"), s.coordinate(s.arg(2), "y")}});
   }
 
   void sector(Statement& s, bool is_default) {
@@ -250,7 +250,7 @@ class Parser {
   }
 
   LoadOptions options_;
-  std::string file_;  // the path as messages name it, made once rather than per line
+  FileLoc file_;  // the path as messages name it, made once and shared by every record
   Source source_;
   detail::Sprites sprites_;
   bool have_player_ = false;

@@ -304,8 +304,9 @@ void check_limits(const Source& src) {
   for (const Wall& w : src.walls)
     for (const Side& side : {w.front, w.back}) {
       bool offsets_fit = std::fabs(side.x_offset) <= limits::kMaxOffset && std::fabs(side.y_offset) <= limits::kMaxOffset;
+      const PartOffsets parts = src.parts(side);
       for (int k = 0; k < 3; ++k)
-        offsets_fit = offsets_fit && std::fabs(side.part_x[k]) <= limits::kMaxOffset && std::fabs(side.part_y[k]) <= limits::kMaxOffset;
+        offsets_fit = offsets_fit && std::fabs(parts.x[k]) <= limits::kMaxOffset && std::fabs(parts.y[k]) <= limits::kMaxOffset;
       fail_if(!offsets_fit, w.loc, "a texture offset");
       fail_if(side.light != kNone && (side.light < 0 || side.light > 255), w.loc, "a wall's light level");
     }

@@ -2,16 +2,34 @@
 // thrown at the edges (parsers, loaders) and caught once in each main.
 #pragma once
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 
 namespace p3d {
 
+// Where something was read: a file (or a WAD record) and a line. Every record of a
+// parsed map carries one, so the name is shared, not copied: a million walls would
+// otherwise hold a million copies of the path.
 struct FileLoc {
-  std::string file;
   int line = 0;  // 1-based; 0 means "the whole file"
 
-  std::string str() const { return line > 0 ? file + ":" + std::to_string(line) : file; }
+  FileLoc() = default;
+  FileLoc(std::string file, int line_number = 0) : line(line_number), file_(std::make_shared<const std::string>(std::move(file))) {}
+  // The same file at another line.
+  FileLoc at(int other_line) const {
+    FileLoc loc = *this;
+    loc.line = other_line;
+    return loc;
+  }
+  const std::string& file() const {
+    static const std::string none;
+    return file_ ? *file_ : none;
+  }
+  std::string str() const { return line > 0 ? file() + ":" + std::to_string(line) : file(); }
+
+ private:
+  std::shared_ptr<const std::string> file_;
 };
 
 // A message safe to print: control bytes (NUL, CR, escape sequences...) as \xNN and a

@@ -184,12 +184,11 @@ class Importer {
     for (size_t i = 0; i < data_.vertices.size(); ++i) {
       const MapVertex& m = data_.vertices[i];
       map::Vertex v;
-      v.name = std::to_string(i);
-      v.loc = FileLoc{data_.where + ": VERTEXES #" + std::to_string(i), 0};
       if (!geom::to_fixed(m.x, v.pos.x) || !geom::to_fixed(m.y, v.pos.y))
-        throw Error(v.loc, "coordinates (" + number(m.x) + ", " + number(m.y) + ") are outside +-" +
-                               std::to_string(int64_t(geom::kMaxCoord)));
-      src_.vertices.push_back(std::move(v));
+        throw Error(FileLoc{data_.where + ": VERTEXES #" + std::to_string(i), 0},
+                    "coordinates (" + number(m.x) + ", " + number(m.y) + ") are outside +-" +
+                        std::to_string(int64_t(geom::kMaxCoord)));
+      src_.vertices.push_back(v);
     }
   }
 
@@ -216,8 +215,13 @@ class Importer {
     s.lower = wall_texture(m.lower, record);
     s.x_offset = m.x_offset;
     s.y_offset = m.y_offset;
-    std::copy(std::begin(m.part_x), std::end(m.part_x), s.part_x);
-    std::copy(std::begin(m.part_y), std::end(m.part_y), s.part_y);
+    const auto nonzero = [](const double(&v)[3]) { return std::any_of(std::begin(v), std::end(v), [](double d) { return d != 0; }); };
+    if (nonzero(m.part_x) || nonzero(m.part_y)) {
+      s.parts = int(src_.part_offsets.size());
+      map::PartOffsets& parts = src_.part_offsets.emplace_back();
+      std::copy(std::begin(m.part_x), std::end(m.part_x), parts.x);
+      std::copy(std::begin(m.part_y), std::end(m.part_y), parts.y);
+    }
     if (m.light_absolute || m.light != 0)
       s.light = std::clamp(m.light_absolute ? m.light : data_.sectors[size_t(m.sector)].light + m.light, 0, kMaxLight);
     return s;

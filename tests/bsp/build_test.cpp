@@ -78,8 +78,8 @@ map::Source needle_soup(int count, uint64_t seed) {
     if (!clear) continue;
     placed.push_back({a, b});
     const int v = int(src.vertices.size());
-    src.vertices.push_back({"a", a, {}});
-    src.vertices.push_back({"b", b, {}});
+    src.vertices.push_back({a});
+    src.vertices.push_back({b});
     map::Wall w;
     w.v1 = v, w.v2 = v + 1, w.segment = true;
     w.front.middle = w.back.middle = 0;
@@ -106,8 +106,8 @@ TEST(Build, CollinearWallsShareTheNodeOfTheirLine) {
   src.vertices.clear();
   auto add = [&](double ax, double ay, double bx, double by) {
     const int v = int(src.vertices.size());
-    src.vertices.push_back({"a", {int64_t(ax * 256), int64_t(ay * 256)}, {}});
-    src.vertices.push_back({"b", {int64_t(bx * 256), int64_t(by * 256)}, {}});
+    src.vertices.push_back({{int64_t(ax * 256), int64_t(ay * 256)}});
+    src.vertices.push_back({{int64_t(bx * 256), int64_t(by * 256)}});
     map::Wall w;
     w.v1 = v, w.v2 = v + 1, w.segment = true;
     w.front.middle = w.back.middle = 0;

@@ -73,8 +73,10 @@ TEST(LevelRoundTrip, WhatCompilesIsReadBack) {
   for (map::Side* side : {&edge.walls[0].front, &edge.walls[1].front}) {
     side->x_offset = limits::kMaxOffset;
     side->y_offset = -limits::kMaxOffset;
-    for (double& v : side->part_x) v = -limits::kMaxOffset;
-    for (double& v : side->part_y) v = limits::kMaxOffset;
+    side->parts = int(edge.part_offsets.size());
+    map::PartOffsets& parts = edge.part_offsets.emplace_back();
+    for (double& v : parts.x) v = -limits::kMaxOffset;
+    for (double& v : parts.y) v = limits::kMaxOffset;
   }
   map::validate(edge);
   sources.push_back(edge);
@@ -98,6 +100,11 @@ TEST(LevelRoundTrip, WhatCompilesIsReadBack) {
   EXPECT_NE(refused([](map::Source& s) { s.sectors[0].name = std::string(limits::kMaxNameLength + 1, 's'); }), "(compiled)");
   EXPECT_NE(refused([](map::Source& s) { s.textures[0].name = std::string(limits::kMaxNameLength + 1, 'x'); }), "(compiled)");
   EXPECT_NE(refused([](map::Source& s) { s.walls[0].front.x_offset = limits::kMaxOffset * 2; }), "(compiled)");
+  EXPECT_NE(refused([](map::Source& s) {
+              s.walls[0].front.parts = int(s.part_offsets.size());
+              s.part_offsets.push_back({{0, 0, limits::kMaxOffset * 2}, {0, 0, 0}});
+            }),
+            "(compiled)");
   EXPECT_NE(refused([](map::Source& s) { s.sectors[1].ceiling = geom::kMaxCoord * 2; }), "(compiled)");
 }
 

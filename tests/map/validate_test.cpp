@@ -10,7 +10,7 @@ namespace p3d::map {
 namespace {
 
 int add_vertex(Source& s, geom::IPoint p) {
-  s.vertices.push_back({"v" + std::to_string(s.vertices.size()), p, {}});
+  s.vertices.push_back({p});
   return int(s.vertices.size()) - 1;
 }
 void add_segment(Source& s, int a, int b) {

@@ -58,7 +58,7 @@ map::Source room_with_wall() {
   src.sectors[0].floor = 0, src.sectors[0].ceiling = 256, src.sectors[0].light = 255;
   src.things.clear();
   auto v = [&](double x, double y) {
-    src.vertices.push_back({std::to_string(src.vertices.size()), {int64_t(x * 256), int64_t(y * 256)}, {}});
+    src.vertices.push_back({{int64_t(x * 256), int64_t(y * 256)}});
     return int(src.vertices.size()) - 1;
   };
   const int a = v(0, 0), b = v(0, 512), c = v(512, 512), d = v(512, 0);

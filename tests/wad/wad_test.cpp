@@ -89,8 +89,11 @@ TEST(Picture, RoundTripsWithHolesAndRejectsBadOffsets) {
   EXPECT_EQ(back.width, 5);
   EXPECT_EQ(back.top_offset, -3);
   EXPECT_EQ(back.opaque, img.opaque);
-  for (size_t p = 0; p < img.indices.size(); ++p)
-    if (img.opaque[p]) EXPECT_EQ(back.indices[p], img.indices[p]);
+  for (size_t p = 0; p < img.indices.size(); ++p) {
+    if (img.opaque[p]) {
+      EXPECT_EQ(back.indices[p], img.indices[p]);
+    }
+  }
 
   std::vector<uint8_t> bad(bytes);
   put32(bad, 8 + 4, 5000);  // column 1 starts past the end
