@@ -154,7 +154,7 @@ int compile_one(Args& a, const bsp::LevelSource& source, Progress& progress) {
   }
   progress.phase("writing");
   Outputs outputs;  // all or nothing
-  outputs.add(a.output, level::encode(level));
+  outputs.add(a.output, [&](OutputFile& file) { level::encode(level, file); });
   if (!a.svg.empty()) outputs.add(a.svg, tools::overview_svg(level, view));
   const Stats times = time_fields(parse_seconds, build_seconds);
   if (!a.json.empty())

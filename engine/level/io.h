@@ -8,10 +8,14 @@
 #include <vector>
 
 #include "engine/level/level.h"
+#include "engine/util/file.h"
 
 namespace p3d::level {
 
 std::vector<uint8_t> encode(const Level& level);
+// The same bytes written to a file as they are made: the encoding is never whole in
+// memory (216 bytes a wall: 216 MB for a million walls).
+void encode(const Level& level, OutputFile& file);
 void write(const Level& level, const std::filesystem::path& path);  // atomic
 
 // Throws Error("<what>: message") for a truncated, corrupted or wrong-version file.

@@ -185,16 +185,20 @@ size_t encoded_size_estimate(const Level& level) {
   return bytes;
 }
 
+void write_header(ByteWriter& out, uint64_t payload_size, uint64_t checksum) {
+  out.raw(std::span(reinterpret_cast<const uint8_t*>(format::kMagic), 8));
+  out.u32(format::kVersion);
+  out.u32(0);
+  out.u64(payload_size);
+  out.u64(checksum);
+}
+
 }  // namespace
 
 std::vector<uint8_t> encode(const Level& level) {
   ByteWriter out;
   out.reserve(encoded_size_estimate(level));
-  out.raw(std::span(reinterpret_cast<const uint8_t*>(format::kMagic), 8));
-  out.u32(format::kVersion);
-  out.u32(0);
-  out.u64(0);  // payload size, patched below
-  out.u64(0);  // checksum, patched below
+  write_header(out, 0, 0);  // the size and checksum patched below
   write_payload(out, level);
   std::vector<uint8_t>& bytes = out.bytes();
   const std::span<const uint8_t> payload(bytes.data() + format::kHeaderSize, bytes.size() - format::kHeaderSize);
@@ -203,6 +207,27 @@ std::vector<uint8_t> encode(const Level& level) {
   return std::move(bytes);
 }
 
-void write(const Level& level, const std::filesystem::path& path) { write_file_atomically(path, encode(level)); }
+void encode(const Level& level, OutputFile& file) {
+  ByteWriter header;
+  write_header(header, 0, 0);  // rewritten at the end with the payload's size and checksum
+  file.write(header.bytes());
+  uint64_t size = 0, checksum = kFnvOffset;
+  ByteWriter out(size_t{1} << 20, [&](std::span<const uint8_t> bytes) {
+    size += bytes.size();
+    checksum = fnv1a64(bytes, checksum);
+    file.write(bytes);
+  });
+  write_payload(out, level);
+  out.flush();
+  ByteWriter final_header;
+  write_header(final_header, size, checksum);
+  file.write_at(0, final_header.bytes());
+}
+
+void write(const Level& level, const std::filesystem::path& path) {
+  Outputs outputs;
+  outputs.add(path, [&](OutputFile& file) { encode(level, file); });
+  outputs.commit();
+}
 
 }  // namespace p3d::level

@@ -5,6 +5,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -15,7 +16,18 @@ namespace p3d {
 
 class ByteWriter {
  public:
-  void u8(uint8_t v) { out_.push_back(v); }
+  ByteWriter() = default;
+  // A writer that hands its bytes to `drain` whenever more than `chunk` have piled up
+  // (and at flush()), so that a large output is never whole in memory.
+  ByteWriter(size_t chunk, std::function<void(std::span<const uint8_t>)> drain)
+      : chunk_(chunk), drain_(std::move(drain)) {
+    out_.reserve(chunk + chunk / 4);
+  }
+
+  void u8(uint8_t v) {
+    out_.push_back(v);
+    drain_if_full();
+  }
   void u16(uint16_t v) { put(v); }
   void u32(uint32_t v) { put(v); }
   void i32(int32_t v) { put(static_cast<uint32_t>(v)); }
@@ -24,13 +36,19 @@ class ByteWriter {
   void f64(double v) { put(std::bit_cast<uint64_t>(v)); }
   void str(const std::string& s) {
     u32(static_cast<uint32_t>(s.size()));
-    out_.insert(out_.end(), s.begin(), s.end());
+    append(s.data(), s.size());
   }
-  void raw(std::span<const uint8_t> bytes) { out_.insert(out_.end(), bytes.begin(), bytes.end()); }
-  // n bytes appended for the caller to fill (bulk data such as texels, written in place).
+  void raw(std::span<const uint8_t> bytes) { append(bytes.data(), bytes.size()); }
+  // n bytes appended for the caller to fill (bulk data such as texels, written in
+  // place); a draining writer hands them on at the next write or flush().
   uint8_t* extend(size_t n) {
+    drain_if_full();
     out_.resize(out_.size() + n);
     return out_.data() + out_.size() - n;
+  }
+  void flush() {
+    if (drain_ && !out_.empty()) drain_(out_);
+    out_.clear();
   }
   void patch_u64(size_t offset, uint64_t v) {
     for (int i = 0; i < 8; ++i) out_[offset + i] = static_cast<uint8_t>(v >> (8 * i));
@@ -46,9 +64,22 @@ class ByteWriter {
     if constexpr (std::endian::native == std::endian::little) std::memcpy(b, &v, sizeof(U));
     else
       for (size_t i = 0; i < sizeof(U); ++i) b[i] = static_cast<uint8_t>(v >> (8 * i));
-    out_.insert(out_.end(), b, b + sizeof(U));
+    append(b, sizeof(U));
+  }
+  // By resize and memcpy: GCC 12 warns falsely of an overflow in vector::insert here.
+  void append(const void* data, size_t n) {
+    if (n == 0) return;
+    const size_t at = out_.size();
+    out_.resize(at + n);
+    std::memcpy(out_.data() + at, data, n);
+    drain_if_full();
+  }
+  void drain_if_full() {
+    if (drain_ && out_.size() > chunk_) flush();
   }
   std::vector<uint8_t> out_;
+  size_t chunk_ = 0;
+  std::function<void(std::span<const uint8_t>)> drain_;  // empty: keep everything
 };
 
 // Every read checks the remaining size and throws Error("<what>: truncated ...").
@@ -116,9 +147,10 @@ class ByteReader {
   int64_t record_ = -1;
 };
 
-// FNV-1a, 64-bit: the checksum of the compiled level format.
-inline uint64_t fnv1a64(std::span<const uint8_t> bytes) {
-  uint64_t h = 0xcbf29ce484222325ull;
+// FNV-1a, 64-bit: the checksum of the compiled level format. A checksum of several
+// pieces passes each piece's result on as `h`.
+constexpr uint64_t kFnvOffset = 0xcbf29ce484222325ull;
+inline uint64_t fnv1a64(std::span<const uint8_t> bytes, uint64_t h = kFnvOffset) {
   for (uint8_t b : bytes) h = (h ^ b) * 0x100000001b3ull;
   return h;
 }

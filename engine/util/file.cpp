@@ -97,21 +97,6 @@ std::filesystem::path temporary_for(const std::filesystem::path& path) {
   return path.string() + ".tmp-" + std::to_string(::getpid());
 }
 
-// Writes the bytes to path's temporary; throws (removing it) on failure.
-void write_temporary(const std::filesystem::path& path, std::span<const uint8_t> bytes) {
-  check_replaceable(path);
-  const std::filesystem::path tmp = temporary_for(path);
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) throw Error(path.string() + ": cannot write: " + errno_text());
-  const bool ok = bytes.empty() || std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-  const bool closed = std::fclose(f) == 0;
-  if (!ok || !closed) {
-    const std::string why = errno_text();
-    std::remove(tmp.c_str());
-    throw Error(path.string() + ": cannot write: " + why);
-  }
-}
-
 void rename_temporary(const std::filesystem::path& path) {
   const std::filesystem::path tmp = temporary_for(path);
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
@@ -123,9 +108,47 @@ void rename_temporary(const std::filesystem::path& path) {
 
 }  // namespace
 
+void OutputFile::write(std::span<const uint8_t> bytes) {
+  if (ok_ && !bytes.empty()) ok_ = std::fwrite(bytes.data(), 1, bytes.size(), f_) == bytes.size();
+}
+
+void OutputFile::write_at(size_t offset, std::span<const uint8_t> bytes) {
+  const long end = std::ftell(f_);
+  if (ok_) ok_ = end >= 0 && std::fseek(f_, long(offset), SEEK_SET) == 0;
+  write(bytes);
+  if (ok_) ok_ = std::fseek(f_, end, SEEK_SET) == 0;
+}
+
+// Writes path's temporary; throws (removing it) on failure.
+void Outputs::write_temporary(const std::filesystem::path& path, const Writer& write) {
+  check_replaceable(path);
+  const std::filesystem::path tmp = temporary_for(path);
+  std::FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (!f) throw Error(path.string() + ": cannot write: " + errno_text());
+  OutputFile out(f);
+  try {
+    write(out);
+  } catch (...) {
+    std::fclose(f);
+    std::remove(tmp.c_str());
+    throw;
+  }
+  const bool closed = std::fclose(f) == 0;
+  if (!out.ok_ || !closed) {
+    const std::string why = errno_text();
+    std::remove(tmp.c_str());
+    throw Error(path.string() + ": cannot write: " + why);
+  }
+}
+
+void Outputs::add(std::filesystem::path path, std::vector<uint8_t> bytes) {
+  add(std::move(path), [bytes = std::move(bytes)](OutputFile& out) { out.write(bytes); });
+}
+
 void write_file_atomically(const std::filesystem::path& path, std::span<const uint8_t> bytes) {
-  write_temporary(path, bytes);
-  rename_temporary(path);
+  Outputs outputs;
+  outputs.add(path, [bytes](OutputFile& out) { out.write(bytes); });
+  outputs.commit();
 }
 
 void Outputs::commit() {
@@ -136,7 +159,7 @@ void Outputs::commit() {
     for (size_t i = 0; i < written; ++i) std::remove(temporary_for(files_[i].first).c_str());
     throw;
   }
-  for (const auto& [path, bytes] : files_) rename_temporary(path);
+  for (const auto& [path, write] : files_) rename_temporary(path);
   files_.clear();
 }
 

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -33,17 +35,37 @@ class MappedFile {
 void write_file_atomically(const std::filesystem::path& path, std::span<const uint8_t> bytes);
 void write_file_atomically(const std::filesystem::path& path, const std::string& text);
 
+// A file being written, as a streamed output's writer sees it: bytes appended, and
+// bytes already written overwritten (a header's sizes, known at the end). Errors are
+// remembered and reported when the file is closed.
+class OutputFile {
+ public:
+  void write(std::span<const uint8_t> bytes);
+  void write_at(size_t offset, std::span<const uint8_t> bytes);
+
+ private:
+  friend class Outputs;
+  explicit OutputFile(std::FILE* f) : f_(f) {}
+  std::FILE* f_;
+  bool ok_ = true;
+};
+
 // Several outputs of one command, all or nothing: every file goes to a temporary
 // first, and only when all are written are they renamed into place.
 class Outputs {
  public:
-  void add(std::filesystem::path path, std::vector<uint8_t> bytes) { files_.push_back({std::move(path), std::move(bytes)}); }
+  using Writer = std::function<void(OutputFile&)>;
+  void add(std::filesystem::path path, std::vector<uint8_t> bytes);
   void add(std::filesystem::path path, const std::string& text) { add(std::move(path), std::vector<uint8_t>(text.begin(), text.end())); }
+  // A file written piece by piece at commit(), never whole in memory (what `write`
+  // reads must outlive the commit).
+  void add(std::filesystem::path path, Writer write) { files_.push_back({std::move(path), std::move(write)}); }
   // Throws Error (and leaves nothing behind) if any cannot be written.
   void commit();
 
  private:
-  std::vector<std::pair<std::filesystem::path, std::vector<uint8_t>>> files_;
+  static void write_temporary(const std::filesystem::path& path, const Writer& write);
+  std::vector<std::pair<std::filesystem::path, Writer>> files_;
 };
 
 }  // namespace p3d

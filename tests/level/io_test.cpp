@@ -6,6 +6,7 @@
 #include "engine/map/source.h"
 #include "engine/level/io.h"
 #include "engine/util/bytes.h"
+#include "engine/util/file.h"
 #include "engine/util/limits.h"
 #include "engine/util/rng.h"
 #include "tests/support/support.h"
@@ -51,6 +52,18 @@ TEST_F(LevelIo, RoundTripIsExact) {
   EXPECT_EQ(back.textures[1].texels, level_->textures[1].texels);
   EXPECT_EQ(back.leaves[9].sector, level_->leaves[9].sector);
   EXPECT_EQ(back.bounds.min, level_->bounds.min);
+}
+
+// A file is written as it is encoded, in pieces, its header patched at the end: the
+// same bytes as the encoding made whole in memory.
+TEST_F(LevelIo, WrittenFileIsTheEncoding) {
+  const Level level = test::compile(test::random_rooms(20000, 5));
+  const std::vector<uint8_t> bytes = encode(level);
+  ASSERT_GT(bytes.size(), size_t{3} << 20);  // several of the writer's 1 MB pieces
+  const std::filesystem::path path = test::temp_dir("level_io") / "x.bsp";
+  write(level, path);
+  EXPECT_EQ(read_file_bytes(path), bytes);
+  EXPECT_EQ(encode(read(path)), bytes);
 }
 
 // The compiler never writes what the reader refuses: random levels, and one with every
