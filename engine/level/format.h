@@ -1,7 +1,7 @@
 // The compiled level file (.bsp): the one description of the disk format.
 //
 //   header   magic "P3DBSP\r\n" (8 bytes), u32 version, u32 reserved (0),
-//            u64 payload size, u64 FNV-1a 64 checksum of the payload
+//            u64 payload size, u64 XXH3-64 checksum of the payload (util/checksum.h)
 //   payload  sections in this order, each opening with its u32 tag:
 //     META     str title, f64 player x, y, angle, i32 default sector, i32 sky texture
 //     PALT     u32 paletted (0 or 1); if 1: 256 RGBA8 palette colours, then kLightMaps x 256
@@ -35,7 +35,7 @@
 namespace p3d::level::format {
 
 constexpr char kMagic[8] = {'P', '3', 'D', 'B', 'S', 'P', '\r', '\n'};
-constexpr uint32_t kVersion = 4;
+constexpr uint32_t kVersion = 5;
 constexpr size_t kHeaderSize = 8 + 4 + 4 + 8 + 8;
 
 constexpr uint32_t tag(const char (&s)[5]) {

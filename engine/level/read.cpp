@@ -8,6 +8,7 @@
 #include "engine/level/format.h"
 #include "engine/level/io.h"
 #include "engine/util/bytes.h"
+#include "engine/util/checksum.h"
 #include "engine/util/file.h"
 #include "engine/util/limits.h"
 
@@ -427,7 +428,7 @@ Level decode(std::span<const uint8_t> bytes, const std::string& what) {
   if (size != payload.size())
     throw Error(what + ": truncated or padded file (payload is " + std::to_string(payload.size()) + " bytes, header says " +
                 std::to_string(size) + ")");
-  if (fnv1a64(payload) != checksum) throw Error(what + ": checksum mismatch (the file is corrupted)");
+  if (checksum64(payload) != checksum) throw Error(what + ": checksum mismatch (the file is corrupted)");
   return Reader(payload, what).run();
 }
 

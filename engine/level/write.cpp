@@ -4,6 +4,7 @@
 #include "engine/level/format.h"
 #include "engine/level/io.h"
 #include "engine/util/bytes.h"
+#include "engine/util/checksum.h"
 #include "engine/util/file.h"
 
 namespace p3d::level {
@@ -203,7 +204,7 @@ std::vector<uint8_t> encode(const Level& level) {
   std::vector<uint8_t>& bytes = out.bytes();
   const std::span<const uint8_t> payload(bytes.data() + format::kHeaderSize, bytes.size() - format::kHeaderSize);
   out.patch_u64(16, payload.size());
-  out.patch_u64(24, fnv1a64(payload));
+  out.patch_u64(24, checksum64(payload));
   return std::move(bytes);
 }
 
@@ -211,16 +212,17 @@ void encode(const Level& level, OutputFile& file) {
   ByteWriter header;
   write_header(header, 0, 0);  // rewritten at the end with the payload's size and checksum
   file.write(header.bytes());
-  uint64_t size = 0, checksum = kFnvOffset;
+  uint64_t size = 0;
+  Checksum64 checksum;
   ByteWriter out(size_t{1} << 20, [&](std::span<const uint8_t> bytes) {
     size += bytes.size();
-    checksum = fnv1a64(bytes, checksum);
+    checksum.add(bytes);
     file.write(bytes);
   });
   write_payload(out, level);
   out.flush();
   ByteWriter final_header;
-  write_header(final_header, size, checksum);
+  write_header(final_header, size, checksum.value());
   file.write_at(0, final_header.bytes());
 }
 

@@ -1,5 +1,5 @@
 // Little-endian byte encoding with bounds-checked decoding, independent of the
-// host's struct layout, plus the FNV-1a checksum used by the compiled format.
+// host's struct layout, plus the FNV-1a checksum of demo files.
 #pragma once
 
 #include <bit>
@@ -147,10 +147,9 @@ class ByteReader {
   int64_t record_ = -1;
 };
 
-// FNV-1a, 64-bit: the checksum of the compiled level format. A checksum of several
-// pieces passes each piece's result on as `h`.
-constexpr uint64_t kFnvOffset = 0xcbf29ce484222325ull;
-inline uint64_t fnv1a64(std::span<const uint8_t> bytes, uint64_t h = kFnvOffset) {
+// FNV-1a, 64-bit: the checksum of demo files (small; compiled levels use checksum.h).
+inline uint64_t fnv1a64(std::span<const uint8_t> bytes) {
+  uint64_t h = 0xcbf29ce484222325ull;
   for (uint8_t b : bytes) h = (h ^ b) * 0x100000001b3ull;
   return h;
 }

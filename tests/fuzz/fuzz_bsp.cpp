@@ -6,6 +6,7 @@
 #include "engine/level/format.h"
 #include "engine/level/io.h"
 #include "engine/util/bytes.h"
+#include "engine/util/checksum.h"
 #include "tests/fuzz/harness.h"
 
 using namespace p3d;
@@ -19,7 +20,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::memcpy(bytes.data() + 8, &version, 4);
   const uint64_t payload = size - kHeaderSize;
   std::memcpy(bytes.data() + 16, &payload, 8);
-  const uint64_t checksum = fnv1a64(std::span(bytes).subspan(kHeaderSize));
+  const uint64_t checksum = checksum64(std::span(bytes).subspan(kHeaderSize));
   std::memcpy(bytes.data() + 24, &checksum, 8);
   try {
     fuzz::render_a_little(level::decode(bytes, "fuzz.bsp"));

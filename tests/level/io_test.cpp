@@ -6,6 +6,7 @@
 #include "engine/map/source.h"
 #include "engine/level/io.h"
 #include "engine/util/bytes.h"
+#include "engine/util/checksum.h"
 #include "engine/util/file.h"
 #include "engine/util/limits.h"
 #include "engine/util/rng.h"
@@ -26,7 +27,7 @@ std::string decode_error(const std::vector<uint8_t>& bytes) {
 // Rewrites the header so that a deliberately edited payload passes the checksum.
 void reseal(std::vector<uint8_t>& bytes) {
   const std::span<const uint8_t> payload(bytes.data() + format::kHeaderSize, bytes.size() - format::kHeaderSize);
-  const uint64_t size = payload.size(), sum = fnv1a64(payload);
+  const uint64_t size = payload.size(), sum = checksum64(payload);
   for (int i = 0; i < 8; ++i) {
     bytes[16 + i] = uint8_t(size >> (8 * i));
     bytes[24 + i] = uint8_t(sum >> (8 * i));
