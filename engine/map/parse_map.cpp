@@ -1,7 +1,6 @@
 // The .map text parser: one statement per line, positional arguments then
 // key=value options. Every mistake is reported as "file:line: message".
-#include <unordered_map>
-
+#include "engine/map/name_index.h"
 #include "engine/map/source.h"
 #include "engine/map/statement.h"
 #include "engine/util/file.h"
@@ -19,7 +18,7 @@ class Parser {
     source_.path = path;
   }
 
-  Source run(const std::string& text) {
+  Source run(std::string_view text) {
     const std::vector<std::string_view> lines = detail::split_lines(text);
     reserve(lines);
     int line_number = 0;
@@ -80,9 +79,9 @@ class Parser {
     s.finish();
     const std::string name = s.name(0, "texture");
     if (name == "sky" || name == "-") s.fail("'" + name + "' is reserved and cannot name a texture");
-    if (texture_index_.count(name)) s.fail("texture '" + name + "' is defined twice");
+    if (texture_index_.find(name) != detail::NameIndex::kMissing) s.fail("texture '" + name + "' is defined twice");
     Texture t = detail::load_texture(s, name, source_.path, s.arg(1), options_);
-    texture_index_[name] = static_cast<int>(source_.textures.size());
+    texture_index_.insert(name, static_cast<int>(source_.textures.size()));
     source_.textures.push_back(std::move(t));
   }
 
@@ -96,7 +95,7 @@ class Parser {
     s.expect_args(3, "vertex NAME X Y");
     s.finish();
     const std::string name = s.name(0, "vertex");
-    if (!vertex_index_.try_emplace(name, static_cast<int>(source_.vertices.size())).second)
+    if (!vertex_index_.insert(name, static_cast<int>(source_.vertices.size())))
       s.fail("vertex '" + name + "' is defined twice");
     source_.vertices.push_back({{s.coordinate(s.arg(1), "x"), s.coordinate(s.arg(2), "y")}});
   }
@@ -111,7 +110,7 @@ class Parser {
     } else {
       s.expect_args(1, "sector NAME floor=F ceiling=C light=L floor_tex=T ceiling_tex=T");
       sec.name = s.name(0, "sector");
-      if (sector_index_.count(sec.name)) s.fail("sector '" + sec.name + "' is defined twice");
+      if (sector_index_.find(sec.name) != detail::NameIndex::kMissing) s.fail("sector '" + sec.name + "' is defined twice");
     }
     sec.floor = height(s, s.require("floor"), "floor");
     sec.ceiling = height(s, s.require("ceiling"), "ceiling");
@@ -130,7 +129,7 @@ class Parser {
     if (is_default)
       source_.default_sector = index;
     else
-      sector_index_[sec.name] = index;
+      sector_index_.insert(sec.name, index);
     source_.sectors.push_back(std::move(sec));
   }
 
@@ -217,19 +216,19 @@ class Parser {
   }
 
   int vertex_ref(const Statement& s, std::string_view name) const {
-    auto it = vertex_index_.find(name);
-    if (it == vertex_index_.end()) s.fail("unknown vertex '" + std::string(name) + "'");
-    return it->second;
+    const int index = vertex_index_.find(name);
+    if (index == detail::NameIndex::kMissing) s.fail("unknown vertex '" + std::string(name) + "'");
+    return index;
   }
   int sector_ref(const Statement& s, std::string_view name) const {
-    auto it = sector_index_.find(name);
-    if (it == sector_index_.end()) s.fail("unknown sector '" + std::string(name) + "'");
-    return it->second;
+    const int index = sector_index_.find(name);
+    if (index == detail::NameIndex::kMissing) s.fail("unknown sector '" + std::string(name) + "'");
+    return index;
   }
   int texture_ref(const Statement& s, std::string_view name) const {
-    auto it = texture_index_.find(name);
-    if (it == texture_index_.end()) s.fail("unknown texture '" + std::string(name) + "'");
-    return it->second;
+    const int index = texture_index_.find(name);
+    if (index == detail::NameIndex::kMissing) s.fail("unknown texture '" + std::string(name) + "'");
+    return index;
   }
 
   // A map of plain segments still needs a floor and a ceiling: flat grey, 128 high.
@@ -254,23 +253,22 @@ class Parser {
   Source source_;
   detail::Sprites sprites_;
   bool have_player_ = false;
-  // Looked up by string_view without building a string (C++20 heterogeneous lookup).
-  struct NameHash {
-    using is_transparent = void;
-    size_t operator()(std::string_view name) const { return std::hash<std::string_view>()(name); }
-  };
-  using NameIndex = std::unordered_map<std::string, int, NameHash, std::equal_to<>>;
-  NameIndex vertex_index_, sector_index_, texture_index_;
+  detail::NameIndex vertex_index_, sector_index_, texture_index_;
 };
 
 }  // namespace
 
-Source parse_map(const std::string& text, const std::filesystem::path& path, const LoadOptions& options) {
+Source parse_map(std::string_view text, const std::filesystem::path& path, const LoadOptions& options) {
   return Parser(path, options).run(text);
 }
 
 Source load_map(const std::filesystem::path& path, const LoadOptions& options) {
-  Source source = parse_map(read_file_text(path), path, options);
+  Source source;
+  {
+    const MappedFile file(path);  // mapped, not copied: a million-wall map is 90 MB of text
+    const std::span<const uint8_t> bytes = file.bytes();
+    source = parse_map(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path, options);
+  }
   validate(source);
   return source;
 }

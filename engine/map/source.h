@@ -157,7 +157,7 @@ struct LoadOptions {
 
 // Parses and validates a .map file (see maps/FORMAT.md). Throws Error("file:line: message").
 Source load_map(const std::filesystem::path& path, const LoadOptions& options = {});
-Source parse_map(const std::string& text, const std::filesystem::path& path, const LoadOptions& options = {});
+Source parse_map(std::string_view text, const std::filesystem::path& path, const LoadOptions& options = {});
 
 // Parses and validates a .grid tile map into walls (see maps/FORMAT.md).
 Source load_grid(const std::filesystem::path& path, const LoadOptions& options = {});
