@@ -44,12 +44,16 @@ double Stats::random_bound() const { return walls + 2.0 * walls * std::log(std::
 
 namespace {
 
+// A piece of a wall, with the wall's line at hand: classifying fragments is most of
+// the build, and a line looked up by wall index was a cache miss of its own.
 struct Frag {
+  Line line;  // its wall's
+  double t[2];
   uint32_t wall;
   int32_t cut[2];
-  double t[2];
   bool on_boundary[2];  // this end lies on an ancestor's splitter line (free-split bookkeeping)
 };
+static_assert(sizeof(Frag) == 64, "a fragment fills one cache line");
 
 // A convex cell vertex; the edge from it to the next vertex lies on node `node`'s
 // line (kNone: the outer box), with the cell on that node's front side or not.
@@ -69,6 +73,8 @@ struct Task {
 };
 
 enum class Place { kFront, kBack, kOn, kSplit };
+
+constexpr size_t kPrefetch = 8;  // fragments ahead
 
 class Builder {
  public:
@@ -97,7 +103,7 @@ class Builder {
     out_.leaves.reserve(pool_.capacity() + 1);
     for (uint32_t i = 0; i < all.size(); ++i) {
       all[i] = i;
-      pool_.push_back({i, {level::kNone, level::kNone}, {0.0, 1.0}, {false, false}});
+      pool_.push_back({lines_[i], {0.0, 1.0}, i, {level::kNone, level::kNone}, {false, false}});
     }
     if (opt_.strategy != Strategy::kFirst) rng_.shuffle(all);
     pending_ = all.size();
@@ -278,7 +284,7 @@ class Builder {
     double best_cost = INFINITY;
     for (size_t c = 0; c < k; ++c) {
       const uint32_t candidate = k == m ? frags[c] : frags[rng_.below(m)];
-      const Line& l = lines_[pool_[candidate].wall];
+      const Line& l = pool_[candidate].line;
       double front = 0, back = 0, splits = 0, slivers = 0;
       bool beaten = false;
       for (size_t i = 0; i < sample.size() && !beaten; ++i) {
@@ -313,24 +319,27 @@ class Builder {
   }
 
   bool makes_sliver(const Frag& f, const Line& l) const {
-    const double t = geom::crossing_param(lines_[f.wall], l);
+    const double t = geom::crossing_param(f.line, l);
     return std::min(t - f.t[0], f.t[1] - t) * wall_length(f.wall) < kSliverLength;
   }
 
   // ---- exact classification ------------------------------------------------
   int end_side(const Frag& f, int k, const Line& l) const {
     if (f.cut[k] == level::kNone) {
-      const Line& w = lines_[f.wall];
+      const Line& w = f.line;
       return geom::side_of(l, f.t[k] == 0 ? w.a : IPoint{w.a.x + w.d.x, w.a.y + w.d.y});
     }
-    return geom::side_of_crossing(l, lines_[f.wall], lines_[f.cut[k]]);
+    return geom::side_of_crossing(l, f.line, lines_[f.cut[k]]);
   }
 
   // Front = right of the splitter (side < 0), back = left (side > 0).
   void partition(const std::vector<uint32_t>& frags, int32_t splitter_wall, std::vector<uint32_t>& front,
                  std::vector<uint32_t>& back, std::vector<uint32_t>& on) {
     const Line& l = lines_[splitter_wall];
-    for (uint32_t i : frags) {
+    for (size_t k = 0; k < frags.size(); ++k) {
+      // The fragments lie anywhere in the pool: ask for them ahead (a cache miss each).
+      if (k + kPrefetch < frags.size()) __builtin_prefetch(&pool_[frags[k + kPrefetch]]);
+      const uint32_t i = frags[k];
       Frag& f = pool_[i];
       const int s0 = end_side(f, 0, l), s1 = end_side(f, 1, l);
       if (s0 == 0 && s1 == 0) {
@@ -354,7 +363,7 @@ class Builder {
   // Cuts fragment i where `cutter`'s line crosses it: i keeps [t0, t], a new fragment gets [t, t1].
   uint32_t split(uint32_t i, int32_t cutter) {
     Frag f = pool_[i];
-    double t = geom::crossing_param(lines_[f.wall], lines_[cutter]);
+    double t = geom::crossing_param(f.line, lines_[cutter]);
     // The exact crossing is strictly inside; keep the rounded one strictly inside too.
     t = std::clamp(t, std::nextafter(f.t[0], 2.0), std::nextafter(f.t[1], -1.0));
     Frag tail = f;
