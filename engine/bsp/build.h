@@ -54,7 +54,7 @@ struct Stats {
 // Throws Error (located at the player statement) if the player starts outside every
 // sector and options.player_must_be_inside.
 level::Level build(const map::Source& source, const Options& options, Stats* stats = nullptr);
-// The same, freeing the source's walls and vertices as soon as the level holds them
+// The same, freeing the source's walls, vertices and grid as soon as the level holds them
 // (what is left of it is of no further use): a million-wall map's peak memory.
 level::Level build(map::Source&& source, const Options& options, Stats* stats = nullptr);
 
