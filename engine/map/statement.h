@@ -131,10 +131,14 @@ inline std::vector<std::string_view> split_lines(std::string_view text) {
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
   std::vector<std::string_view> lines;
   size_t pos = 0;
+  // memchr over [from, to), never given a null pointer (an empty mapped file has none).
+  const auto find = [&](char c, size_t from, size_t to) -> const char* {
+    return to > from ? static_cast<const char*>(std::memchr(text.data() + from, c, to - from)) : nullptr;
+  };
   for (;;) {  // memchr for the next LF, then for a CR before it (rare: CRLF or CR-only files)
-    const char* lf = static_cast<const char*>(std::memchr(text.data() + pos, '\n', text.size() - pos));
+    const char* lf = find('\n', pos, text.size());
     const size_t newline = lf ? size_t(lf - text.data()) : text.size();
-    const char* cr = static_cast<const char*>(std::memchr(text.data() + pos, '\r', newline - pos));
+    const char* cr = find('\r', pos, newline);
     const size_t end = cr ? size_t(cr - text.data()) : newline;
     if (end == text.size()) {
       lines.push_back(text.substr(pos));
