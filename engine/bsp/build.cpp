@@ -85,7 +85,7 @@ class Builder {
 
   level::Level run(Stats* stats) {
     copy_source();
-    root_box_ = vertex_box();
+    const geom::BBox vertex_bounds = vertex_box();  // before the consumable source loses them
     segments_only_ = std::all_of(out_.walls.begin(), out_.walls.end(), [](const level::Wall& w) { return w.segment(); });
     if (consumable_) {
       std::vector<map::Wall>().swap(consumable_->walls);
@@ -107,7 +107,7 @@ class Builder {
     }
     if (opt_.strategy != Strategy::kFirst) rng_.shuffle(all);
     pending_ = all.size();
-    build_tree(std::move(all));
+    build_tree(std::move(all), vertex_bounds);
     level::finalize(out_);
     compute_bounding_boxes();
     resolve_leaves_by_ray_cast();
@@ -202,8 +202,7 @@ class Builder {
     return box;
   }
 
-  void build_tree(std::vector<uint32_t> all) {
-    geom::BBox box = root_box_;
+  void build_tree(std::vector<uint32_t> all, geom::BBox box) {
     const double margin = 64 + 0.01 * std::max(box.max.x - box.min.x, box.max.y - box.min.y);
     box.min -= Vec2(margin);
     box.max += Vec2(margin);
@@ -519,7 +518,6 @@ class Builder {
   std::vector<Line> lines_;  // one per wall
   std::vector<Frag> pool_;
   level::Level out_;
-  geom::BBox root_box_;  // of the source's vertices
   bool segments_only_ = false;
   std::vector<std::pair<int32_t, Vec2>> unresolved_;
   size_t placed_ = 0, pending_ = 0, next_progress_ = 65536;

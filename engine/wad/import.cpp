@@ -215,8 +215,8 @@ class Importer {
     s.lower = wall_texture(m.lower, record);
     s.x_offset = m.x_offset;
     s.y_offset = m.y_offset;
-    const auto nonzero = [](const double(&v)[3]) { return std::any_of(std::begin(v), std::end(v), [](double d) { return d != 0; }); };
-    if (nonzero(m.part_x) || nonzero(m.part_y)) {
+    const auto nonzero = [](const double(&v)[3]) { return v[0] != 0 || v[1] != 0 || v[2] != 0; };
+    if (nonzero(m.part_x) || nonzero(m.part_y)) {  // rare: kept apart from the sides
       s.parts = int(src_.part_offsets.size());
       map::PartOffsets& parts = src_.part_offsets.emplace_back();
       std::copy(std::begin(m.part_x), std::end(m.part_x), parts.x);
