@@ -64,8 +64,11 @@ struct CellVertex {
 };
 using Cell = std::vector<CellVertex>;
 
+// A cell still to split, holding its fragments by value: partitioning reads them in
+// order and writes each side's in order (as quicksort moves keys), where fragments
+// kept in one pool and named by index cost a cache miss each at every level.
 struct Task {
-  std::vector<uint32_t> frags;
+  std::vector<Frag> frags;
   Cell cell;
   int32_t parent;  // node index, or kNone for the root
   int slot;        // 0 front, 1 back
@@ -73,8 +76,6 @@ struct Task {
 };
 
 enum class Place { kFront, kBack, kOn, kSplit };
-
-constexpr size_t kPrefetch = 8;  // fragments ahead
 
 class Builder {
  public:
@@ -93,19 +94,20 @@ class Builder {
     }
     lines_.reserve(out_.walls.size());
     for (const level::Wall& w : out_.walls) lines_.push_back(w.line());
-    std::vector<uint32_t> all(out_.walls.size());
+    std::vector<uint32_t> order(out_.walls.size());
+    for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    if (opt_.strategy != Strategy::kFirst) rng_.shuffle(order);
+    std::vector<Frag> all;
+    all.reserve(order.size());
+    for (uint32_t i : order) all.push_back({lines_[i], {0.0, 1.0}, i, {level::kNone, level::kNone}, {false, false}});
+    std::vector<uint32_t>().swap(order);
     // Room for a few splits, and for a node per fragment at most: a big map's vectors
     // are not copied as they grow (for a moment, twice their size). Room never
     // written is never given pages.
-    pool_.reserve(all.size() + all.size() / 8);
-    out_.fragments.reserve(pool_.capacity());
-    out_.nodes.reserve(pool_.capacity());
-    out_.leaves.reserve(pool_.capacity() + 1);
-    for (uint32_t i = 0; i < all.size(); ++i) {
-      all[i] = i;
-      pool_.push_back({lines_[i], {0.0, 1.0}, i, {level::kNone, level::kNone}, {false, false}});
-    }
-    if (opt_.strategy != Strategy::kFirst) rng_.shuffle(all);
+    const size_t room = all.size() + all.size() / 8;
+    out_.fragments.reserve(room);
+    out_.nodes.reserve(room);
+    out_.leaves.reserve(room + 1);
     pending_ = all.size();
     build_tree(std::move(all), vertex_bounds);
     level::finalize(out_);
@@ -202,7 +204,7 @@ class Builder {
     return box;
   }
 
-  void build_tree(std::vector<uint32_t> all, geom::BBox box) {
+  void build_tree(std::vector<Frag> all, geom::BBox box) {
     const double margin = 64 + 0.01 * std::max(box.max.x - box.min.x, box.max.y - box.min.y);
     box.min -= Vec2(margin);
     box.max += Vec2(margin);
@@ -219,17 +221,17 @@ class Builder {
         make_leaf(task);
         continue;
       }
-      const uint32_t splitter = choose_splitter(task.frags);
+      const Frag& splitter = task.frags[choose_splitter(task.frags)];
       const int32_t node = static_cast<int32_t>(out_.nodes.size());
       link(task, node);
       out_.nodes.push_back({});
-      out_.nodes[node].splitter = pool_[splitter].wall;
+      out_.nodes[node].splitter = splitter.wall;
 
-      const int32_t splitter_wall = static_cast<int32_t>(pool_[splitter].wall);
-      if (spans_cell(pool_[splitter])) ++free_splits_;  // it cannot cut anything: free
-      std::vector<uint32_t> front, back, on;
-      partition(task.frags, splitter_wall, front, back, on);
-      place_on_node(node, on);
+      const int32_t splitter_wall = static_cast<int32_t>(splitter.wall);
+      if (spans_cell(splitter)) ++free_splits_;  // it cannot cut anything: free
+      std::vector<Frag> front, back;
+      partition(task.frags, splitter_wall, node, front, back);
+      std::vector<Frag>().swap(task.frags);
 
       const Line& l = lines_[splitter_wall];
       stack.push_back({std::move(back), clip(task.cell, l, node, false), node, 1, task.depth + 1});
@@ -241,17 +243,17 @@ class Builder {
     if (task.parent != level::kNone) out_.nodes[task.parent].child[task.slot] = child;
   }
 
-  void place_on_node(int32_t node, const std::vector<uint32_t>& on) {
+  // Fragments on the splitter's line stay at its node (partition hands them over in order).
+  void place_on_node(int32_t node, const Frag& f) {
     level::Node& n = out_.nodes[node];
-    n.first_fragment = static_cast<uint32_t>(out_.fragments.size());
-    n.fragment_count = static_cast<uint32_t>(on.size());
-    for (uint32_t i : on) {
-      const Frag& f = pool_[i];
-      out_.fragments.push_back({f.wall, {f.cut[0], f.cut[1]}, f.t[0], f.t[1]});
-      shortest_ = std::min(shortest_, (f.t[1] - f.t[0]) * wall_length(f.wall));
-    }
-    placed_ += on.size();
-    pending_ -= on.size();
+    if (n.fragment_count++ == 0) n.first_fragment = static_cast<uint32_t>(out_.fragments.size());
+    out_.fragments.push_back({f.wall, {f.cut[0], f.cut[1]}, f.t[0], f.t[1]});
+    shortest_ = std::min(shortest_, (f.t[1] - f.t[0]) * wall_length(f.wall));
+  }
+
+  void count_placed(const level::Node& n) {
+    placed_ += n.fragment_count;
+    pending_ -= n.fragment_count;
     if (opt_.progress && placed_ >= next_progress_) {
       next_progress_ = placed_ + 65536;
       opt_.progress(double(placed_) / double(placed_ + pending_));
@@ -259,72 +261,97 @@ class Builder {
   }
 
   // ---- splitter choice -----------------------------------------------------
-  uint32_t choose_splitter(const std::vector<uint32_t>& frags) {
+  // The position in `frags` of the fragment whose line splits the cell.
+  size_t choose_splitter(const std::vector<Frag>& frags) {
     switch (opt_.strategy) {
       case Strategy::kFirst:
       case Strategy::kRandom:
-        return frags.front();
+        return 0;
       case Strategy::kFreeSplit:
-        for (uint32_t f : frags)
-          if (spans_cell(pool_[f])) return f;
-        return frags.front();
+        for (size_t i = 0; i < frags.size(); ++i)
+          if (spans_cell(frags[i])) return i;
+        return 0;
       case Strategy::kGreedy:
         return choose_greedy(frags);
     }
-    return frags.front();
+    return 0;
   }
 
-  bool spans_cell(const Frag& f) const { return f.on_boundary[0] && f.on_boundary[1]; }
+  static bool spans_cell(const Frag& f) { return f.on_boundary[0] && f.on_boundary[1]; }
 
-  uint32_t choose_greedy(const std::vector<uint32_t>& frags) {
+  size_t choose_greedy(const std::vector<Frag>& frags) {
     const size_t m = frags.size();
-    if (m == 1) return frags.front();
+    if (m == 1) return 0;
     const size_t k = std::min<size_t>(m, std::max(1, opt_.greedy_candidates));
     const size_t samples = std::min<size_t>(m, std::max(1, opt_.greedy_sample));
-    std::vector<uint32_t> sample(samples);
-    for (size_t i = 0; i < samples; ++i) sample[i] = samples == m ? frags[i] : frags[rng_.below(m)];
+    sample_.clear();
+    for (size_t i = 0; i < samples; ++i) sample_.add(frags[samples == m ? i : rng_.below(m)], *this);
 
-    uint32_t best = frags.front();
+    size_t best = 0;
     double best_cost = INFINITY;
     for (size_t c = 0; c < k; ++c) {
-      const uint32_t candidate = k == m ? frags[c] : frags[rng_.below(m)];
-      const Line& l = pool_[candidate].line;
-      double front = 0, back = 0, splits = 0, slivers = 0;
-      bool beaten = false;
-      for (size_t i = 0; i < sample.size() && !beaten; ++i) {
-        // Stop once this candidate cannot beat the best (the same choice, sooner):
-        // splits and slivers only add, and the fragments left can close the imbalance
-        // by at most their number.
-        if (i % 16 == 0 && i > 0) {
-          const double left = double(sample.size() - i);
-          beaten = opt_.split_weight * splits + opt_.sliver_weight * slivers +
-                       opt_.balance_weight * std::max(0.0, std::fabs(front - back) - left) >=
-                   best_cost;
-          if (beaten) break;
-        }
-        const uint32_t f = sample[i];
-        const int s0 = end_side(pool_[f], 0, l), s1 = end_side(pool_[f], 1, l);
-        if (s0 == 0 && s1 == 0) continue;
-        if (s0 <= 0 && s1 <= 0) {
-          ++front;
-        } else if (s0 >= 0 && s1 >= 0) {
-          ++back;
-        } else {
-          ++splits;
-          if (makes_sliver(pool_[f], l)) ++slivers;
-        }
-      }
-      if (beaten) continue;
-      const double cost = opt_.split_weight * splits + opt_.balance_weight * std::fabs(front - back) +
-                          opt_.sliver_weight * slivers;
-      if (cost < best_cost) best_cost = cost, best = candidate;
+      const size_t candidate = k == m ? c : rng_.below(m);
+      const std::optional<double> cost = score(frags[candidate].line, best_cost);
+      if (cost && *cost < best_cost) best_cost = *cost, best = candidate;
     }
     return best;
   }
 
-  bool makes_sliver(const Frag& f, const Line& l) const {
-    const double t = geom::crossing_param(f.line, l);
-    return std::min(t - f.t[0], f.t[1] - t) * wall_length(f.wall) < kSliverLength;
+  // The fragments a candidate splitter is scored against, laid out for the scoring
+  // loop: each end's point where it is an original wall end (most are), else the
+  // fragment itself for the exact crossing test; each wall's length for slivers.
+  struct Sample {
+    std::vector<IPoint> ends;        // 2 per fragment
+    std::vector<const Frag*> frags;
+    std::vector<uint8_t> cut;        // bit k: end k is a crossing
+    std::vector<double> length;
+
+    void clear() { ends.clear(), frags.clear(), cut.clear(), length.clear(); }
+    size_t size() const { return frags.size(); }
+    void add(const Frag& f, const Builder& b) {
+      const IPoint far{f.line.a.x + f.line.d.x, f.line.a.y + f.line.d.y};
+      for (int k = 0; k < 2; ++k) ends.push_back(f.cut[k] != level::kNone ? IPoint{} : f.t[k] == 0 ? f.line.a : far);
+      cut.push_back(uint8_t((f.cut[0] != level::kNone) | (f.cut[1] != level::kNone) << 1));
+      frags.push_back(&f);
+      length.push_back(b.wall_length(f.wall));
+    }
+  };
+
+  // Greedy's cost of splitting along l (splits, imbalance, slivers), or nothing once
+  // it cannot come under `to_beat`.
+  std::optional<double> score(const Line& l, double to_beat) const {
+    const size_t n = sample_.size();
+    int64_t front = 0, back = 0, splits = 0, slivers = 0;
+    for (size_t i = 0; i < n; ++i) {
+      // Stop once this candidate cannot win (the same choice, sooner): splits and
+      // slivers only add, and the fragments left can close the imbalance by at most
+      // their number.
+      if (i % 16 == 0 && i > 0) {
+        const double left = double(n - i);
+        if (opt_.split_weight * double(splits) + opt_.sliver_weight * double(slivers) +
+                opt_.balance_weight * std::max(0.0, std::fabs(double(front - back)) - left) >=
+            to_beat)
+          return std::nullopt;
+      }
+      const IPoint* e = &sample_.ends[2 * i];
+      int s0 = geom::side_of(l, e[0]), s1 = geom::side_of(l, e[1]);
+      if (sample_.cut[i]) {
+        const Frag& f = *sample_.frags[i];
+        if (sample_.cut[i] & 1) s0 = end_side(f, 0, l);
+        if (sample_.cut[i] & 2) s1 = end_side(f, 1, l);
+      }
+      const bool any = (s0 | s1) != 0;
+      front += (s0 <= 0) & (s1 <= 0) & any;
+      back += (s0 >= 0) & (s1 >= 0) & any;
+      if (s0 * s1 < 0) {
+        ++splits;
+        const Frag& f = *sample_.frags[i];
+        const double t = geom::crossing_param(f.line, l);
+        slivers += std::min(t - f.t[0], f.t[1] - t) * sample_.length[i] < kSliverLength;
+      }
+    }
+    return opt_.split_weight * double(splits) + opt_.balance_weight * std::fabs(double(front - back)) +
+           opt_.sliver_weight * double(slivers);
   }
 
   // ---- exact classification ------------------------------------------------
@@ -336,50 +363,59 @@ class Builder {
     return geom::side_of_crossing(l, f.line, lines_[f.cut[k]]);
   }
 
-  // Front = right of the splitter (side < 0), back = left (side > 0).
-  void partition(const std::vector<uint32_t>& frags, int32_t splitter_wall, std::vector<uint32_t>& front,
-                 std::vector<uint32_t>& back, std::vector<uint32_t>& on) {
+  // Front = right of the splitter (side < 0), back = left (side > 0); fragments on its
+  // line go to the node. The sides are decided first, so each side's vector is made
+  // at its final size.
+  void partition(std::vector<Frag>& frags, int32_t splitter_wall, int32_t node, std::vector<Frag>& front,
+                 std::vector<Frag>& back) {
     const Line& l = lines_[splitter_wall];
+    sides_.resize(frags.size());
+    size_t fronts = 0, backs = 0;
     for (size_t k = 0; k < frags.size(); ++k) {
-      // The fragments lie anywhere in the pool: ask for them ahead (a cache miss each).
-      if (k + kPrefetch < frags.size()) __builtin_prefetch(&pool_[frags[k + kPrefetch]]);
-      const uint32_t i = frags[k];
-      Frag& f = pool_[i];
+      Frag& f = frags[k];
       const int s0 = end_side(f, 0, l), s1 = end_side(f, 1, l);
+      sides_[k] = {int8_t(s0), int8_t(s1)};
+      fronts += s0 < 0 || s1 < 0;
+      backs += s0 > 0 || s1 > 0;
+    }
+    front.reserve(fronts);
+    back.reserve(backs);
+    for (size_t k = 0; k < frags.size(); ++k) {
+      Frag& f = frags[k];
+      const auto [s0, s1] = sides_[k];
       if (s0 == 0 && s1 == 0) {
-        on.push_back(i);
+        place_on_node(node, f);
         continue;
       }
       if (s0 == 0) f.on_boundary[0] = true;
       if (s1 == 0) f.on_boundary[1] = true;
       if (s0 <= 0 && s1 <= 0) {
-        front.push_back(i);
+        front.push_back(f);
       } else if (s0 >= 0 && s1 >= 0) {
-        back.push_back(i);
+        back.push_back(f);
       } else {
-        const uint32_t j = split(i, splitter_wall);
-        (s0 < 0 ? front : back).push_back(i);
-        (s1 < 0 ? front : back).push_back(j);
+        const Frag tail = split(f, splitter_wall);
+        (s0 < 0 ? front : back).push_back(f);
+        (s1 < 0 ? front : back).push_back(tail);
       }
     }
+    count_placed(out_.nodes[size_t(node)]);
   }
 
-  // Cuts fragment i where `cutter`'s line crosses it: i keeps [t0, t], a new fragment gets [t, t1].
-  uint32_t split(uint32_t i, int32_t cutter) {
-    Frag f = pool_[i];
+  // Cuts f where `cutter`'s line crosses it: f keeps [t0, t], the piece returned gets [t, t1].
+  Frag split(Frag& f, int32_t cutter) {
     double t = geom::crossing_param(f.line, lines_[cutter]);
     // The exact crossing is strictly inside; keep the rounded one strictly inside too.
     t = std::clamp(t, std::nextafter(f.t[0], 2.0), std::nextafter(f.t[1], -1.0));
     Frag tail = f;
-    pool_[i].t[1] = t;
-    pool_[i].cut[1] = cutter;
-    pool_[i].on_boundary[1] = true;
+    f.t[1] = t;
+    f.cut[1] = cutter;
+    f.on_boundary[1] = true;
     tail.t[0] = t;
     tail.cut[0] = cutter;
     tail.on_boundary[0] = true;
-    pool_.push_back(tail);
     ++pending_;
-    return static_cast<uint32_t>(pool_.size() - 1);
+    return tail;
   }
 
   double wall_length(uint32_t wall) const {
@@ -516,7 +552,8 @@ class Builder {
   const Options& opt_;
   Rng rng_;
   std::vector<Line> lines_;  // one per wall
-  std::vector<Frag> pool_;
+  Sample sample_;                              // choose_greedy's scratch
+  std::vector<std::pair<int8_t, int8_t>> sides_;  // partition's scratch: each fragment's end sides
   level::Level out_;
   bool segments_only_ = false;
   std::vector<std::pair<int32_t, Vec2>> unresolved_;
