@@ -3,6 +3,11 @@
 // bytes a slot, whose names sit in one array: a lookup is one probe run and one string
 // compare, where std::unordered_map chased a node per name (a tenth of compiling a
 // million-wall map).
+//
+// Names mostly end in a number (v0, v1, ...; r3_17), and walls name the vertices of
+// their neighbours. Names that differ only in their number's last three bits share a
+// cache line of slots, at their number's place in it, so a run of walls finds its
+// vertices with one cache miss in eight; the lines themselves are spread by the hash.
 #pragma once
 
 #include <algorithm>
@@ -45,16 +50,32 @@ class NameIndex {
 
  private:
   static constexpr int32_t kEmpty = -1;
+  static constexpr size_t kMaxDigits = 9;  // a number's digits read (more belong to the stem)
   struct Slot {
     uint32_t tag = 0;        // high bits of the name's hash: most mismatches end here
     int32_t name = kEmpty;   // into names_ and values_, or kEmpty: a free slot
   };
 
-  // FNV-1a over the name, then mixed (names differ in their last few characters).
+  // Low 32 bits: the first slot to probe; high 32: the tag. A name ending in digits
+  // hashes its stem, its digit count and its number without the last three bits, and
+  // puts those bits in the slot's place within its cache line (8 slots).
   static uint64_t hash(std::string_view name) {
+    size_t stem = name.size();
+    while (stem > 0 && name.size() - stem < kMaxDigits && name[stem - 1] >= '0' && name[stem - 1] <= '9') --stem;
     uint64_t h = 0xcbf29ce484222325ull;
-    for (const char c : name) h = (h ^ uint8_t(c)) * 0x100000001b3ull;
-    return h ^ (h >> 29);
+    for (const char c : name.substr(0, stem)) h = (h ^ uint8_t(c)) * 0x100000001b3ull;
+    const size_t digits = name.size() - stem;
+    if (digits == 0) return mix(h);
+    uint64_t number = 0;
+    for (const char c : name.substr(stem)) number = number * 10 + uint64_t(c - '0');
+    const uint64_t line = mix(h ^ (digits << 56) ^ (number >> 3));
+    const uint64_t place = number & 7;
+    return ((line >> 32) ^ (place * 0x9e3779b9u)) << 32 | ((line & 0xfffffff8u) | place);
+  }
+  static uint64_t mix(uint64_t x) {  // splitmix64's finaliser
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
   }
   static uint32_t tag(uint64_t h) { return uint32_t(h >> 32); }
   size_t mask() const { return slots_.size() - 1; }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 namespace p3d::map::detail {
 namespace {
@@ -18,6 +19,22 @@ TEST(NameIndex, FindsEveryNameItWasGivenAndNoOther) {
   for (int i = 0; i < n; i += 97) EXPECT_EQ(index.find("r" + std::to_string(i) + "_" + std::to_string(i % 7 + 7)), NameIndex::kMissing);
   EXPECT_EQ(index.find(""), NameIndex::kMissing);
   EXPECT_EQ(index.find("r1"), NameIndex::kMissing);  // a prefix of a name is not the name
+}
+
+// Numbered names share cache lines of slots by stem and number: names that only a
+// stem, a leading zero, a long number or the digits alone tell apart stay apart.
+TEST(NameIndex, NumberedNamesWithTheSameNumbersStayApart) {
+  NameIndex index;
+  std::vector<std::string> names;
+  for (int i = 0; i < 3000; ++i)
+    for (const char* stem : {"v", "w", "v_", "", "sector"}) names.push_back(std::string(stem) + std::to_string(i));
+  for (const char* name : {"v01", "v001", "v0001", "12345678901234567890", "22345678901234567890", "x-1", "x-01"})
+    names.push_back(name);
+  for (size_t i = 0; i < names.size(); ++i) ASSERT_TRUE(index.insert(names[i], int(i))) << names[i];
+  for (size_t i = 0; i < names.size(); ++i) ASSERT_EQ(index.find(names[i]), int(i)) << names[i];
+  EXPECT_EQ(index.find("v3000"), NameIndex::kMissing);
+  EXPECT_EQ(index.find("v00001"), NameIndex::kMissing);
+  EXPECT_EQ(index.find("32345678901234567890"), NameIndex::kMissing);
 }
 
 TEST(NameIndex, RefusesANameTwiceAndKeepsTheFirstValue) {
