@@ -3,6 +3,9 @@
 // crossing the spokes.
 #include <gtest/gtest.h>
 
+#include <map>
+
+#include "engine/map/generate.h"
 #include "engine/map/source.h"
 #include "engine/util/rng.h"
 
@@ -71,6 +74,53 @@ TEST(Crossings, AgreeWithBruteForceAroundCrowdedPoints) {
   }
   EXPECT_GT(crossings, 100);  // the cases exercise both kinds
   EXPECT_GT(overlaps, 100);
+}
+
+// Open sectors against a plain count per (sector, point), on generated rooms with walls
+// dropped and vertices duplicated (two vertices at one point are one point).
+std::vector<OpenSector> open_sectors_brute_force(const Source& s) {
+  std::map<std::tuple<int, int64_t, int64_t>, int> balance;
+  for (const Wall& w : s.walls) {
+    if (w.segment) continue;
+    balance[{w.front.sector, s.point(w.v1).x, s.point(w.v1).y}] += 1;
+    balance[{w.front.sector, s.point(w.v2).x, s.point(w.v2).y}] -= 1;
+    if (!w.two_sided()) continue;
+    balance[{w.back.sector, s.point(w.v2).x, s.point(w.v2).y}] += 1;
+    balance[{w.back.sector, s.point(w.v1).x, s.point(w.v1).y}] -= 1;
+  }
+  std::vector<OpenSector> out;
+  for (const auto& [key, b] : balance) {
+    const auto& [sector, x, y] = key;
+    if (b != 0 && (out.empty() || out.back().sector != sector)) out.push_back({sector, {x, y}});
+  }
+  return out;
+}
+
+TEST(OpenSectors, AgreeWithACountPerPoint) {
+  size_t open = 0;
+  for (uint64_t seed = 1; seed <= 10; ++seed) {
+    GenerateOptions options;
+    options.walls = 600;
+    options.seed = seed;
+    options.textures = builtin_textures();
+    Source s = generate_rooms(options);
+    EXPECT_TRUE(find_open_sectors(s).empty()) << "generated rooms are closed";
+    Rng rng(seed);
+    for (int k = 0; k < 8; ++k) s.walls.erase(s.walls.begin() + ptrdiff_t(rng.below(s.walls.size())));
+    for (int k = 0; k < 40; ++k) {  // a wall's end moved to a twin vertex at the same point
+      Wall& w = s.walls[rng.below(s.walls.size())];
+      s.vertices.push_back(s.vertices[size_t(w.v1)]);
+      w.v1 = int(s.vertices.size()) - 1;
+    }
+    const std::vector<OpenSector> expected = open_sectors_brute_force(s), found = find_open_sectors(s);
+    ASSERT_EQ(found.size(), expected.size()) << "seed " << seed;
+    for (size_t i = 0; i < found.size(); ++i) {
+      EXPECT_EQ(found[i].sector, expected[i].sector) << "seed " << seed;
+      EXPECT_EQ(found[i].at, expected[i].at) << "seed " << seed;
+    }
+    open += found.size();
+  }
+  EXPECT_GT(open, 40u);  // most dropped walls open a sector or two
 }
 
 }  // namespace
