@@ -136,6 +136,11 @@ class Builder {
     for (const map::Sector& s : src_.sectors)
       out_.sectors.push_back(
           {s.name, s.floor, s.ceiling, s.light, flat(s.floor_texture), flat(s.ceiling_texture), s.special, s.tag});
+    for (const map::PartOffsets& p : src_.part_offsets) {  // the sides name them by the same index
+      level::PartOffsets& out = out_.part_offsets.emplace_back();
+      std::copy(std::begin(p.x), std::end(p.x), out.x);
+      std::copy(std::begin(p.y), std::end(p.y), out.y);
+    }
     for (size_t i = 0; i < src_.walls.size(); ++i) {
       const map::Wall& w = src_.walls[i];
       level::Wall lw;
@@ -177,14 +182,8 @@ class Builder {
     }
   }
 
-  level::Side side(const map::Side& s) const {
-    level::Side out{s.sector, s.upper, s.middle, s.lower, s.x_offset, s.y_offset, {}, {}, s.light};
-    if (s.parts != map::kNone) {
-      const map::PartOffsets& parts = src_.part_offsets[size_t(s.parts)];
-      std::copy(std::begin(parts.x), std::end(parts.x), out.part_x);
-      std::copy(std::begin(parts.y), std::end(parts.y), out.part_y);
-    }
-    return out;
+  static level::Side side(const map::Side& s) {
+    return {s.sector, s.upper, s.middle, s.lower, s.x_offset, s.y_offset, s.parts, s.light};
   }
 
   static uint32_t wall_flags(const map::Wall& w) {

@@ -13,10 +13,11 @@
 //              u32 n; n x frame { str name, 8 x { i32 image, u8 flip }, u8 bright, u8 hanging, f64 drop }
 //     SECTORS  u32 n; n x { str name, f64 floor, f64 ceiling, i32 light, i32 floor tex, i32 ceiling tex,
 //                           i32 special, i32 tag }
+//     PARTS    u32 n; n x { 3 x f64 part x offset, 3 x f64 part y offset } (upper, middle, lower)
 //     WALLS    u32 n; n x { i64 x1, y1, x2, y2 (1/256 unit), u32 flags, i32 source, i32 special, i32 tag,
 //                           2 x side }
 //              side = { i32 sector, i32 upper, i32 middle, i32 lower, f64 x offset, f64 y offset,
-//                       3 x f64 part x offset, 3 x f64 part y offset, i32 light }
+//                       i32 part offsets (-1: none), i32 light }
 //     FRAGS    u32 n; n x { u32 wall, i32 cut0, i32 cut1, f64 t0, f64 t1 }
 //     NODES    u32 n; n x { u32 splitter wall, i32 front, i32 back, u32 first frag, u32 frag count,
 //                           f64 bbox min x, min y, max x, max y }
@@ -35,7 +36,7 @@
 namespace p3d::level::format {
 
 constexpr char kMagic[8] = {'P', '3', 'D', 'B', 'S', 'P', '\r', '\n'};
-constexpr uint32_t kVersion = 5;
+constexpr uint32_t kVersion = 6;
 constexpr size_t kHeaderSize = 8 + 4 + 4 + 8 + 8;
 
 constexpr uint32_t tag(const char (&s)[5]) {
@@ -43,11 +44,12 @@ constexpr uint32_t tag(const char (&s)[5]) {
          uint32_t(uint8_t(s[3])) << 24;
 }
 constexpr uint32_t kMeta = tag("META"), kPalette = tag("PALT"), kTextures = tag("TEXS"), kSprites = tag("SPRS"),
-                   kSectors = tag("SECS"),
+                   kSectors = tag("SECS"), kPartOffsets = tag("PRTS"),
                    kWalls = tag("WALL"), kFragments = tag("FRAG"), kNodes = tag("NODE"), kLeaves = tag("LEAF"),
                    kThings = tag("THNG"), kGrid = tag("GRID");
 
-constexpr size_t kSideRecord = 4 * 4 + 2 * 8 + 6 * 8 + 4;
+constexpr size_t kSideRecord = 4 * 4 + 2 * 8 + 4 + 4;
+constexpr size_t kPartOffsetsRecord = 6 * 8;
 constexpr size_t kWallRecord = 4 * 8 + 4 * 4 + 2 * kSideRecord;
 constexpr size_t kFragmentRecord = 4 * 3 + 8 * 2;
 constexpr size_t kNodeRecord = 4 * 5 + 8 * 4;

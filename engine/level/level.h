@@ -52,15 +52,21 @@ struct Sector {
   int special = 0, tag = 0;  // Doom's sector special and tag
 };
 
-// Per wall part, as in Side::part_x.
+// Per wall part, as in PartOffsets.
 enum Part { kUpperPart = 0, kMiddlePart = 1, kLowerPart = 2 };
+
+// UDMF's offsets per wall part, added to its side's offsets. Rare, so kept apart from
+// the sides (Level::part_offsets), which they would make twice as big.
+struct PartOffsets {
+  double x[3] = {0, 0, 0}, y[3] = {0, 0, 0};  // by Part
+};
 
 struct Side {
   int sector = kNone;
   int upper = kNone, middle = kNone, lower = kNone;
   double x_offset = 0, y_offset = 0;
-  double part_x[3] = {0, 0, 0}, part_y[3] = {0, 0, 0};  // added to the offsets per Part
-  int light = kNone;  // the wall's own light level, or kNone for its sector's
+  int32_t parts = kNone;  // its PartOffsets in Level::part_offsets, or kNone: all zero
+  int light = kNone;      // the wall's own light level, or kNone for its sector's
 };
 
 enum WallFlag : uint32_t {
@@ -184,6 +190,7 @@ struct Level {
   std::vector<Texture> textures;
   std::vector<Sector> sectors;
   std::vector<Wall> walls;  // in source order
+  std::vector<PartOffsets> part_offsets;  // named by Side::parts
   std::vector<Fragment> fragments;
   std::vector<Node> nodes;  // preorder: node 0 is the root, children come after their parent
   std::vector<Leaf> leaves;
@@ -199,6 +206,8 @@ struct Level {
   // textures are RGBA, shaded by multiplying.
   std::vector<uint32_t> palette, light_maps;
   bool paletted() const { return !light_maps.empty(); }
+  double part_x(const Side& s, int part) const { return s.parts == kNone ? 0 : part_offsets[size_t(s.parts)].x[part]; }
+  double part_y(const Side& s, int part) const { return s.parts == kNone ? 0 : part_offsets[size_t(s.parts)].y[part]; }
   std::optional<Grid> grid;  // levels compiled from .grid maps
   // Derived on load:
   BBox bounds;              // of all walls

@@ -32,6 +32,7 @@ class Reader {
     read_textures();
     read_sprites();
     read_sectors();
+    read_part_offsets();
     read_walls();
     read_fragments();
     read_nodes();
@@ -178,11 +179,21 @@ class Reader {
     s.lower = in_.i32();
     s.x_offset = bounded("side x offset", limits::kMaxOffset);
     s.y_offset = bounded("side y offset", limits::kMaxOffset);
-    for (double& v : s.part_x) v = bounded("side part x offset", limits::kMaxOffset);
-    for (double& v : s.part_y) v = bounded("side part y offset", limits::kMaxOffset);
+    s.parts = in_.i32();
     s.light = in_.i32();
     if (s.light != kNone && (s.light < 0 || s.light > 255)) in_.fail("side light out of range");
     return s;
+  }
+
+  void read_part_offsets() {
+    section(format::kPartOffsets, "PRTS");
+    const uint32_t n = in_.count(format::kPartOffsetsRecord, "part offsets");
+    level_.part_offsets.resize(n);
+    for (PartOffsets& p : level_.part_offsets) {
+      in_.at("PRTS", &p - level_.part_offsets.data());
+      for (double& v : p.x) v = bounded("side part x offset", limits::kMaxOffset);
+      for (double& v : p.y) v = bounded("side part y offset", limits::kMaxOffset);
+    }
   }
 
   void read_walls() {
@@ -335,6 +346,7 @@ class Reader {
       for (const Side& s : w.sides) {
         index(s.sector, kNone, sectors, "side sector");
         for (int t : {s.upper, s.middle, s.lower}) index(t, kNone, textures, "side texture");
+        index(s.parts, kNone, level_.part_offsets.size(), "side part offsets");
       }
       if (w.segment()) {
         if (w.sides[0].middle == kNone || w.sides[1].middle == kNone) in_.fail("segment without a texture");

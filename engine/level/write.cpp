@@ -18,8 +18,7 @@ void write_side(ByteWriter& out, const Side& s) {
   out.i32(s.lower);
   out.f64(s.x_offset);
   out.f64(s.y_offset);
-  for (double v : s.part_x) out.f64(v);
-  for (double v : s.part_y) out.f64(v);
+  out.i32(s.parts);
   out.i32(s.light);
 }
 
@@ -107,6 +106,13 @@ void write_payload(ByteWriter& out, const Level& level) {
     out.i32(s.tag);
   }
 
+  out.u32(format::kPartOffsets);
+  out.u32(static_cast<uint32_t>(level.part_offsets.size()));
+  for (const PartOffsets& p : level.part_offsets) {
+    for (double v : p.x) out.f64(v);
+    for (double v : p.y) out.f64(v);
+  }
+
   out.u32(format::kWalls);
   out.u32(static_cast<uint32_t>(level.walls.size()));
   for (const Wall& w : level.walls) {
@@ -180,7 +186,7 @@ size_t encoded_size_estimate(const Level& level) {
   for (const Texture& t : level.textures) bytes += 16 + t.name.size() + t.texels.size() * (level.paletted() ? 2 : 4);
   for (const Sector& s : level.sectors) bytes += 48 + s.name.size();
   for (const SpriteFrame& f : level.sprite_frames) bytes += 64 + f.name.size();
-  bytes += 12 * level.sprite_images.size() + 216 * level.walls.size() + 28 * level.fragments.size() +
+  bytes += 12 * level.sprite_images.size() + format::kWallRecord * level.walls.size() + format::kPartOffsetsRecord * level.part_offsets.size() + 28 * level.fragments.size() +
            52 * level.nodes.size() + 4 * level.leaves.size() + 40 * level.things.size();
   if (level.grid) bytes += 24 + level.grid->solid.size() + level.grid->faces.size() * 4;
   return bytes;

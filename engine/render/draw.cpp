@@ -313,7 +313,7 @@ void Canvas::near_plane(int x, int y0, int y1, int sector, bool ceiling) {
 double Canvas::texture_u(const WallHit& hit, int part) const {
   const level::Wall& w = level_->walls[hit.wall];
   const level::Side& side = w.sides[hit.side];
-  return (hit.side == 0 ? hit.t : 1 - hit.t) * w.length + side.x_offset + side.part_x[part];
+  return (hit.side == 0 ? hit.t : 1 - hit.t) * w.length + side.x_offset + level_->part_x(side, part);
 }
 
 // Texture row v at screen row y is v0 + y * step, v0 = anchor - eye + offsets at row
@@ -328,7 +328,7 @@ void Canvas::wall_span(int x, int y0, int y1, const Part& part, const WallHit& h
   const level::Texture& tex = level_->textures[part.texture];
   const int64_t u = to_int(texture_u(hit, part.part));
   const double inv_scale = hit.depth / view_->d;
-  const double v0 = part.anchor - view_->eye + side.y_offset + side.part_y[part.part] + (0.5 - view_->half_h) * inv_scale;
+  const double v0 = part.anchor - view_->eye + side.y_offset + level_->part_y(side, part.part) + (0.5 - view_->half_h) * inv_scale;
   const int64_t period = int64_t(tex.height) << 16;
   auto reduce = [&](int64_t v) { return tex.pow2_height ? v & (period - 1) : level::floor_mod(v, period); };
   const int64_t step = reduce(std::llround(inv_scale * kFix));
@@ -355,7 +355,7 @@ void Canvas::draw_masked(int x, const Step& m) {
                                                        : std::min(s.ceiling, b.ceiling);
   const int64_t u = to_int(texture_u(m.hit, level::kMiddlePart));
   const double inv_scale = m.hit.depth / view_->d;
-  const double v0 = anchor - view_->eye + side.y_offset + side.part_y[level::kMiddlePart] +
+  const double v0 = anchor - view_->eye + side.y_offset + level_->part_y(side, level::kMiddlePart) +
                     (0.5 - view_->half_h) * inv_scale;
   const int64_t step = std::llround(inv_scale * kFix);
   int64_t v = std::llround(v0 * kFix) + int64_t(m.top) * step;

@@ -170,6 +170,9 @@ TEST_F(LevelIo, RejectsInconsistentStructure) {
       {"sector light", [](Level& l) { l.sectors[1].light = 300; }, "x.bsp: section SECS, record 1: sector light out of range"},
       {"nan height", [](Level& l) { l.sectors[0].floor = std::nan(""); }, "x.bsp: section SECS, record 0: sector floor is not finite"},
       {"bad texture index", [](Level& l) { l.walls[2].sides[0].middle = 77; }, "x.bsp: section WALL, record 2: side texture index 77 is out of range"},
+      {"bad part offsets index", [](Level& l) { l.walls[2].sides[1].parts = 0; }, "x.bsp: section WALL, record 2: side part offsets index 0 is out of range"},
+      {"part offset range", [](Level& l) { l.walls[2].sides[1].parts = 0, l.part_offsets.emplace_back().y[2] = 1e300; },
+       "x.bsp: section PRTS, record 0: side part y offset is out of range"},
       {"two parents", [](Level& l) { l.nodes[0].child[1] = l.nodes[0].child[0]; }, nullptr},
       {"fragment off its line",
        [](Level& l) {
@@ -279,7 +282,8 @@ TEST_F(LevelIo, PalettedLevelsAndDoomDataRoundTrip) {
   l.walls[3].special = 1;
   l.walls[3].tag = 7;
   l.walls[3].flags |= kImpassable | kSecret;
-  l.walls[3].sides[0].part_x[kUpperPart] = 8;
+  l.walls[3].sides[0].parts = int32_t(l.part_offsets.size());
+  l.part_offsets.emplace_back().x[kUpperPart] = 8;
   l.walls[3].sides[0].light = 200;
   l.sectors[2].special = 9;
   l.sectors[2].tag = 7;
@@ -297,7 +301,7 @@ TEST_F(LevelIo, PalettedLevelsAndDoomDataRoundTrip) {
   EXPECT_EQ(back.walls[3].source, 4711);
   EXPECT_EQ(back.walls[3].tag, 7);
   EXPECT_EQ(back.walls[3].flags, l.walls[3].flags);
-  EXPECT_EQ(back.walls[3].sides[0].part_x[kUpperPart], 8);
+  EXPECT_EQ(back.part_x(back.walls[3].sides[0], kUpperPart), 8);
   EXPECT_EQ(back.walls[3].sides[0].light, 200);
   EXPECT_EQ(back.sectors[2].ceiling, l.sectors[2].ceiling);
   EXPECT_EQ(back.sectors[2].special, 9);
