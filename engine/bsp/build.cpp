@@ -110,10 +110,10 @@ class Builder {
     out_.leaves.reserve(room + 1);
     pending_ = all.size();
     build_tree(std::move(all), vertex_bounds);
-    level::finalize(out_);
+    level::derive_geometry(out_);
     compute_bounding_boxes();
     resolve_leaves_by_ray_cast();
-    level::finalize(out_);  // again: plain segments look up their sector in the finished tree
+    level::place_in_sectors(out_);  // in the finished tree, whose leaves all know their sector
     check_player_start();
     if (stats) fill_stats(*stats);
     return std::move(out_);
@@ -284,7 +284,7 @@ class Builder {
     const size_t k = std::min<size_t>(m, std::max(1, opt_.greedy_candidates));
     const size_t samples = std::min<size_t>(m, std::max(1, opt_.greedy_sample));
     sample_.clear();
-    for (size_t i = 0; i < samples; ++i) sample_.add(frags[samples == m ? i : rng_.below(m)], *this);
+    for (size_t i = 0; i < samples; ++i) sample_.add(frags[samples == m ? i : rng_.below(m)]);
 
     size_t best = 0;
     double best_cost = INFINITY;
@@ -298,27 +298,28 @@ class Builder {
 
   // The fragments a candidate splitter is scored against, laid out for the scoring
   // loop: each end's point where it is an original wall end (most are), else the
-  // fragment itself for the exact crossing test; each wall's length for slivers.
+  // fragment itself for the exact crossing test; each wall's length for slivers,
+  // measured when first split.
   struct Sample {
     std::vector<IPoint> ends;        // 2 per fragment
     std::vector<const Frag*> frags;
     std::vector<uint8_t> cut;        // bit k: end k is a crossing
-    std::vector<double> length;
+    std::vector<double> length;      // < 0: not measured yet
 
     void clear() { ends.clear(), frags.clear(), cut.clear(), length.clear(); }
     size_t size() const { return frags.size(); }
-    void add(const Frag& f, const Builder& b) {
+    void add(const Frag& f) {
       const IPoint far{f.line.a.x + f.line.d.x, f.line.a.y + f.line.d.y};
       for (int k = 0; k < 2; ++k) ends.push_back(f.cut[k] != level::kNone ? IPoint{} : f.t[k] == 0 ? f.line.a : far);
       cut.push_back(uint8_t((f.cut[0] != level::kNone) | (f.cut[1] != level::kNone) << 1));
       frags.push_back(&f);
-      length.push_back(b.wall_length(f.wall));
+      length.push_back(-1);
     }
   };
 
   // Greedy's cost of splitting along l (splits, imbalance, slivers), or nothing once
   // it cannot come under `to_beat`.
-  std::optional<double> score(const Line& l, double to_beat) const {
+  std::optional<double> score(const Line& l, double to_beat) {
     const size_t n = sample_.size();
     int64_t front = 0, back = 0, splits = 0, slivers = 0;
     for (size_t i = 0; i < n; ++i) {
@@ -346,7 +347,9 @@ class Builder {
         ++splits;
         const Frag& f = *sample_.frags[i];
         const double t = geom::crossing_param(f.line, l);
-        slivers += std::min(t - f.t[0], f.t[1] - t) * sample_.length[i] < kSliverLength;
+        double& length = sample_.length[i];
+        if (length < 0) length = wall_length(f.wall);
+        slivers += std::min(t - f.t[0], f.t[1] - t) * length < kSliverLength;
       }
     }
     return opt_.split_weight * double(splits) + opt_.balance_weight * std::fabs(double(front - back)) +

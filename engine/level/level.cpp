@@ -2,6 +2,7 @@
 // sector lookup (the oracle) and leaf cells.
 #include "engine/level/level.h"
 
+#include <algorithm>
 #include <atomic>
 #include <bit>
 #include <cmath>
@@ -106,8 +107,11 @@ void attach_things(Level& level) {
 }  // namespace
 
 void finalize(Level& level) {
-  static std::atomic<uint64_t> generations{0};
-  level.generation = ++generations;
+  derive_geometry(level);
+  place_in_sectors(level);
+}
+
+void derive_geometry(Level& level) {
   level.bounds = BBox{};
   for (Wall& w : level.walls) {
     w.a = geom::to_world(w.p1);
@@ -132,9 +136,17 @@ void finalize(Level& level) {
     }
   }
   measure_sprites(level);
+}
+
+void place_in_sectors(Level& level) {
+  static std::atomic<uint64_t> generations{0};
+  level.generation = ++generations;
   if (level.nodes.empty() || level.leaves.empty()) return;
+  // Where every leaf holds one sector (a map of plain segments), so does every point.
+  const bool one_sector = std::all_of(level.leaves.begin(), level.leaves.end(),
+                                      [&](const Leaf& l) { return l.sector == level.leaves[0].sector; });
   for (Wall& w : level.walls)
-    if (w.segment()) w.segment_sector = level.sector_at((w.a + w.b) * 0.5);
+    if (w.segment()) w.segment_sector = one_sector ? level.leaves[0].sector : level.sector_at((w.a + w.b) * 0.5);
   for (Thing& t : level.things)
     if (t.sector == kNone) t.sector = level.sector_at(t.pos);
   attach_things(level);

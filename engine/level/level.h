@@ -219,9 +219,14 @@ struct Level {
   int sector_at(Vec2 p) const { return leaves[leaf_at(p)].sector; }
 };
 
-// Fills the derived fields (wall and fragment points, node lines, bounds, the
-// sectors plain segments and things stand in, where each thing's sprite attaches to
-// the tree). Call again after changing leaf sectors.
+// Fills the derived fields: derive_geometry, then place_in_sectors.
+void finalize(Level& level);
+// The fields geometry alone decides: wall and fragment points, node lines, bounds,
+// sprite reaches.
+void derive_geometry(Level& level);
+// The sectors plain segments and things stand in (by point location) and where each
+// thing's sprite attaches to the tree. Needs derive_geometry and the leaves' sectors:
+// call again after changing them.
 //
 // A sprite is a picture facing the viewer, so it may reach up to SpriteFrame::reach
 // sideways from its thing, across splitters. It attaches to the deepest node whose
@@ -229,7 +234,7 @@ struct Level {
 // these discs: a subtree is skipped only when every column it could touch was closed
 // by walls visited earlier, which lie in front of every point of the subtree's cell.
 // So culling never hides a visible sprite pixel.
-void finalize(Level& level);
+void place_in_sectors(Level& level);
 
 // What changes while a level is played, beside the immutable level: sector heights,
 // flats, light and special (doors and lifts move, floors change their flat), wall
