@@ -177,7 +177,7 @@ class GridParser {
       grid.solid[i] = !is_empty_tile(tiles_[i]);
       if (grid.solid[i]) tile_texture[i] = legend_.at(tiles_[i]);
     }
-    grid_to_walls(src_, grid, tile_texture, legend_.begin()->second, 0);
+    grid_to_walls(src_, std::move(grid), tile_texture, legend_.begin()->second, 0);
     const FileLoc rows = file_.at(map_line_);
     for (Wall& w : src_.walls) w.loc = rows;
   }
@@ -211,8 +211,59 @@ class GridParser {
 
 }  // namespace
 
-void grid_to_walls(Source& src, const GridInfo& g, const std::vector<int>& tile_texture, int border_texture, int sector) {
-  GridInfo grid = g;
+namespace {
+
+// The runs of grid_to_walls: along each grid line, the longest stretches of edges
+// between an empty and a solid cell with the empty cell on the same side and one
+// texture. horizontal(c0, c1, r, north_empty, texture) for line y = r, cells c0..c1-1;
+// vertical(r0, r1, c, east_empty, texture) for line x = c.
+template <typename TextureOf, typename Horizontal, typename Vertical>
+void for_each_run(const GridInfo& grid, const TextureOf& texture_of, Horizontal&& horizontal, Vertical&& vertical) {
+  for (int r = 0; r <= grid.rows; ++r)
+    for (int c = 0; c < grid.cols;) {
+      const bool above = !grid.is_solid(c, r), below = !grid.is_solid(c, r - 1);
+      if (above == below) {
+        ++c;
+        continue;
+      }
+      const int texture = above ? texture_of(c, r - 1) : texture_of(c, r);
+      int end = c + 1;
+      while (end < grid.cols && !grid.is_solid(end, r) == above && !grid.is_solid(end, r - 1) == below &&
+             (above ? texture_of(end, r - 1) : texture_of(end, r)) == texture)
+        ++end;
+      horizontal(c, end, r, above, texture);
+      c = end;
+    }
+  for (int c = 0; c <= grid.cols; ++c)
+    for (int r = 0; r < grid.rows;) {
+      const bool east = !grid.is_solid(c, r), west = !grid.is_solid(c - 1, r);
+      if (east == west) {
+        ++r;
+        continue;
+      }
+      const int texture = east ? texture_of(c - 1, r) : texture_of(c, r);
+      int end = r + 1;
+      while (end < grid.rows && !grid.is_solid(c, end) == east && !grid.is_solid(c - 1, end) == west &&
+             (east ? texture_of(c - 1, end) : texture_of(c, end)) == texture)
+        ++end;
+      vertical(r, end, c, east, texture);
+      r = end;
+    }
+}
+
+}  // namespace
+
+void grid_to_walls(Source& src, GridInfo grid, const std::vector<int>& tile_texture, int border_texture, int sector) {
+  auto texture_of = [&](int c, int r) {
+    return c < 0 || r < 0 || c >= grid.cols || r >= grid.rows ? border_texture : tile_texture[size_t(r) * grid.cols + c];
+  };
+  // Counted first: a grid with too many walls is refused before any is made.
+  size_t walls = 0;
+  auto count = [&](int, int, int, bool, int) { ++walls; };
+  for_each_run(grid, texture_of, count, count);
+  if (walls > limits::kMaxWalls) throw Error(FileLoc{src.path.string(), 0}, limits::too_many_walls());
+  src.walls.reserve(src.walls.size() + walls);
+
   grid.faces.assign(size_t(grid.cols) * grid.rows * 4, kNone);
   std::unordered_map<int64_t, int> vertex_at;
   auto vertex = [&](int gx, int gy) {
@@ -226,57 +277,30 @@ void grid_to_walls(Source& src, const GridInfo& g, const std::vector<int>& tile_
     }
     return it->second;
   };
-  auto texture_of = [&](int c, int r) {
-    return c < 0 || r < 0 || c >= grid.cols || r >= grid.rows ? border_texture : tile_texture[size_t(r) * grid.cols + c];
-  };
   auto add_wall = [&](int v1, int v2, int texture) {
     Wall w;
     w.v1 = v1;
     w.v2 = v2;
     w.front.sector = sector;
     w.front.middle = texture;
-    if (src.walls.size() >= limits::kMaxWalls) throw Error(FileLoc{src.path.string(), 0}, limits::too_many_walls());
     src.walls.push_back(w);
     return int(src.walls.size() - 1);
   };
   auto set_face = [&](int c, int r, int face, int wall) { grid.faces[(size_t(r) * grid.cols + c) * 4 + face] = wall; };
 
   // Horizontal grid lines y = r: the empty cell above (north) or below (south) gets a wall facing it.
-  for (int r = 0; r <= grid.rows; ++r)
-    for (int c = 0; c < grid.cols;) {
-      const bool above = !grid.is_solid(c, r), below = !grid.is_solid(c, r - 1);
-      if (above == below) {
-        ++c;
-        continue;
-      }
-      const int texture = above ? texture_of(c, r - 1) : texture_of(c, r);
-      int end = c + 1;
-      while (end < grid.cols && !grid.is_solid(end, r) == above && !grid.is_solid(end, r - 1) == below &&
-             (above ? texture_of(end, r - 1) : texture_of(end, r)) == texture)
-        ++end;
-      const int wall = above ? add_wall(vertex(end, r), vertex(c, r), texture)   // walking west: north on the right
-                             : add_wall(vertex(c, r), vertex(end, r), texture);  // walking east: south on the right
-      for (int k = c; k < end; ++k) above ? set_face(k, r, kFaceSouth, wall) : set_face(k, r - 1, kFaceNorth, wall);
-      c = end;
-    }
+  auto horizontal = [&](int c, int end, int r, bool above, int texture) {
+    const int wall = above ? add_wall(vertex(end, r), vertex(c, r), texture)   // walking west: north on the right
+                           : add_wall(vertex(c, r), vertex(end, r), texture);  // walking east: south on the right
+    for (int k = c; k < end; ++k) above ? set_face(k, r, kFaceSouth, wall) : set_face(k, r - 1, kFaceNorth, wall);
+  };
   // Vertical grid lines x = c: the empty cell to the east or west.
-  for (int c = 0; c <= grid.cols; ++c)
-    for (int r = 0; r < grid.rows;) {
-      const bool east = !grid.is_solid(c, r), west = !grid.is_solid(c - 1, r);
-      if (east == west) {
-        ++r;
-        continue;
-      }
-      const int texture = east ? texture_of(c - 1, r) : texture_of(c, r);
-      int end = r + 1;
-      while (end < grid.rows && !grid.is_solid(c, end) == east && !grid.is_solid(c - 1, end) == west &&
-             (east ? texture_of(c - 1, end) : texture_of(c, end)) == texture)
-        ++end;
-      const int wall = east ? add_wall(vertex(c, r), vertex(c, end), texture)   // walking north: east on the right
-                            : add_wall(vertex(c, end), vertex(c, r), texture);  // walking south: west on the right
-      for (int k = r; k < end; ++k) east ? set_face(c, k, kFaceWest, wall) : set_face(c - 1, k, kFaceEast, wall);
-      r = end;
-    }
+  auto vertical = [&](int r, int end, int c, bool east, int texture) {
+    const int wall = east ? add_wall(vertex(c, r), vertex(c, end), texture)   // walking north: east on the right
+                          : add_wall(vertex(c, end), vertex(c, r), texture);  // walking south: west on the right
+    for (int k = r; k < end; ++k) east ? set_face(c, k, kFaceWest, wall) : set_face(c - 1, k, kFaceEast, wall);
+  };
+  for_each_run(grid, texture_of, horizontal, vertical);
   src.grid = std::move(grid);
 }
 

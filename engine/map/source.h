@@ -169,8 +169,7 @@ Source load_source(const std::filesystem::path& path, const LoadOptions& options
 // Walls along the edges between empty and solid cells (outside the grid counts as
 // solid), collinear runs of one texture merged, each facing its empty cell; fills
 // source.vertices, source.walls and source.grid. tile_texture[i] is cell i's texture.
-void grid_to_walls(Source& source, const GridInfo& grid, const std::vector<int>& tile_texture, int border_texture,
-                   int sector);
+void grid_to_walls(Source& source, GridInfo grid, const std::vector<int>& tile_texture, int border_texture, int sector);
 
 // Geometry and consistency checks shared by every source format: zero-length,
 // crossing and overlapping walls, sector closure, heights, required textures.
