@@ -40,13 +40,19 @@ void write_texels(ByteWriter& out, const Texture& t, bool paletted) {
   for (size_t x = 0; x < w; ++x)
     for (size_t y = 0; y < h; ++y) rows[y * w + x] = t.indices[x * h + y];
   uint8_t* bits = out.extend((w * h + 7) / 8);
-  std::memset(bits, 0, (w * h + 7) / 8);
-  for (size_t x = 0; x < w; ++x)
-    for (size_t y = 0; y < h; ++y)
-      if (t.texels[x * h + y] >> 24) {
-        const size_t p = y * w + x;
-        bits[p / 8] |= uint8_t(1u << (p % 8));
-      }
+  if (!t.holes) {  // most textures: every bit set
+    std::memset(bits, 0xFF, w * h / 8);
+    if (w * h % 8) bits[w * h / 8] = uint8_t((1u << (w * h % 8)) - 1);
+    return;
+  }
+  uint8_t byte = 0;
+  size_t p = 0;
+  for (size_t y = 0; y < h; ++y)
+    for (size_t x = 0; x < w; ++x, ++p) {
+      byte |= uint8_t((t.texels[x * h + y] >> 24 != 0) << (p % 8));
+      if (p % 8 == 7) bits[p / 8] = byte, byte = 0;
+    }
+  if (p % 8 != 0) bits[p / 8] = byte;
 }
 
 void write_payload(ByteWriter& out, const Level& level) {

@@ -4,6 +4,8 @@
 // PNAMES: i32 count, count x name[8].
 #include "engine/wad/art.h"
 
+#include <algorithm>
+
 #include "engine/util/bytes.h"
 #include "engine/util/error.h"
 
@@ -118,32 +120,45 @@ void Art::read_texture_lump(const Lump& lump, const std::vector<std::string>& pa
   }
 }
 
+const Art::DecodedPatch& Art::patch(const std::string& name) const {
+  if (const auto it = patches_.find(name); it != patches_.end()) return it->second;
+  DecodedPatch& out = patches_[name];
+  const Lump* lump = stack_.find(name);
+  if (!lump) {
+    out.problem = "patch " + printable(name) + " is missing";
+    return out;
+  }
+  try {
+    out.image = decode_picture(lump->bytes, "patch " + printable(name));
+  } catch (const Error& e) {
+    out.problem = e.what();
+  }
+  return out;
+}
+
 std::optional<IndexedImage> Art::texture(std::string_view name, std::vector<std::string>& problems) const {
   const auto it = textures_.find(normalize_name(name));
   if (it == textures_.end()) return std::nullopt;
   const TextureDef& def = it->second;
   IndexedImage img(def.width, def.height);
   for (const PatchPlacement& p : def.patches) {
-    const Lump* lump = stack_.find(p.patch);
-    if (!lump) {
-      problems.push_back("texture " + def.name + ": patch " + printable(p.patch) + " is missing");
+    const DecodedPatch& decoded = this->patch(p.patch);
+    if (!decoded.image) {
+      problems.push_back("texture " + def.name + ": " + decoded.problem);
       continue;
     }
-    IndexedImage patch;
-    try {
-      patch = decode_picture(lump->bytes, "patch " + printable(p.patch));
-    } catch (const Error& e) {
-      problems.push_back("texture " + def.name + ": " + e.what());
-      continue;
-    }
-    for (int y = 0; y < patch.height; ++y) {
-      const int ty = p.y + y;
-      if (ty < 0 || ty >= def.height) continue;
-      for (int x = 0; x < patch.width; ++x) {
-        const int tx = p.x + x;
-        if (tx < 0 || tx >= def.width || !patch.opaque[patch.at(x, y)]) continue;
-        img.indices[img.at(tx, ty)] = patch.indices[patch.at(x, y)];
-        img.opaque[img.at(tx, ty)] = 1;
+    const IndexedImage& patch = *decoded.image;
+    // The patch's rows and columns that land on the canvas; its holes keep what is below.
+    const int y0 = std::max(0, -p.y), y1 = std::min(patch.height, def.height - p.y);
+    const int x0 = std::max(0, -p.x), x1 = std::min(patch.width, def.width - p.x);
+    for (int y = y0; y < y1; ++y) {
+      const uint8_t* from = &patch.indices[patch.at(x0, y)];
+      const uint8_t* shows = &patch.opaque[patch.at(x0, y)];
+      uint8_t* to = &img.indices[img.at(p.x + x0, p.y + y)];
+      uint8_t* covered = &img.opaque[img.at(p.x + x0, p.y + y)];
+      for (int i = 0; i < x1 - x0; ++i) {
+        to[i] = shows[i] ? from[i] : to[i];
+        covered[i] |= shows[i];
       }
     }
   }

@@ -56,12 +56,19 @@ class Art {
 
  private:
   void read_texture_lump(const Lump& lump, const std::vector<std::string>& patch_names);
+  // A patch decoded once however many textures use it, or the problem with it.
+  struct DecodedPatch {
+    std::optional<IndexedImage> image;
+    std::string problem;
+  };
+  const DecodedPatch& patch(const std::string& name) const;
 
   const Stack& stack_;
   std::vector<uint32_t> palette_;
   std::vector<uint8_t> colormap_;
   std::map<std::string, TextureDef> textures_;  // TEXTURE1, then TEXTURE2: the first definition of a name wins
   std::map<std::string, const Lump*> flats_;
+  mutable std::map<std::string, DecodedPatch, std::less<>> patches_;
 };
 
 // The name of the flat that means "sky" on a ceiling.

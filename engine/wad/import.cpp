@@ -82,8 +82,9 @@ class Importer {
     t.name = name;
     t.image = image::Image(img.width, img.height);
     t.indices = img.indices;
+    const uint32_t* palette = art_.palette().data();
     for (size_t p = 0; p < img.indices.size(); ++p)
-      t.image.pixels[p] = img.opaque[p] ? art_.palette()[img.indices[p]] : 0u;
+      t.image.pixels[p] = palette[img.indices[p]] & (img.opaque[p] ? ~0u : 0u);  // a hole: 0, transparent
     t.loc = FileLoc{data_.where, 0};
     src_.textures.push_back(std::move(t));
     return int(src_.textures.size()) - 1;
