@@ -326,7 +326,7 @@ class Builder {
       // Stop once this candidate cannot win (the same choice, sooner): splits and
       // slivers only add, and the fragments left can close the imbalance by at most
       // their number.
-      if (i % 16 == 0 && i > 0) {
+      if (i % 8 == 0 && i > 0) {
         const double left = double(n - i);
         if (opt_.split_weight * double(splits) + opt_.sliver_weight * double(slivers) +
                 opt_.balance_weight * std::max(0.0, std::fabs(double(front - back)) - left) >=
