@@ -75,8 +75,6 @@ struct Task {
   int depth;
 };
 
-enum class Place { kFront, kBack, kOn, kSplit };
-
 class Builder {
  public:
   // A source given as `consumable` (the same object as src) loses its walls, vertices
@@ -553,8 +551,8 @@ class Builder {
   map::Source* consumable_;
   const Options& opt_;
   Rng rng_;
-  std::vector<Line> lines_;  // one per wall
-  Sample sample_;                              // choose_greedy's scratch
+  std::vector<Line> lines_;                       // one per wall
+  Sample sample_;                                 // choose_greedy's scratch
   std::vector<std::pair<int8_t, int8_t>> sides_;  // partition's scratch: each fragment's end sides
   level::Level out_;
   bool segments_only_ = false;

@@ -192,7 +192,8 @@ size_t encoded_size_estimate(const Level& level) {
   for (const Texture& t : level.textures) bytes += 16 + t.name.size() + t.texels.size() * (level.paletted() ? 2 : 4);
   for (const Sector& s : level.sectors) bytes += 48 + s.name.size();
   for (const SpriteFrame& f : level.sprite_frames) bytes += 64 + f.name.size();
-  bytes += 12 * level.sprite_images.size() + format::kWallRecord * level.walls.size() + format::kPartOffsetsRecord * level.part_offsets.size() + 28 * level.fragments.size() +
+  bytes += 12 * level.sprite_images.size() + format::kWallRecord * level.walls.size() +
+           format::kPartOffsetsRecord * level.part_offsets.size() + 28 * level.fragments.size() +
            52 * level.nodes.size() + 4 * level.leaves.size() + 40 * level.things.size();
   if (level.grid) bytes += 24 + level.grid->solid.size() + level.grid->faces.size() * 4;
   return bytes;
