@@ -130,7 +130,7 @@ std::string TestMap::udmf() const {
   for (const Side& s : sides)
     t += "sidedef { sector = " + std::to_string(s.sector) + "; texturetop = \"" + s.upper + "\"; texturebottom = \"" +
          s.lower + "\"; texturemiddle = \"" + s.middle + "\"; offsetx = " + std::to_string(s.x_offset) +
-         "; offsety = " + std::to_string(s.y_offset) + "; }\n";
+         "; offsety = " + std::to_string(s.y_offset) + "; " + s.udmf_fields + " }\n";
   for (const Sector& s : sectors)
     t += "sector { heightfloor = " + std::to_string(s.floor) + "; heightceiling = " + std::to_string(s.ceiling) +
          "; texturefloor = \"" + s.floor_flat + "\"; textureceiling = \"" + s.ceiling_flat +

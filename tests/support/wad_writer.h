@@ -34,6 +34,7 @@ struct TestMap {
     int x_offset = 0, y_offset = 0;
     std::string upper = "-", lower = "-", middle = "-";
     int sector = 0;
+    std::string udmf_fields;  // more of the sidedef's UDMF fields ("offsety_mid = 8;"); the binary format has none
   };
   struct Sector {
     int floor = 0, ceiling = 128;

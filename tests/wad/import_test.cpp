@@ -447,6 +447,49 @@ TEST(Import, UpperAndLowerTexturesFollowDoomsRules) {
   EXPECT_NEAR(lower.front(), 40, 1);
 }
 
+// UDMF's per-part offsets move their part's texture only; a middle's equals the side's
+// own offset of the binary format, pixel for pixel.
+TEST(Import, UdmfPartOffsetsMoveOnlyTheirPart) {
+  TestMap m = two_rooms();
+  m.sectors[0].light = m.sectors[1].light = 255;
+  const render::Camera east{{100, 128}, 41, 0, 90};
+  auto parts = [&](const TestMap& map) {  // the column's upper and lower runs of WALL rows
+    const std::vector<int> rows = texel_rows(build(map, true).level, east, 80);
+    std::vector<int> upper, lower;
+    size_t y = 0;
+    while (y < rows.size() && rows[y] < 0) ++y;
+    for (; y < rows.size() && rows[y] >= 0; ++y) upper.push_back(rows[y]);
+    size_t end = rows.size();
+    while (end > 0 && rows[end - 1] < 0) --end;
+    for (; end > 0 && rows[end - 1] >= 0; --end) lower.insert(lower.begin(), rows[end - 1]);
+    return std::make_pair(upper, lower);
+  };
+  auto shifted = [](std::vector<int> rows, int by) {
+    for (int& r : rows) r = (r + by) % 72;
+    return rows;
+  };
+  const auto [upper, lower] = parts(m);
+  ASSERT_FALSE(upper.empty());
+  ASSERT_FALSE(lower.empty());
+  TestMap::Side& front = m.sides[size_t(m.lines[2].front)];
+  front.udmf_fields = "offsety_top = 8;";
+  EXPECT_EQ(parts(m), std::make_pair(shifted(upper, 8), lower));
+  front.udmf_fields = "offsety_bottom = 5; offsety_mid = 30;";  // no middle texture: the mid offset shows nowhere
+  EXPECT_EQ(parts(m), std::make_pair(upper, shifted(lower, 5)));
+
+  const render::Camera west{{128, 128}, 41, 180, 90};
+  TestMap plain = two_rooms(), udmf = two_rooms();
+  plain.sides[size_t(plain.lines[0].front)].y_offset = 8;
+  plain.sides[size_t(plain.lines[0].front)].x_offset = 3;
+  udmf.sides[size_t(udmf.lines[0].front)].udmf_fields = "offsety_mid = 8; offsetx_mid = 3;";
+  render::Frame a(160, 100), b(160, 100), c(160, 100);
+  render::make_renderer("bsp")->render(build(plain).level, west, a);
+  render::make_renderer("bsp")->render(build(udmf, true).level, west, b);
+  render::make_renderer("bsp")->render(build(two_rooms(), true).level, west, c);
+  EXPECT_EQ(a.pixels, b.pixels);
+  EXPECT_NE(b.pixels, c.pixels);  // the offsets show
+}
+
 TEST(Import, MaskedMiddlesShowWhatIsBehindAndAreNotTiled) {
   TestMap m = two_rooms();
   m.sectors[0].light = 255;     // full bright: every texel keeps its palette index
