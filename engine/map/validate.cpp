@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <span>
 #include <unordered_map>
 
 #include "engine/map/source.h"
@@ -62,12 +63,8 @@ struct PointHash {
 // paired). This keeps a star or fan of n walls at one point at O(n log n), not n^2.
 void test_cell(const Source& src, const std::vector<uint32_t>& cell_walls, ContactList& contacts) {
   constexpr size_t kCrowded = 32;
-  if (cell_walls.size() <= kCrowded) {  // most cells: no copy
-    for (size_t p = 0; p < cell_walls.size(); ++p)
-      for (size_t q = p + 1; q < cell_walls.size(); ++q) contacts.test(cell_walls[p], cell_walls[q]);
-    return;
-  }
-  std::vector<uint32_t> walls = cell_walls;
+  std::span<const uint32_t> walls = cell_walls;  // most cells are never copied
+  std::vector<uint32_t> rest;                     // what is left once a crowded point's spokes are done
   while (walls.size() > kCrowded) {
     std::unordered_map<IPoint, int, PointHash> uses;
     for (uint32_t w : walls) ++uses[src.point(src.walls[w].v1)], ++uses[src.point(src.walls[w].v2)];
@@ -104,7 +101,8 @@ void test_cell(const Source& src, const std::vector<uint32_t>& cell_walls, Conta
     }
     for (const auto& spoke : spokes)
       for (uint32_t o : others) contacts.test(std::min(spoke.second, o), std::max(spoke.second, o));
-    walls = std::move(others);
+    rest = std::move(others);
+    walls = rest;
   }
   for (size_t p = 0; p < walls.size(); ++p)
     for (size_t q = p + 1; q < walls.size(); ++q) contacts.test(walls[p], walls[q]);

@@ -398,6 +398,20 @@ int last_wall_row(const std::vector<int>& rows) {
   return -1;
 }
 
+// A column through a two-sided line's opening: its first run of WALL rows from the top
+// is the upper part, its last from the bottom the lower part (the far room's walls show
+// through the opening between them).
+std::pair<std::vector<int>, std::vector<int>> upper_and_lower(const std::vector<int>& rows) {
+  std::vector<int> upper, lower;
+  size_t y = 0;
+  while (y < rows.size() && rows[y] < 0) ++y;
+  for (; y < rows.size() && rows[y] >= 0; ++y) upper.push_back(rows[y]);
+  size_t end = rows.size();
+  while (end > 0 && rows[end - 1] < 0) --end;
+  for (; end > 0 && rows[end - 1] >= 0; --end) lower.insert(lower.begin(), rows[end - 1]);
+  return {upper, lower};
+}
+
 TEST(Import, DoomPeggingAndTexturesOf72RowsWrap) {
   // One room 0..256 with a 96-high ceiling, lit full bright; the east wall faces the camera.
   TestMap m;
@@ -422,19 +436,7 @@ TEST(Import, UpperAndLowerTexturesFollowDoomsRules) {
   TestMap m = two_rooms();
   m.sectors[0].light = m.sectors[1].light = 255;
   const render::Camera camera{{100, 128}, 41, 0, 90};
-  // The first run of WALL pixels from the top is the upper part, the last from the
-  // bottom the lower part (B's far walls show through the opening between them).
-  auto parts = [&](const TestMap& map) {
-    const std::vector<int> rows = texel_rows(build(map).level, camera, 80);
-    std::vector<int> upper, lower;
-    size_t y = 0;
-    while (y < rows.size() && rows[y] < 0) ++y;
-    for (; y < rows.size() && rows[y] >= 0; ++y) upper.push_back(rows[y]);
-    size_t end = rows.size();
-    while (end > 0 && rows[end - 1] < 0) --end;
-    for (; end > 0 && rows[end - 1] >= 0; --end) lower.insert(lower.begin(), rows[end - 1]);
-    return std::make_pair(upper, lower);
-  };
+  auto parts = [&](const TestMap& map) { return upper_and_lower(texel_rows(build(map).level, camera, 80)); };
   auto [upper, lower] = parts(m);
   ASSERT_FALSE(upper.empty());
   ASSERT_FALSE(lower.empty());
@@ -453,17 +455,7 @@ TEST(Import, UdmfPartOffsetsMoveOnlyTheirPart) {
   TestMap m = two_rooms();
   m.sectors[0].light = m.sectors[1].light = 255;
   const render::Camera east{{100, 128}, 41, 0, 90};
-  auto parts = [&](const TestMap& map) {  // the column's upper and lower runs of WALL rows
-    const std::vector<int> rows = texel_rows(build(map, true).level, east, 80);
-    std::vector<int> upper, lower;
-    size_t y = 0;
-    while (y < rows.size() && rows[y] < 0) ++y;
-    for (; y < rows.size() && rows[y] >= 0; ++y) upper.push_back(rows[y]);
-    size_t end = rows.size();
-    while (end > 0 && rows[end - 1] < 0) --end;
-    for (; end > 0 && rows[end - 1] >= 0; --end) lower.insert(lower.begin(), rows[end - 1]);
-    return std::make_pair(upper, lower);
-  };
+  auto parts = [&](const TestMap& map) { return upper_and_lower(texel_rows(build(map, true).level, east, 80)); };
   auto shifted = [](std::vector<int> rows, int by) {
     for (int& r : rows) r = (r + by) % 72;
     return rows;
