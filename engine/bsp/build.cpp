@@ -109,6 +109,7 @@ class Builder {
     pending_ = all.size();
     build_tree(std::move(all), vertex_bounds);
     level::derive_geometry(out_);
+    level::derive_shading(out_);
     compute_bounding_boxes();
     resolve_leaves_by_ray_cast();
     level::place_in_sectors(out_);  // in the finished tree, whose leaves all know their sector

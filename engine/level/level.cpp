@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <unordered_map>
 
 #include "engine/geom/polygon.h"
 #include "engine/util/doom.h"
@@ -108,7 +109,43 @@ void attach_things(Level& level) {
 
 void finalize(Level& level) {
   derive_geometry(level);
+  derive_shading(level);
   place_in_sectors(level);
+}
+
+namespace {
+
+// The index of the palette colour nearest to c (the first of equals).
+uint8_t nearest_index(const std::vector<uint32_t>& palette, uint32_t c) {
+  auto channel = [](uint32_t colour, int shift) { return int(colour >> shift & 0xFF); };
+  auto distance = [&](uint32_t p) {
+    int sum = 0;
+    for (int shift : {0, 8, 16}) sum += (channel(p, shift) - channel(c, shift)) * (channel(p, shift) - channel(c, shift));
+    return sum;
+  };
+  size_t best = 0;
+  for (size_t i = 1; i < palette.size(); ++i)
+    if (distance(palette[i]) < distance(palette[best])) best = i;
+  return uint8_t(best);
+}
+
+}  // namespace
+
+void derive_shading(Level& level) {
+  level.light_indices.clear();
+  level.void_index = level.missing_index = 0;
+  if (!level.paletted() || level.palette.size() != limits::kPaletteSize) return;
+  level.void_index = nearest_index(level.palette, kVoidColor);
+  level.missing_index = nearest_index(level.palette, kMissingColor);
+  std::unordered_map<uint32_t, uint8_t> index_of;  // a colour's first index: equal colours draw alike
+  for (size_t i = limits::kPaletteSize; i-- > 0;) index_of[level.palette[i]] = uint8_t(i);
+  std::vector<uint8_t> indices(level.light_maps.size());
+  for (size_t i = 0; i < indices.size(); ++i) {
+    const auto it = index_of.find(level.light_maps[i]);
+    if (it == index_of.end()) return;  // a shade outside the palette: drawn in 32 bits
+    indices[i] = it->second;
+  }
+  level.light_indices = std::move(indices);
 }
 
 void derive_geometry(Level& level) {

@@ -44,6 +44,11 @@ struct Texture {
   uint32_t at(int64_t u, int64_t v) const { return column(u)[wrap_v(v)]; }
 };
 
+// What renderers show where no sector is (the void) and for a missing texture: on
+// paletted levels, the palette's nearest colours (Level::void_index, missing_index).
+constexpr uint32_t kVoidColor = 18 | 18 << 8 | 26 << 16 | 0xFFu << 24;
+constexpr uint32_t kMissingColor = 255 | 0 << 8 | 255 << 16 | 0xFFu << 24;
+
 struct Sector {
   std::string name;
   double floor = 0, ceiling = 0;  // a ceiling below the floor is drawn as Doom draws it
@@ -206,6 +211,13 @@ struct Level {
   // textures are RGBA, shaded by multiplying.
   std::vector<uint32_t> palette, light_maps;
   bool paletted() const { return !light_maps.empty(); }
+  // Derived on load (derive_shading), for paletted levels: the light maps as palette
+  // indices (Doom's COLORMAP itself), laid out as light_maps, when every shade is a
+  // palette colour, else empty (renderers may then draw indices and look the palette up
+  // once per pixel at the end); the palette's colours nearest to kVoidColor and
+  // kMissingColor, which stand for them.
+  std::vector<uint8_t> light_indices;
+  uint8_t void_index = 0, missing_index = 0;
   double part_x(const Side& s, int part) const { return s.parts == kNone ? 0 : part_offsets[size_t(s.parts)].x[part]; }
   double part_y(const Side& s, int part) const { return s.parts == kNone ? 0 : part_offsets[size_t(s.parts)].y[part]; }
   std::optional<Grid> grid;  // levels compiled from .grid maps
@@ -219,8 +231,10 @@ struct Level {
   int sector_at(Vec2 p) const { return leaves[leaf_at(p)].sector; }
 };
 
-// Fills the derived fields: derive_geometry, then place_in_sectors.
+// Fills the derived fields: derive_geometry, derive_shading, then place_in_sectors.
 void finalize(Level& level);
+// Level::light_indices, void_index and missing_index, from the palette and light maps.
+void derive_shading(Level& level);
 // The fields geometry alone decides: wall and fragment points, node lines, bounds,
 // sprite reaches.
 void derive_geometry(Level& level);

@@ -51,6 +51,16 @@ class BspFrontToBack final : public Renderer {
       s.order = one_walk ? &probe->order : nullptr;
       walk(level, view, camera, s);
     });
+    // Paletted levels: the strips drew palette indices (Canvas::resolve); the frame is
+    // written in bands of whole rows, which the caches fetch as streams.
+    if (!level.light_indices.empty()) {
+      const int bands = std::min(view.height, kStrips);
+      pool_.run(bands, [&](int band) {
+        const int y0 = view.height * band / bands, y1 = view.height * (band + 1) / bands;
+        for (int y = y0; y < y1; ++y)
+          for (int i = 0; i < strips; ++i) strips_[size_t(i)].canvas.resolve(y, y + 1);
+      });
+    }
     return merged_stats(strips);
   }
 

@@ -5,7 +5,10 @@
 // x, y), whatever order the renderer visits surfaces in, so all renderers can
 // agree to the bit.
 //
-// Index: lighting, texel sources, Canvas::begin/draw_wall/paint_wall/finish,
+// Paletted levels are drawn as Doom draws them, in palette indices (through index light
+// maps), resolved to colours once per pixel at the end (Canvas::resolve).
+//
+// Index: lighting, texel sources, Canvas::begin/draw_wall/paint_wall/finish/resolve,
 // draw_hit (the rows of one hit), wall_span, draw_masked, sprites, plane_span, sky_span.
 #include "engine/render/draw.h"
 
@@ -21,8 +24,6 @@ namespace {
 using level::kNone;
 using level::kSky;
 
-constexpr uint32_t kVoidColor = image::rgba(18, 18, 26);
-constexpr uint32_t kMissingTexture = image::rgba(255, 0, 255);
 constexpr double kFix = 65536;  // 16.16 fixed point for texture coordinates
 
 // ---- lighting ------------------------------------------------------------------
@@ -74,6 +75,12 @@ struct PalettedColumn {
   const uint32_t* light_map;
   uint32_t operator()(size_t v) const { return light_map[indices[v]]; }
 };
+// The same under an index light map (Doom's COLORMAP): a palette index.
+struct IndexedColumn {
+  const uint8_t* indices;
+  const uint8_t* light_map;
+  uint8_t operator()(size_t v) const { return light_map[indices[v]]; }
+};
 struct RgbaColumn {
   const uint32_t* texels;
   uint32_t multiplier;
@@ -84,8 +91,8 @@ struct RgbaColumn {
 // v and step are already reduced modulo period, so one subtraction keeps v in range.
 // A power-of-two period (at most 2^32, as textures are at most 4096 high) divides
 // 2^32: v may then wrap in 32 bits and the row be masked.
-template <typename Source>
-void wrapped_column(uint32_t* out, size_t pitch, int count, int64_t v, int64_t step, int64_t period, const Source& texel) {
+template <typename Pixel, typename Source>
+void wrapped_column(Pixel* out, size_t pitch, int count, int64_t v, int64_t step, int64_t period, const Source& texel) {
   if ((period & (period - 1)) == 0) {
     const uint32_t row_mask = uint32_t((period >> 16) - 1);
     const uint32_t step32 = uint32_t(step);
@@ -136,6 +143,12 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
   things_drawn_.clear();
   x0_ = std::max(0, x0);
   x1_ = std::min(view.width, x1);
+  indexed_ = !level.light_indices.empty();
+  if (indexed_) {
+    index_pitch_ = size_t(std::max(0, x1_ - x0_));
+    indices_.resize(index_pitch_ * size_t(view.height));
+  }
+  choose_fill_colors();
   if (row_dy_.size() != size_t(view.height) || (!row_dy_.empty() && row_dy_[0] != 0.5 - view.half_h)) {
     row_dy_.resize(view.height);
     row_inv_.resize(view.height);
@@ -210,6 +223,16 @@ void Canvas::finish() {
   }
   planes_.for_each_span([this](const PlaneKey& key, int y, int xa, int xb) { plane_pixels(key, y, xa, xb); });
   draw_layers();
+}
+
+void Canvas::resolve(int y0, int y1) {
+  if (!indexed_) return;
+  const uint32_t* palette = level_->palette.data();
+  for (int y = y0; y < y1; ++y) {
+    const uint8_t* in = index_pixel(x0_, y);
+    uint32_t* out = pixel(x0_, y);
+    for (size_t i = 0; i < index_pitch_; ++i) out[i] = palette[in[i]];
+  }
 }
 
 // Draws, within rows [top, bottom), the near sector's ceiling above the wall, its
@@ -290,11 +313,25 @@ void Canvas::count_layer(int x, int y, uint64_t& counter) {
   if (writes_) ++(*writes_)[size_t(y) * view_->width + x];
 }
 
-void Canvas::fill_span(int x, int y0, int y1, uint32_t color) {
+void Canvas::choose_fill_colors() {
+  const level::Level& l = *level_;
+  fill_indices_[size_t(Fill::kVoid)] = l.void_index;
+  fill_indices_[size_t(Fill::kMissingTexture)] = l.missing_index;
+  const bool paletted = l.palette.size() == limits::kPaletteSize;
+  fill_colors_[size_t(Fill::kVoid)] = paletted ? l.palette[l.void_index] : level::kVoidColor;
+  fill_colors_[size_t(Fill::kMissingTexture)] = paletted ? l.palette[l.missing_index] : level::kMissingColor;
+}
+
+void Canvas::fill_span(int x, int y0, int y1, Fill fill) {
   if (y0 >= y1 || dry_) return;
   count(x, y0, y1);
+  if (indexed_) {
+    uint8_t* out = index_pixel(x, y0);
+    for (int y = y0; y < y1; ++y, out += index_pitch_) *out = fill_indices_[size_t(fill)];
+    return;
+  }
   uint32_t* out = pixel(x, y0);
-  for (int y = y0; y < y1; ++y, out += view_->width) *out = color;
+  for (int y = y0; y < y1; ++y, out += view_->width) *out = fill_colors_[size_t(fill)];
 }
 
 // The near sector's ceiling (or floor) in front of a wall: seen only from its open
@@ -305,7 +342,7 @@ void Canvas::near_plane(int x, int y0, int y1, int sector, bool ceiling) {
   if (open_side)
     plane_span(x, y0, y1, sector, ceiling);
   else
-    fill_span(x, y0, y1, kVoidColor);
+    fill_span(x, y0, y1, Fill::kVoid);
 }
 
 // Texture column u of the hit's facing side: the distance from the side's start
@@ -321,7 +358,7 @@ double Canvas::texture_u(const WallHit& hit, int part) const {
 // are reduced modulo the texture's height in 16.16 (a mask for a power of two).
 void Canvas::wall_span(int x, int y0, int y1, const Part& part, const WallHit& hit) {
   if (y0 >= y1 || dry_) return;
-  if (part.texture == kNone) return fill_span(x, y0, y1, kMissingTexture);
+  if (part.texture == kNone) return fill_span(x, y0, y1, Fill::kMissingTexture);
   count(x, y0, y1);
   const level::Wall& w = level_->walls[hit.wall];
   const level::Side& side = w.sides[hit.side];
@@ -334,6 +371,9 @@ void Canvas::wall_span(int x, int y0, int y1, const Part& part, const WallHit& h
   const int64_t step = reduce(std::llround(inv_scale * kFix));
   const int64_t v = reduce(std::llround(v0 * kFix) + int64_t(y0) * step);
   const int map = wall_light_map(light_start(part.light, w.contrast), hit.depth);
+  if (indexed_)
+    return wrapped_column(index_pixel(x, y0), index_pitch_, y1 - y0, v, step, period,
+                          IndexedColumn{tex.index_column(u), level_->light_indices.data() + size_t(map) * limits::kPaletteSize});
   uint32_t* out = pixel(x, y0);
   if (level_->paletted())
     wrapped_column(out, view_->width, y1 - y0, v, step, period,
@@ -362,12 +402,19 @@ void Canvas::draw_masked(int x, const Step& m) {
   const int light = side.light != kNone ? side.light : s.light;
   const int map = wall_light_map(light_start(light, w.contrast), m.hit.depth);
   const size_t column = size_t(tex.wrap_u(u)) * tex.height;
-  uint32_t* out = pixel(x, m.top);
-  for (int y = m.top; y < m.bottom; ++y, out += view_->width, v += step) {
-    const int64_t row = v >> 16;
-    if (row < 0 || row >= tex.height || !(tex.texels[column + size_t(row)] >> 24)) continue;
-    *out = lit(tex, column + size_t(row), map);
-    count_layer(x, y, masked_pixels_);
+  auto draw = [&](auto* out, size_t pitch, auto colour_of) {
+    for (int y = m.top; y < m.bottom; ++y, out += pitch, v += step) {
+      const int64_t row = v >> 16;
+      if (row < 0 || row >= tex.height || !(tex.texels[column + size_t(row)] >> 24)) continue;
+      *out = colour_of(column + size_t(row));
+      count_layer(x, y, masked_pixels_);
+    }
+  };
+  if (indexed_) {
+    const uint8_t* light_map = level_->light_indices.data() + size_t(map) * limits::kPaletteSize;
+    draw(index_pixel(x, m.top), index_pitch_, [&](size_t texel) { return light_map[tex.indices[texel]]; });
+  } else {
+    draw(pixel(x, m.top), size_t(view_->width), [&](size_t texel) { return lit(tex, texel, map); });
   }
 }
 
@@ -431,11 +478,10 @@ void Canvas::draw_sprite_column(const Sprite& s, int x, int top, int bottom, boo
   auto ceil_div = [](int64_t a, int64_t b) { return a >= 0 ? (a + b - 1) / b : -((-a) / b); };
   const int y0 = int(std::clamp<int64_t>(ceil_div(-v0, step), top, bottom));
   const int y1 = int(std::clamp<int64_t>(ceil_div((int64_t(tex.height) << 16) - v0, step), y0, bottom));
-  auto draw = [&](auto colour_of) {
+  auto draw = [&](auto* out, size_t pitch, auto colour_of) {
     const uint32_t* texels = tex.texels.data() + column;
-    uint32_t* out = pixel(x, y0);
     int64_t v = v0 + int64_t(y0) * step;
-    for (int y = y0; y < y1; ++y, out += view_->width, v += step) {
+    for (int y = y0; y < y1; ++y, out += pitch, v += step) {
       const size_t row = size_t(v >> 16);
       if (!(texels[row] >> 24)) continue;
       *out = colour_of(row);
@@ -443,14 +489,19 @@ void Canvas::draw_sprite_column(const Sprite& s, int x, int top, int bottom, boo
       drew = true;
     }
   };
-  if (level_->paletted()) {
+  const size_t light_map = size_t(s.light_map) * limits::kPaletteSize;
+  if (indexed_) {
+    const uint8_t* map = level_->light_indices.data() + light_map;
     const uint8_t* indices = tex.indices.data() + column;
-    const uint32_t* light_map = level_->light_maps.data() + size_t(s.light_map) * limits::kPaletteSize;
-    draw([&](size_t row) { return light_map[indices[row]]; });
+    draw(index_pixel(x, y0), index_pitch_, [&](size_t row) { return map[indices[row]]; });
+  } else if (level_->paletted()) {
+    const uint32_t* map = level_->light_maps.data() + light_map;
+    const uint8_t* indices = tex.indices.data() + column;
+    draw(pixel(x, y0), size_t(view_->width), [&](size_t row) { return map[indices[row]]; });
   } else {
     const uint32_t* texels = tex.texels.data() + column;
     const uint32_t mult = multiplier(s.light_map);
-    draw([&](size_t row) { return shade(texels[row], mult); });
+    draw(pixel(x, y0), size_t(view_->width), [&](size_t row) { return shade(texels[row], mult); });
   }
 }
 
@@ -542,20 +593,24 @@ void with_texel_index(const level::Texture& tex, Draw&& draw) {
 void Canvas::plane_pixels(const PlaneKey& key, int y, int xa, int xb) {
   const level::Texture& tex = level_->textures[key.texture];
   const PlaneRow row = plane_row(key, y);
-  auto draw = [&](auto colour_of_texel, auto texel_of) {
+  auto draw = [&](auto colour_of_texel, auto texel_of, auto* out) {
     uint64_t u = row.u0 + uint64_t(xa) * row.du, v = row.v0 + uint64_t(xa) * row.dv;
-    uint32_t* out = pixel(xa, y);
     for (int x = xa; x < xb; ++x, u += row.du, v += row.dv) *out++ = colour_of_texel(texel_of(u, v));
   };
+  const size_t light_map = size_t(row.light_map) * limits::kPaletteSize;
   with_texel_index(tex, [&](auto texel_of) {
-    if (level_->paletted()) {
-      const uint32_t* light_map = level_->light_maps.data() + size_t(row.light_map) * limits::kPaletteSize;
+    if (indexed_) {
+      const uint8_t* map = level_->light_indices.data() + light_map;
       const uint8_t* indices = tex.indices.data();
-      draw([=](size_t texel) { return light_map[indices[texel]]; }, texel_of);
+      draw([=](size_t texel) { return map[indices[texel]]; }, texel_of, index_pixel(xa, y));
+    } else if (level_->paletted()) {
+      const uint32_t* map = level_->light_maps.data() + light_map;
+      const uint8_t* indices = tex.indices.data();
+      draw([=](size_t texel) { return map[indices[texel]]; }, texel_of, pixel(xa, y));
     } else {
       const uint32_t* texels = tex.texels.data();
       const uint32_t m = multiplier(row.light_map);
-      draw([=](size_t texel) { return shade(texels[texel], m); }, texel_of);
+      draw([=](size_t texel) { return shade(texels[texel], m); }, texel_of, pixel(xa, y));
     }
   });
 }
@@ -602,12 +657,19 @@ void Canvas::tabulate_sky_rows() {
 
 void Canvas::sky_span(int x, int y0, int y1) {
   if (dry_) return;
-  if (level_->sky_texture == kNone) return fill_span(x, y0, y1, kVoidColor);
+  if (level_->sky_texture == kNone) return fill_span(x, y0, y1, Fill::kVoid);
   count(x, y0, y1);
   const level::Texture& tex = level_->textures[level_->sky_texture];
   const double angle = view_->angle + std::atan2(view_->half_w - (x + 0.5), view_->d);
   const int64_t u = to_int(angle / (2 * M_PI) * kSkyColumns);
   const int* rows = sky_rows_.data();
+  if (indexed_) {
+    const uint8_t* indices = tex.index_column(u);
+    const uint8_t* light_map = level_->light_indices.data();
+    uint8_t* out = index_pixel(x, y0);
+    for (int y = y0; y < y1; ++y, out += index_pitch_) *out = light_map[indices[rows[y]]];
+    return;
+  }
   uint32_t* out = pixel(x, y0);
   if (level_->paletted()) {
     const uint8_t* indices = tex.index_column(u);
@@ -622,12 +684,12 @@ void Canvas::sky_span(int x, int y0, int y1) {
 // What a column shows past its last wall: its sector's planes out to the horizon.
 void Canvas::planes_to_horizon(int x, int y0, int y1, int sector) {
   if (y0 >= y1) return;
-  if (sector == kNone) return fill_span(x, y0, y1, kVoidColor);
+  if (sector == kNone) return fill_span(x, y0, y1, Fill::kVoid);
   const int horizon = view_->row_at(view_->half_h);  // first row whose centre is not above the horizon
   const int below = horizon < view_->height && row_dy_[horizon] == 0 ? horizon + 1 : horizon;
   const int ceiling_end = std::min(y1, horizon), floor_start = std::max(y0, below);
   near_plane(x, y0, ceiling_end, sector, true);
-  fill_span(x, std::max(y0, horizon), std::min(y1, below), kVoidColor);
+  fill_span(x, std::max(y0, horizon), std::min(y1, below), Fill::kVoid);
   near_plane(x, floor_start, y1, sector, false);
 }
 

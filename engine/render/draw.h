@@ -38,6 +38,9 @@ class Canvas {
   void begin(const level::Level& level, const level::State& state, const View& view, Frame& frame, int camera_sector,
              Probe* probe, int x0 = 0, int x1 = INT32_MAX);
   static void prepare_probe(const View& view, Probe* probe);
+  // For a renderer that draws over its own pixels (the painter): write the frame's
+  // colours at once rather than palette indices resolved at the end (see indexed_).
+  void draw_directly() { indexed_ = false; }
 
   // Front to back: draws what the hit shows in the column's open rows and narrows
   // them. Returns true when this hit closes the column.
@@ -61,6 +64,9 @@ class Canvas {
   // sector, out to the horizon, draws the floors and ceilings filed so far as rows,
   // then draws the layers (see draw_layers).
   void finish();
+  // Writes rows [y0, y1) of the canvas's columns into the frame, after finish(), when
+  // it drew palette indices (a no-op otherwise). Strips may resolve rows in any order.
+  void resolve(int y0, int y1);
   // Masked middle textures and sprites, farthest first in every column, each clipped
   // to the rows its column had open at its depth. Equal depths: the masked wall
   // first, then sprites by thing index.
@@ -128,12 +134,15 @@ class Canvas {
   void wall_span(int x, int y0, int y1, const Part& part, const WallHit& hit);
   void draw_masked(int x, const Step& step);
   void draw_sprite_column(const Sprite& s, int x, int top, int bottom, bool& drew);
-  void fill_span(int x, int y0, int y1, uint32_t color);
+  enum class Fill { kVoid, kMissingTexture };
+  void fill_span(int x, int y0, int y1, Fill fill);
+  void choose_fill_colors();
   void planes_to_horizon(int x, int y0, int y1, int sector);
   int near_sector(const level::Wall& w, const WallHit& hit, int x) const;
   double texture_u(const WallHit& hit, int part) const;
   uint32_t lit(const level::Texture& tex, size_t texel, int light_map) const;
   uint32_t* pixel(int x, int y) { return frame_->pixels.data() + size_t(y) * view_->width + x; }
+  uint8_t* index_pixel(int x, int y) { return indices_.data() + size_t(y) * index_pitch_ + size_t(x - x0_); }
   void count(int x, int y0, int y1);
   void count_layer(int x, int y, uint64_t& counter);
 
@@ -161,6 +170,17 @@ class Canvas {
   std::vector<double> row_dy_;   // (y + 0.5) - H/2 per row
   std::vector<double> row_inv_;  // 1 / row_dy_
   std::vector<int> sky_rows_;    // the sky's texture row at each screen row
+  // Paletted levels draw palette indices (Doom's 8-bit screen) into the canvas's own
+  // columns, rows index_pitch_ apart, and resolve() looks the palette up once per pixel:
+  // a strip of 80 columns of 400 rows is 32 KB, in the L1 cache, where the 32-bit
+  // frame's columns are 2,560 bytes apart. (RGBA levels, and light maps with shades
+  // outside the palette, write the frame.)
+  bool indexed_ = false;
+  std::vector<uint8_t> indices_;
+  size_t index_pitch_ = 0;
+  // What fills show: on paletted levels the palette's nearest colours, so they have indices.
+  uint32_t fill_colors_[2] = {};
+  uint8_t fill_indices_[2] = {};
   uint64_t pixels_ = 0, closed_count_ = 0, masked_pixels_ = 0, sprites_drawn_ = 0, sprite_pixels_ = 0;
   bool dry_ = false;       // clip_wall: compute rows, write nothing
   bool painting_ = false;  // paint_wall, paint_background: draw planes at once

@@ -31,6 +31,7 @@ class GridRayCaster final : public Renderer {
       for (int x = 0; x < view.width; ++x) stats.add_ray(cast(level, *level.grid, view, x));
     for (uint32_t i = 0; i < level.things.size(); ++i) canvas_.add_sprite(i);
     canvas_.finish();
+    canvas_.resolve(0, view.height);
     canvas_.count_into(stats);
     return stats;
   }

@@ -21,6 +21,7 @@ class Painter final : public Renderer {
     const View view(camera, frame.width, frame.height);
     const int camera_sector = level.sector_at(camera.pos);
     canvas_.begin(level, state, view, frame, camera_sector, probe);
+    canvas_.draw_directly();  // it paints over its own pixels
     painted_.assign(view.width, false);
     column_hits_.resize(view.width);
     for (auto& hits : column_hits_) hits.clear();

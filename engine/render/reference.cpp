@@ -45,6 +45,7 @@ class Reference final : public Renderer {
     }
     for (uint32_t i = 0; i < level.things.size(); ++i) canvas_.add_sprite(i);
     canvas_.finish();
+    canvas_.resolve(0, view.height);
 
     RenderStats stats;
     canvas_.count_into(stats);

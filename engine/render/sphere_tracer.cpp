@@ -146,6 +146,7 @@ class SphereTracer final : public Renderer {
     for (int x = 0; x < view.width; ++x) stats.add_ray(trace(level, view, x));
     for (uint32_t i = 0; i < level.things.size(); ++i) canvas_.add_sprite(i);
     canvas_.finish();
+    canvas_.resolve(0, view.height);
     canvas_.count_into(stats);
     return stats;
   }

@@ -73,11 +73,20 @@ void check_wad(const std::string& file, size_t cameras_per_map, Tally& t) {
     const level::Level level = bsp::build_wad_map(wads, map, {}, &warnings);
     const auto problems = bsp::check_invariants(level);
     EXPECT_TRUE(problems.empty()) << file << ":" << map << ": " << (problems.empty() ? "" : problems.front());
+    EXPECT_FALSE(level.light_indices.empty()) << file << ":" << map << ": drawn as palette indices";
     ++t.maps;
     const std::string what = file + ":" + map;
     const level::State start = level::start_state(level);
-    compare_camera(level, start, render::camera_at(level, level.player_start, level.player_angle), 160, 100, t,
-                   what + " player start");
+    const render::Camera at_start = render::camera_at(level, level.player_start, level.player_angle);
+    compare_camera(level, start, at_start, 160, 100, t, what + " player start");
+    {  // palette indices resolved at the end, or colours at once: the same frame
+      level::Level in_colours = level;
+      in_colours.light_indices.clear();
+      render::Frame indexed(160, 100), colours(160, 100);
+      render::make_renderer("bsp")->render(level, start, at_start, indexed);
+      render::make_renderer("bsp")->render(in_colours, start, at_start, colours);
+      EXPECT_EQ(indexed.pixels, colours.pixels) << what << ": drawn in colours";
+    }
     Rng rng(std::hash<std::string>()(map) & 0xFFFF);
     for (size_t i = 0; i < cameras_per_map; ++i) {
       const render::Camera c = test::random_camera(level, rng);

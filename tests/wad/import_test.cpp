@@ -4,6 +4,7 @@
 // UDMF gives the same level as the binary format; Doom's pegging and masked middles.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "engine/bsp/check.h"
@@ -89,18 +90,28 @@ std::string build_error(const TestMap& m) {
   return ::testing::AssertionFailure() << "no warning containing '" << text << "' among:" << all;
 }
 
-// The compiled level is sound: exact invariants, and bsp renders exactly as the reference.
+// The compiled level is sound: exact invariants, and bsp renders exactly as the
+// reference and the painter. The first two draw palette indices and resolve them at the
+// end, the painter writes colours at once; so does bsp on a copy of the level without
+// its index light maps.
 void expect_sound(const level::Level& level, const std::string& what) {
   const auto problems = bsp::check_invariants(level);
   EXPECT_TRUE(problems.empty()) << what << ": " << (problems.empty() ? "" : problems.front());
+  ASSERT_FALSE(level.light_indices.empty()) << what << ": the test art's shades are palette colours";
+  level::Level in_colours = level;
+  in_colours.light_indices.clear();
   Rng rng(7);
   for (int i = 0; i < 24; ++i) {
     const render::Camera c = i == 0 ? render::camera_at(level, level.player_start, level.player_angle)
                                     : test::random_camera(level, rng);
-    render::Frame a(64, 40), b(64, 40);
-    render::make_renderer("bsp")->render(level, c, a);
+    render::Frame a(64, 40), b(64, 40), painted(64, 40), direct(64, 40);
+    render::make_renderer("bsp", {.threads = 2})->render(level, c, a);
     render::make_renderer("reference")->render(level, c, b);
+    render::make_renderer("painter")->render(level, c, painted);
+    render::make_renderer("bsp")->render(in_colours, c, direct);
     EXPECT_EQ(a.pixels, b.pixels) << what << " camera " << i;
+    EXPECT_EQ(a.pixels, painted.pixels) << what << " camera " << i << ": the painter";
+    EXPECT_EQ(a.pixels, direct.pixels) << what << " camera " << i << ": drawn in colours";
   }
 }
 
@@ -510,6 +521,32 @@ TEST(Import, MaskedMiddlesShowWhatIsBehindAndAreNotTiled) {
   EXPECT_GT(mesh, 0);
   EXPECT_GT(through, 0);  // the holes show the room behind
   expect_sound(b.level, "masked");
+}
+
+// Doom's COLORMAP maps indices to indices; our light maps hold its colours. The level
+// recovers the indices when every shade is a palette colour, and renders in colours when
+// one is not.
+TEST(Import, LightMapsBecomePaletteIndicesWhenEveryShadeIsInThePalette) {
+  const Built b = build(two_rooms());
+  const level::Level& level = b.level;
+  ASSERT_EQ(level.light_indices.size(), level.light_maps.size());
+  for (size_t i = 0; i < level.light_maps.size(); ++i)
+    ASSERT_EQ(level.palette[level.light_indices[i]], level.light_maps[i]) << "shade " << i;
+
+  level::Level odd = level;
+  uint32_t outside = image::rgba(1, 2, 3);
+  while (std::find(odd.palette.begin(), odd.palette.end(), outside) != odd.palette.end()) ++outside;
+  odd.light_maps[limits::kPaletteSize * 7 + 5] = outside;
+  level::derive_shading(odd);
+  EXPECT_TRUE(odd.light_indices.empty());
+  Rng rng(3);
+  for (int i = 0; i < 8; ++i) {
+    const render::Camera c = test::random_camera(odd, rng);
+    render::Frame a(64, 40), r(64, 40);
+    render::make_renderer("bsp")->render(odd, c, a);
+    render::make_renderer("reference")->render(odd, c, r);
+    EXPECT_EQ(a.pixels, r.pixels) << "camera " << i;
+  }
 }
 
 // ---- things and sprites --------------------------------------------------------------
