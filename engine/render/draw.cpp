@@ -136,13 +136,14 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
   frame_ = &frame;
   hits_ = probe && probe->want_columns ? &probe->columns : nullptr;
   writes_ = probe && probe->want_writes ? &probe->writes : nullptr;
-  columns_.assign(view.width, Column{0, view.height, camera_sector});
-  if (steps_.size() != size_t(view.width)) steps_.resize(view.width);
-  for (auto& column : steps_) column.clear();
-  sprites_.clear();
-  things_drawn_.clear();
   x0_ = std::max(0, x0);
   x1_ = std::min(view.width, x1);
+  columns_.resize(view.width);  // indexed by x; only the owned columns are used
+  std::fill(columns_.begin() + x0_, columns_.begin() + x1_, Column{0, view.height, camera_sector});
+  if (steps_.size() != size_t(view.width)) steps_.resize(view.width);
+  for (int x = x0_; x < x1_; ++x) steps_[x].clear();
+  sprites_.clear();
+  things_drawn_.clear();
   indexed_ = !level.light_indices.empty();
   if (indexed_) {
     index_pitch_ = size_t(std::max(0, x1_ - x0_));
@@ -647,9 +648,12 @@ const Canvas::PlaneRow* Canvas::painted_rows(const PlaneKey& key, int y0, int y1
 constexpr double kSkyColumns = 1024, kSkyMidRow = 100, kDoomProjection = 160;
 
 void Canvas::tabulate_sky_rows() {
-  sky_rows_.clear();
-  if (level_->sky_texture == kNone) return;
+  if (level_->sky_texture == kNone) return sky_rows_.clear();
   const level::Texture& tex = level_->textures[level_->sky_texture];
+  // The rows depend only on these: a game's or a benchmark's frames reuse them.
+  const SkyKey key{tex.height, view_->d, view_->half_h, view_->height};
+  if (key == sky_key_ && sky_rows_.size() == size_t(view_->height)) return;
+  sky_key_ = key;
   const double rows_per_pixel = kDoomProjection / view_->d;
   sky_rows_.resize(size_t(view_->height));
   for (int y = 0; y < view_->height; ++y) sky_rows_[size_t(y)] = tex.wrap_v(to_int(kSkyMidRow + row_dy_[y] * rows_per_pixel));

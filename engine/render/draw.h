@@ -170,6 +170,13 @@ class Canvas {
   std::vector<double> row_dy_;   // (y + 0.5) - H/2 per row
   std::vector<double> row_inv_;  // 1 / row_dy_
   std::vector<int> sky_rows_;    // the sky's texture row at each screen row
+  struct SkyKey {
+    int texture_height = 0;
+    double d = 0, half_h = 0;
+    int height = 0;
+    bool operator==(const SkyKey&) const = default;
+  };
+  SkyKey sky_key_;  // what sky_rows_ were tabulated for
   // Paletted levels draw palette indices (Doom's 8-bit screen) into the canvas's own
   // columns, rows index_pitch_ apart, and resolve() looks the palette up once per pixel:
   // a strip of 80 columns of 400 rows is 32 KB, in the L1 cache, where the 32-bit
