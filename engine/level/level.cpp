@@ -3,11 +3,11 @@
 #include "engine/level/level.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <bit>
 #include <cmath>
 #include <limits>
-#include <unordered_map>
 
 #include "engine/geom/polygon.h"
 #include "engine/util/doom.h"
@@ -137,13 +137,26 @@ void derive_shading(Level& level) {
   if (!level.paletted() || level.palette.size() != limits::kPaletteSize) return;
   level.void_index = nearest_index(level.palette, kVoidColor);
   level.missing_index = nearest_index(level.palette, kMissingColor);
-  std::unordered_map<uint32_t, uint8_t> index_of;  // a colour's first index: equal colours draw alike
-  for (size_t i = limits::kPaletteSize; i-- > 0;) index_of[level.palette[i]] = uint8_t(i);
+  // A colour's first index (equal colours draw alike), by open addressing: 1024 slots
+  // for 256 colours.
+  constexpr size_t kSlots = 1024;
+  std::array<uint32_t, kSlots> colour{};
+  std::array<int16_t, kSlots> index;
+  index.fill(-1);
+  auto slot_of = [&](uint32_t c) {
+    size_t slot = (c * 0x9E3779B1u) >> 22;
+    while (index[slot] >= 0 && colour[slot] != c) slot = (slot + 1) % kSlots;
+    return slot;
+  };
+  for (size_t i = 0; i < limits::kPaletteSize; ++i) {
+    const size_t slot = slot_of(level.palette[i]);
+    if (index[slot] < 0) colour[slot] = level.palette[i], index[slot] = int16_t(i);
+  }
   std::vector<uint8_t> indices(level.light_maps.size());
   for (size_t i = 0; i < indices.size(); ++i) {
-    const auto it = index_of.find(level.light_maps[i]);
-    if (it == index_of.end()) return;  // a shade outside the palette: drawn in 32 bits
-    indices[i] = it->second;
+    const int16_t found = index[slot_of(level.light_maps[i])];
+    if (found < 0) return;  // a shade outside the palette: drawn in 32 bits
+    indices[i] = uint8_t(found);
   }
   level.light_indices = std::move(indices);
 }
