@@ -421,7 +421,8 @@ class Builder {
 
   double wall_length(uint32_t wall) const {
     const IPoint d = lines_[wall].d;
-    return std::hypot(double(d.x), double(d.y)) / geom::kFixedOne;
+    const double x = double(d.x), y = double(d.y);  // far from overflow: std::hypot's care is not needed
+    return std::sqrt(x * x + y * y) / geom::kFixedOne;
   }
 
   // ---- cells and leaves ----------------------------------------------------

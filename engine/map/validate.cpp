@@ -123,7 +123,7 @@ std::vector<Contact> find_contacts_impl(const Source& src, size_t max_count) {
       min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
     }
     const IPoint d = geom::sub(src.point(w.v2), src.point(w.v1));
-    total_length += std::hypot(double(d.x), double(d.y));
+    total_length += std::sqrt(double(d.x) * double(d.x) + double(d.y) * double(d.y));
   }
   const double extent = double(std::max(max_x - min_x, max_y - min_y)) + 1;
   const double cell = std::max({total_length / n, extent / 4096.0, 1.0});
