@@ -20,22 +20,28 @@ namespace p3d::map::detail {
 
 class Statement {
  public:
-  Statement(const FileLoc& loc, std::vector<std::string_view> words) : loc_(loc) {
-    keyword_ = words.front();
-    for (size_t i = 1; i < words.size(); ++i) {
-      const size_t eq = words[i].find('=');
+  // The words' vector becomes the arguments' (compacted in place): a line costs no
+  // allocation beyond its words and, when it has options, one for them.
+  Statement(const FileLoc& loc, std::vector<std::string_view> words) : loc_(loc), args_(std::move(words)) {
+    keyword_ = args_.front();
+    size_t positional = 0;
+    for (size_t i = 1; i < args_.size(); ++i) {
+      const std::string_view word = args_[i];
+      const size_t eq = word.find('=');
       if (eq == std::string_view::npos) {
-        if (!options_.empty()) fail("positional argument '" + std::string(words[i]) + "' after key=value options");
-        args_.push_back(words[i]);
+        if (!options_.empty()) fail("positional argument '" + std::string(word) + "' after key=value options");
+        args_[positional++] = word;
       } else {
-        const std::string_view key = words[i].substr(0, eq);
-        if (key.empty()) fail("missing key before '=' in '" + std::string(words[i]) + "'");
+        const std::string_view key = word.substr(0, eq);
+        if (key.empty()) fail("missing key before '=' in '" + std::string(word) + "'");
         // No statement knows more than a few keys; a cap keeps the search below linear.
         if (options_.size() == kMaxOptions) fail("more than " + std::to_string(kMaxOptions) + " key=value options");
         if (find(key) != options_.end()) fail("option '" + std::string(key) + "' given twice");
-        options_.emplace_back(key, words[i].substr(eq + 1));
+        if (options_.empty()) options_.reserve(std::min(kMaxOptions, args_.size() - i));
+        options_.emplace_back(key, word.substr(eq + 1));
       }
     }
+    args_.resize(positional);
   }
 
   std::string_view keyword() const { return keyword_; }
@@ -48,14 +54,8 @@ class Statement {
   std::string_view arg(size_t i) const { return args_[i]; }
   size_t arg_count() const { return args_.size(); }
 
-  double number(std::string_view text, const std::string& what) const {
-    double v = 0;
-    const char* end = text.data() + text.size();
-    const auto [ptr, ec] = std::from_chars(text.data(), end, v);
-    if (ec == std::errc::result_out_of_range) fail(what + " '" + std::string(text) + "' is out of range");
-    if (ec != std::errc() || ptr != end) fail(what + " '" + std::string(text) + "' is not a number");
-    if (!std::isfinite(v)) fail(what + " '" + std::string(text) + "' is not finite");
-    return v;
+  double number(std::string_view text, std::string_view what) const {
+    return parse_number(text, [&] { return std::string(what); });
   }
   // An argument that names something (a texture, sector, vertex): at most
   // limits::kMaxNameLength bytes, as the compiled format holds.
@@ -73,22 +73,22 @@ class Statement {
     return t;
   }
   // A number within +-limit.
-  double bounded(std::string_view text, const std::string& what, double limit) const {
+  double bounded(std::string_view text, std::string_view what, double limit) const {
     const double v = number(text, what);
     if (std::fabs(v) > limit)
-      fail(what + " '" + std::string(text) + "' is outside +-" + std::to_string(static_cast<int64_t>(limit)));
+      fail(std::string(what) + " '" + std::string(text) + "' is outside +-" + std::to_string(static_cast<int64_t>(limit)));
     return v;
   }
-  int integer(std::string_view text, const std::string& what, int lo, int hi) const {
+  int integer(std::string_view text, std::string_view what, int lo, int hi) const {
     const double v = number(text, what);
     if (v != std::floor(v) || v < lo || v > hi)
-      fail(what + " '" + std::string(text) + "' must be an integer from " + std::to_string(lo) + " to " +
+      fail(std::string(what) + " '" + std::string(text) + "' must be an integer from " + std::to_string(lo) + " to " +
            std::to_string(hi));
     return static_cast<int>(v);
   }
   int64_t coordinate(std::string_view text, const char* axis) const {
     int64_t fixed = 0;
-    if (!geom::to_fixed(number(text, std::string(axis) + " coordinate"), fixed))
+    if (!geom::to_fixed(parse_number(text, [&] { return std::string(axis) + " coordinate"; }), fixed))
       fail(std::string(axis) + " coordinate '" + std::string(text) + "' is outside +-" +
            std::to_string(static_cast<int64_t>(geom::kMaxCoord)));
     return fixed;
@@ -123,6 +123,18 @@ class Statement {
     return std::find_if(options_.begin(), options_.end(), [&](const auto& o) { return o.first == key; });
   }
   Options options_;
+
+  // A number; what() names it in a failure's message, made only then.
+  template <typename What>
+  double parse_number(std::string_view text, const What& what) const {
+    double v = 0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+    if (ec == std::errc::result_out_of_range) fail(what() + " '" + std::string(text) + "' is out of range");
+    if (ec != std::errc() || ptr != end) fail(what() + " '" + std::string(text) + "' is not a number");
+    if (!std::isfinite(v)) fail(what() + " '" + std::string(text) + "' is not finite");
+    return v;
+  }
 };
 
 // A text map's lines: LF, CRLF and old Mac CR-only line ends alike, a leading UTF-8 byte

@@ -6,6 +6,7 @@
 #include <map>
 #include <numeric>
 #include <span>
+#include <string_view>
 #include <unordered_map>
 
 #include "engine/map/source.h"
@@ -297,17 +298,23 @@ std::vector<int> unused_sectors(const Source& src) {
 
 void check_limits(const Source& src) {
   const FileLoc file{src.path.string(), 0};
-  auto fail_if = [](bool bad, const FileLoc& loc, const std::string& what) {
-    if (bad) throw Error(loc, what + " is beyond the limits a compiled level holds (engine/util/limits.h)");
+  auto fail = [](const FileLoc& loc, std::string_view what) {
+    throw Error(loc, std::string(what) + " is beyond the limits a compiled level holds (engine/util/limits.h)");
+  };
+  // Checked a few times per wall: no message is made unless it fails.
+  auto fail_if = [&](bool bad, const FileLoc& loc, std::string_view what) {
+    if (bad) fail(loc, what);
   };
   auto name = [&](const std::string& n, const FileLoc& loc, const char* what) {
-    fail_if(n.size() > limits::kMaxNameLength, loc, std::string(what) + " name of " + std::to_string(n.size()) + " bytes");
+    if (n.size() > limits::kMaxNameLength)
+      fail(loc, std::string(what) + " name of " + std::to_string(n.size()) + " bytes");
   };
   auto coordinate = [&](double v, const FileLoc& loc, const char* what) {
     fail_if(!(std::fabs(v) <= geom::kMaxCoord), loc, what);  // NaN fails too
   };
   if (src.walls.size() > limits::kMaxWalls) throw Error(file, limits::too_many_walls());
-  fail_if(src.title.size() > limits::kMaxTitleLength, file, "a title of " + std::to_string(src.title.size()) + " bytes");
+  if (src.title.size() > limits::kMaxTitleLength)
+    fail(file, "a title of " + std::to_string(src.title.size()) + " bytes");
   coordinate(src.player.pos.x, src.player.loc, "the player start");
   coordinate(src.player.pos.y, src.player.loc, "the player start");
   fail_if(!std::isfinite(src.player.angle), src.player.loc, "the player's angle");
@@ -332,9 +339,9 @@ void check_limits(const Source& src) {
     }
   for (const SpriteImage& i : src.sprite_images) {
     name(i.name, file, "a sprite image");
-    fail_if(i.image.width > kMaxTextureSize || i.image.height > kMaxTextureSize ||
-                std::abs(i.left) > kMaxTextureSize || std::abs(i.top) > kMaxTextureSize,
-            file, "sprite image " + i.name);
+    if (i.image.width > kMaxTextureSize || i.image.height > kMaxTextureSize || std::abs(i.left) > kMaxTextureSize ||
+        std::abs(i.top) > kMaxTextureSize)
+      fail(file, "sprite image " + i.name);
   }
   for (const SpriteFrame& f : src.sprites) {
     name(f.name, file, "a sprite frame");
