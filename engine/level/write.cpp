@@ -214,11 +214,10 @@ std::vector<uint8_t> encode(const Level& level) {
   out.reserve(encoded_size_estimate(level));
   write_header(out, 0, 0);  // the size and checksum patched below
   write_payload(out, level);
-  std::vector<uint8_t>& bytes = out.bytes();
-  const std::span<const uint8_t> payload(bytes.data() + format::kHeaderSize, bytes.size() - format::kHeaderSize);
+  const std::span<const uint8_t> payload = out.bytes().subspan(format::kHeaderSize);
   out.patch_u64(16, payload.size());
   out.patch_u64(24, checksum64(payload));
-  return std::move(bytes);
+  return out.release();
 }
 
 void encode(const Level& level, OutputFile& file) {

@@ -47,7 +47,7 @@ std::vector<uint8_t> encode_demo(const Demo& d) {
     out.u8(t.buttons);
   }
   out.u64(fnv1a64(out.bytes()));
-  return std::move(out.bytes());
+  return out.release();
 }
 
 Demo decode_demo(std::span<const uint8_t> bytes, const std::string& what) {

@@ -2,6 +2,7 @@
 // host's struct layout, plus the FNV-1a checksum of demo files.
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <cstring>
@@ -21,11 +22,11 @@ class ByteWriter {
   // (and at flush()), so that a large output is never whole in memory.
   ByteWriter(size_t chunk, std::function<void(std::span<const uint8_t>)> drain)
       : chunk_(chunk), drain_(std::move(drain)) {
-    out_.reserve(chunk + chunk / 4);
+    reserve(chunk + chunk / 4);
   }
 
   void u8(uint8_t v) {
-    out_.push_back(v);
+    *room(1) = v;
     drain_if_full();
   }
   void u16(uint16_t v) { put(v); }
@@ -43,41 +44,58 @@ class ByteWriter {
   // place); a draining writer hands them on at the next write or flush().
   uint8_t* extend(size_t n) {
     drain_if_full();
-    out_.resize(out_.size() + n);
-    return out_.data() + out_.size() - n;
+    return room(n);
   }
   void flush() {
-    if (drain_ && !out_.empty()) drain_(out_);
-    out_.clear();
+    if (drain_ && used_ > 0) drain_({out_.data(), used_});
+    used_ = 0;
   }
   void patch_u64(size_t offset, uint64_t v) {
     for (int i = 0; i < 8; ++i) out_[offset + i] = static_cast<uint8_t>(v >> (8 * i));
   }
-  size_t size() const { return out_.size(); }
-  void reserve(size_t n) { out_.reserve(n); }
-  std::vector<uint8_t>& bytes() { return out_; }
+  size_t size() const { return used_; }
+  void reserve(size_t n) {
+    if (out_.size() < n) out_.resize(n);
+  }
+  std::span<const uint8_t> bytes() const { return {out_.data(), used_}; }
+  // The bytes written, handed over; the writer starts empty.
+  std::vector<uint8_t> release() {
+    out_.resize(used_);
+    used_ = 0;
+    return std::move(out_);
+  }
 
  private:
   template <typename U>
   void put(U v) {
-    uint8_t b[sizeof(U)];
+    uint8_t* b = room(sizeof(U));
     if constexpr (std::endian::native == std::endian::little) std::memcpy(b, &v, sizeof(U));
     else
       for (size_t i = 0; i < sizeof(U); ++i) b[i] = static_cast<uint8_t>(v >> (8 * i));
-    append(b, sizeof(U));
-  }
-  // By resize and memcpy: GCC 12 warns falsely of an overflow in vector::insert here.
-  void append(const void* data, size_t n) {
-    if (n == 0) return;
-    const size_t at = out_.size();
-    out_.resize(at + n);
-    std::memcpy(out_.data() + at, data, n);
     drain_if_full();
   }
-  void drain_if_full() {
-    if (drain_ && out_.size() > chunk_) flush();
+  void append(const void* data, size_t n) {
+    if (n == 0) return;
+    std::memcpy(room(n), data, n);
+    drain_if_full();
   }
+  // n bytes at the end, the buffer grown by doubling: out_ is kept at its full length
+  // (used_ of it written), so a small write is a memcpy, not a vector resize.
+  uint8_t* room(size_t n) {
+    if (out_.size() - used_ < n) [[unlikely]]
+      grow(n);
+    uint8_t* at = out_.data() + used_;
+    used_ += n;
+    return at;
+  }
+  [[gnu::noinline]] void grow(size_t n) { out_.resize(std::max(used_ + n, 2 * out_.size())); }
+  void drain_if_full() {
+    if (drain_ && used_ > chunk_) [[unlikely]]
+      drain_and_reset();
+  }
+  [[gnu::noinline]] void drain_and_reset() { flush(); }
   std::vector<uint8_t> out_;
+  size_t used_ = 0;
   size_t chunk_ = 0;
   std::function<void(std::span<const uint8_t>)> drain_;  // empty: keep everything
 };

@@ -23,7 +23,7 @@ std::vector<uint8_t> write_wad(bool iwad, const std::vector<LumpToWrite>& lumps)
     out.u32(uint32_t(lumps[i].bytes.size()));
     for (size_t c = 0; c < kNameSize; ++c) out.u8(c < lumps[i].name.size() ? uint8_t(lumps[i].name[c]) : 0);
   }
-  return std::move(out.bytes());
+  return out.release();
 }
 
 std::vector<uint8_t> map_without_nodes(const MapLumps& map) {

@@ -101,14 +101,14 @@ void TestMap::add_to(WadWriter& wad, const std::string& name) const {
     name8(sectors_out, s.floor_flat), name8(sectors_out, s.ceiling_flat);
     i16(sectors_out, s.light), i16(sectors_out, s.special), i16(sectors_out, s.tag);
   }
-  wad.lump("THINGS", things_out.bytes());
-  wad.lump("LINEDEFS", lines_out.bytes());
-  wad.lump("SIDEDEFS", sides_out.bytes());
-  wad.lump("VERTEXES", vertices_out.bytes());
+  wad.lump("THINGS", things_out.release());
+  wad.lump("LINEDEFS", lines_out.release());
+  wad.lump("SIDEDEFS", sides_out.release());
+  wad.lump("VERTEXES", vertices_out.release());
   wad.lump("SEGS");
   wad.lump("SSECTORS");
   wad.lump("NODES");
-  wad.lump("SECTORS", sectors_out.bytes());
+  wad.lump("SECTORS", sectors_out.release());
   wad.lump("REJECT");
   wad.lump("BLOCKMAP");
 }
@@ -168,7 +168,7 @@ std::vector<uint8_t> encode_picture(const wad::IndexedImage& img) {
     }
     out.u8(0xFF);
   }
-  std::vector<uint8_t> bytes = std::move(out.bytes());
+  std::vector<uint8_t> bytes = out.release();
   for (int x = 0; x < img.width; ++x)
     for (int b = 0; b < 4; ++b) bytes[table + 4 * size_t(x) + b] = uint8_t(offsets[size_t(x)] >> (8 * b));
   return bytes;
@@ -177,12 +177,12 @@ std::vector<uint8_t> encode_picture(const wad::IndexedImage& img) {
 void add_test_art(WadWriter& wad) {
   ByteWriter palette;
   for (int i = 0; i < 256; ++i) palette.u8(uint8_t(i)), palette.u8(uint8_t(255 - i)), palette.u8(128);
-  wad.lump("PLAYPAL", palette.bytes());
+  wad.lump("PLAYPAL", palette.release());
   // Light map m maps index i to index i * (32 - m) / 32: darker and darker.
   ByteWriter colormap;
   for (int m = 0; m < 34; ++m)
     for (int i = 0; i < 256; ++i) colormap.u8(uint8_t(m < 32 ? i * (32 - m) / 32 : 0));
-  wad.lump("COLORMAP", colormap.bytes());
+  wad.lump("COLORMAP", colormap.release());
 
   wad::IndexedImage wall(64, 72), mesh(32, 32), sky(256, 128);
   for (int y = 0; y < 72; ++y)
@@ -200,7 +200,7 @@ void add_test_art(WadWriter& wad) {
   ByteWriter pnames;
   pnames.u32(3);
   name8(pnames, "WALLP"), name8(pnames, "MESHP"), name8(pnames, "SKYP");
-  wad.lump("PNAMES", pnames.bytes());
+  wad.lump("PNAMES", pnames.release());
 
   struct Def {
     const char* name;
@@ -223,7 +223,7 @@ void add_test_art(WadWriter& wad) {
     i16(textures, 1);
     i16(textures, 0), i16(textures, 0), i16(textures, d.patch), i16(textures, 1), i16(textures, 0);
   }
-  std::vector<uint8_t> tex = std::move(textures.bytes());
+  std::vector<uint8_t> tex = textures.release();
   for (size_t i = 0; i < offsets.size(); ++i)
     for (int b = 0; b < 4; ++b) tex[table + 4 * i + b] = uint8_t(offsets[i] >> (8 * b));
   wad.lump("TEXTURE1", tex);
