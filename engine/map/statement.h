@@ -124,9 +124,23 @@ class Statement {
   }
   Options options_;
 
+  // Most numbers in a map are short integers: read by a plain loop, they are the same
+  // doubles from_chars would give (exact below 2^53), -0 included.
+  static std::optional<double> short_integer(std::string_view text) {
+    const bool negative = !text.empty() && text[0] == '-';
+    const std::string_view digits = text.substr(negative ? 1 : 0);
+    if (digits.empty() || digits.size() > 15) return std::nullopt;
+    int64_t value = 0;
+    for (const char c : digits) {
+      if (c < '0' || c > '9') return std::nullopt;
+      value = value * 10 + (c - '0');
+    }
+    return negative ? -double(value) : double(value);
+  }
   // A number; what() names it in a failure's message, made only then.
   template <typename What>
   double parse_number(std::string_view text, const What& what) const {
+    if (const auto v = short_integer(text)) return *v;
     double v = 0;
     const char* end = text.data() + text.size();
     const auto [ptr, ec] = std::from_chars(text.data(), end, v);

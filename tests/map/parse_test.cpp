@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <charconv>
+
 #include "engine/map/source.h"
+#include "engine/map/statement.h"
 #include "engine/util/file.h"
 #include "tests/support/support.h"
 
@@ -317,6 +321,25 @@ TEST_F(ParseTest, BadGridsGiveLocatedMessages) {
       for (size_t at; (at = message.find(d)) != std::string::npos;) message.replace(at, d.size(), "DIR");
     }
     EXPECT_EQ(message, c.message) << c.name;
+  }
+}
+
+// Short integers take a loop of their own rather than from_chars: every number must
+// come out as from_chars reads it, bit for bit (-0 too), and every text it refuses
+// must still be refused.
+TEST(Statement, NumbersAreReadAsFromCharsReadsThem) {
+  const detail::Statement s(FileLoc("t.map", 1), {"k"});
+  for (const std::string text : {"0", "-0", "7", "-12", "007", "-000", "123456789012345", "-999999999999999",
+                                 "1234567890123456", "99999999999999999999", "1.5", "-2.25", "1e3", "+5", "-", "",
+                                 "--1", "12a", " 1", "0x10", "1-", "nan", "inf", "1e999"}) {
+    double expected = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), expected);
+    const bool valid = ec == std::errc() && end == text.data() + text.size() && std::isfinite(expected);
+    if (valid) {
+      EXPECT_EQ(std::bit_cast<uint64_t>(s.number(text, "n")), std::bit_cast<uint64_t>(expected)) << "'" << text << "'";
+    } else {
+      EXPECT_THROW(s.number(text, "n"), Error) << "'" << text << "'";
+    }
   }
 }
 
