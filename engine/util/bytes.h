@@ -54,6 +54,7 @@ class ByteWriter {
     for (int i = 0; i < 8; ++i) out_[offset + i] = static_cast<uint8_t>(v >> (8 * i));
   }
   size_t size() const { return used_; }
+  // Room for n bytes in all, allocated (and zeroed) at once.
   void reserve(size_t n) {
     if (out_.size() < n) out_.resize(n);
   }
