@@ -53,7 +53,7 @@ class BspFrontToBack final : public Renderer {
     });
     // Paletted levels: the strips drew palette indices (Canvas::resolve); the frame is
     // written in bands of whole rows, which the caches fetch as streams.
-    if (!level.light_indices.empty()) {
+    if (strips_[0].canvas.drew_indices()) {
       const int bands = std::min(view.height, kStrips);
       pool_.run(bands, [&](int band) {
         const int y0 = view.height * band / bands, y1 = view.height * (band + 1) / bands;

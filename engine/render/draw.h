@@ -67,6 +67,7 @@ class Canvas {
   // Writes rows [y0, y1) of the canvas's columns into the frame, after finish(), when
   // it drew palette indices (a no-op otherwise). Strips may resolve rows in any order.
   void resolve(int y0, int y1);
+  bool drew_indices() const { return indexed_; }
   // Masked middle textures and sprites, farthest first in every column, each clipped
   // to the rows its column had open at its depth. Equal depths: the masked wall
   // first, then sprites by thing index.

@@ -46,7 +46,7 @@ class ByteWriter {
     drain_if_full();
     return room(n);
   }
-  void flush() {
+  [[gnu::noinline]] void flush() {  // rare: kept out of the writes it follows
     if (drain_ && used_ > 0) drain_({out_.data(), used_});
     used_ = 0;
   }
@@ -92,9 +92,8 @@ class ByteWriter {
   [[gnu::noinline]] void grow(size_t n) { out_.resize(std::max(used_ + n, 2 * out_.size())); }
   void drain_if_full() {
     if (drain_ && used_ > chunk_) [[unlikely]]
-      drain_and_reset();
+      flush();
   }
-  [[gnu::noinline]] void drain_and_reset() { flush(); }
   std::vector<uint8_t> out_;
   size_t used_ = 0;
   size_t chunk_ = 0;
