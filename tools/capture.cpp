@@ -32,16 +32,25 @@ std::string columns_csv(const level::Level& level, const render::ColumnHits& hit
 class PngEncoder {
  public:
   explicit PngEncoder(int threads) : threads_(threads) {}
-  void add(const std::filesystem::path& path, const image::Image& frame, Outputs& outputs) {
-    if (threads_ <= 1) return outputs.add(path, image::encode_png(frame));
+  void add(const std::filesystem::path& path, const render::Frame& frame, Outputs& outputs) {
+    if (threads_ <= 1) return outputs.add(path, encode(frame));
     while (pending_.size() >= size_t(2 * threads_)) finish_oldest(outputs);
-    pending_.push_back({path, std::async(std::launch::async, [frame] { return image::encode_png(frame); })});
+    render::Frame copy;  // what the PNG needs: the indices or the colours
+    copy.width = frame.width, copy.height = frame.height;
+    if (frame.indexed()) copy.indices = frame.indices, copy.palette = frame.palette;
+    else copy.pixels = frame.pixels;
+    pending_.push_back({path, std::async(std::launch::async, [copy = std::move(copy)] { return encode(copy); })});
   }
   void finish(Outputs& outputs) {
     while (!pending_.empty()) finish_oldest(outputs);
   }
 
  private:
+  // A frame of a paletted level stays 8-bit: a paletted PNG, a quarter of the bytes to filter.
+  static std::vector<uint8_t> encode(const render::Frame& frame) {
+    return frame.indexed() ? image::encode_png(frame.width, frame.height, frame.indices, frame.palette)
+                           : image::encode_png(frame);
+  }
   void finish_oldest(Outputs& outputs) {
     outputs.add(pending_.front().path, pending_.front().bytes.get());
     pending_.pop_front();
@@ -124,6 +133,7 @@ int main(int argc, char** argv) {
     renderer->prepare(level);
     const level::State state = level::start_state(level, skill);
     render::Frame frame(width, height);
+    frame.keep_indices = true;
     render::Probe probe;
     probe.want_columns = !columns.empty();
     std::vector<std::string> json_frames;

@@ -28,7 +28,8 @@ struct Result {  // one renderer, one camera
 struct Row {  // one renderer over all cameras
   std::string name;
   std::vector<Result> results;
-  render::Frame frame, diff, overdraw;  // of the first camera
+  render::Frame frame;  // of the first camera
+  image::Image diff, overdraw;
   double overdraw_max = 0;
 };
 

@@ -32,6 +32,9 @@ struct Image {
 Image decode_png(std::span<const uint8_t> bytes, const std::string& what);
 Image load_png(const std::filesystem::path& path);
 std::vector<uint8_t> encode_png(const Image& image);
+// A paletted PNG: indices (row-major, width x height) into palette (1 to 256 colours,
+// RGBA; a tRNS chunk only when one is not opaque). Throws Error on a mismatch.
+std::vector<uint8_t> encode_png(int width, int height, std::span<const uint8_t> indices, std::span<const uint32_t> palette);
 void save_png(const Image& image, const std::filesystem::path& path);  // atomic
 
 struct Difference {

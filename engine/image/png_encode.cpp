@@ -1,6 +1,7 @@
 // PNG encoding: each row filtered by whichever of PNG's five filters leaves the
 // smallest sum of absolute differences (libpng's heuristic), the rows deflated in one
-// zlib stream by libdeflate. An opaque image is written as RGB, else RGBA. The bytes
+// zlib stream by libdeflate. An opaque image is written as RGB, else RGBA; an 8-bit
+// frame as palette indices. The bytes
 // depend only on the pixels: captures are reproducible on any thread count.
 #include <libdeflate.h>
 
@@ -121,28 +122,19 @@ struct CompressorFree {
 
 }  // namespace
 
-std::vector<uint8_t> encode_png(const Image& image) {
-  if (image.width <= 0 || image.height <= 0) throw Error("cannot encode an empty image as PNG");
-  uint32_t all = ~0u;  // the bits set in every pixel: opaque when all of alpha's are
-  for (const uint32_t p : image.pixels) all &= p;
-  const bool opaque = (all >> 24) == 255;
-  const int channels = opaque ? 3 : 4;
-  const size_t stride = size_t(image.width) * channels;
+namespace {
 
-  // Buffers kept from frame to frame: fresh ones of this size cost a page fault per 4 KB.
-  thread_local std::vector<uint8_t> rows, filtered, scratch, zeros, deflated;
-  rows.resize(size_t(image.height) * stride);  // pixels as bytes, R G B (A)
-  for (size_t i = 0; i < image.pixels.size(); ++i) {
-    const uint32_t p = image.pixels[i];
-    uint8_t* o = &rows[i * channels];
-    o[0] = uint8_t(p), o[1] = uint8_t(p >> 8), o[2] = uint8_t(p >> 16);
-    if (channels == 4) o[3] = uint8_t(p >> 24);
-  }
-  filtered.resize(size_t(image.height) * (stride + 1));
+// The PNG of `height` rows of `stride` bytes each (`channels` bytes a pixel), with its
+// colour type and the chunks that go before the pixels (a palette).
+std::vector<uint8_t> encode_rows(int width, int height, const uint8_t* rows, size_t channels, uint8_t colour_type,
+                                 const std::vector<std::pair<const char*, std::vector<uint8_t>>>& before_pixels) {
+  const size_t stride = size_t(width) * channels;
+  thread_local std::vector<uint8_t> filtered, scratch, zeros, deflated;
+  filtered.resize(size_t(height) * (stride + 1));
   scratch.resize(5 * stride);
   zeros.assign(stride, 0);
-  for (int y = 0; y < image.height; ++y)
-    filter_row(&rows[size_t(y) * stride], y ? &rows[size_t(y - 1) * stride] : zeros.data(), stride, size_t(channels),
+  for (int y = 0; y < height; ++y)
+    filter_row(rows + size_t(y) * stride, y ? rows + size_t(y - 1) * stride : zeros.data(), stride, channels,
                scratch.data(), &filtered[size_t(y) * (stride + 1)]);
 
   thread_local std::unique_ptr<libdeflate_compressor, CompressorFree> compressor(libdeflate_alloc_compressor(kDeflateLevel));
@@ -153,15 +145,51 @@ std::vector<uint8_t> encode_png(const Image& image) {
   if (deflated_size == 0) throw Error("cannot encode PNG");
 
   std::vector<uint8_t> out = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-  out.reserve(64 + deflated_size);
+  out.reserve(1100 + deflated_size);
   std::vector<uint8_t> header;
-  put32(header, uint32_t(image.width));
-  put32(header, uint32_t(image.height));
-  header.insert(header.end(), {8, uint8_t(opaque ? 2 : 6), 0, 0, 0});  // 8 bits, RGB or RGBA, deflate, adaptive, no interlace
+  put32(header, uint32_t(width));
+  put32(header, uint32_t(height));
+  header.insert(header.end(), {8, colour_type, 0, 0, 0});  // 8 bits, deflate, adaptive filters, no interlace
   chunk(out, "IHDR", header);
+  for (const auto& [type, data] : before_pixels) chunk(out, type, data);
   chunk(out, "IDAT", std::span(deflated.data(), deflated_size));
   chunk(out, "IEND", {});
   return out;
+}
+
+}  // namespace
+
+std::vector<uint8_t> encode_png(const Image& image) {
+  if (image.width <= 0 || image.height <= 0) throw Error("cannot encode an empty image as PNG");
+  uint32_t all = ~0u;  // the bits set in every pixel: opaque when all of alpha's are
+  for (const uint32_t p : image.pixels) all &= p;
+  const bool opaque = (all >> 24) == 255;
+  const size_t channels = opaque ? 3 : 4;
+  // Buffers kept from frame to frame: fresh ones of this size cost a page fault per 4 KB.
+  thread_local std::vector<uint8_t> rows;
+  rows.resize(image.pixels.size() * channels);  // pixels as bytes, R G B (A)
+  for (size_t i = 0; i < image.pixels.size(); ++i) {
+    const uint32_t p = image.pixels[i];
+    uint8_t* o = &rows[i * channels];
+    o[0] = uint8_t(p), o[1] = uint8_t(p >> 8), o[2] = uint8_t(p >> 16);
+    if (channels == 4) o[3] = uint8_t(p >> 24);
+  }
+  return encode_rows(image.width, image.height, rows.data(), channels, opaque ? 2 : 6, {});  // RGB or RGBA
+}
+
+std::vector<uint8_t> encode_png(int width, int height, std::span<const uint8_t> indices, std::span<const uint32_t> palette) {
+  if (width <= 0 || height <= 0) throw Error("cannot encode an empty image as PNG");
+  if (indices.size() != size_t(width) * size_t(height) || palette.empty() || palette.size() > 256)
+    throw Error("cannot encode PNG: the indices do not fill the image, or the palette is not 1 to 256 colours");
+  std::vector<uint8_t> colours, alphas;
+  for (const uint32_t c : palette) colours.insert(colours.end(), {uint8_t(red(c)), uint8_t(green(c)), uint8_t(blue(c))});
+  if (!std::all_of(palette.begin(), palette.end(), [](uint32_t c) { return c >> 24 == 255; }))
+    for (const uint32_t c : palette) alphas.push_back(uint8_t(c >> 24));
+  for (const uint8_t i : indices)
+    if (i >= palette.size()) throw Error("cannot encode PNG: an index outside the palette");
+  std::vector<std::pair<const char*, std::vector<uint8_t>>> chunks{{"PLTE", std::move(colours)}};
+  if (!alphas.empty()) chunks.push_back({"tRNS", std::move(alphas)});
+  return encode_rows(width, height, indices.data(), 1, 3, chunks);
 }
 
 }  // namespace p3d::image

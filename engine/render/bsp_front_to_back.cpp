@@ -43,6 +43,7 @@ class BspFrontToBack final : public Renderer {
     const int strips = (view.width + strip_width - 1) / strip_width;
     if (strips_.size() < size_t(strips)) strips_.resize(size_t(strips));
     Canvas::prepare_probe(view, probe);
+    Canvas::prepare_frame(level, frame);
     pool_.run(strips, [&](int i) {
       Strip& s = strips_[size_t(i)];
       s.x0 = i * strip_width;
@@ -51,8 +52,9 @@ class BspFrontToBack final : public Renderer {
       s.order = one_walk ? &probe->order : nullptr;
       walk(level, view, camera, s);
     });
-    // Paletted levels: the strips drew palette indices (Canvas::resolve); the frame is
-    // written in bands of whole rows, which the caches fetch as streams.
+    // Paletted levels: the strips drew palette indices (Canvas::resolve); the frame's
+    // colours (or its indices) are written in bands of whole rows, which the caches
+    // fetch as streams.
     if (strips_[0].canvas.drew_indices()) {
       const int bands = std::min(view.height, kStrips);
       pool_.run(bands, [&](int band) {

@@ -13,7 +13,21 @@
 namespace p3d::render {
 
 using geom::Vec2;
-using Frame = image::Image;
+// A rendered frame: its colours (the image's pixels), or Doom's 8-bit screen. A
+// caller that sets keep_indices lets a level drawn in palette indices stay that way:
+// the renderer then leaves `indices` (row-major) and `palette` and does not touch the
+// pixels, as Doom leaves its screen to the blit (a paletted PNG needs no colours, and
+// a frame's time is then comparable with a Doom port's render-only time).
+struct Frame : image::Image {
+  using image::Image::Image;
+  bool keep_indices = false;
+  std::vector<uint8_t> indices;  // empty unless the last render kept them
+  std::vector<uint32_t> palette;
+  bool indexed() const { return !indices.empty(); }
+  // Writes the pixels of rows [y0, y1) from the indices (none when not indexed).
+  void resolve_rows(int y0, int y1);
+  void resolve_colours() { resolve_rows(0, height); }
+};
 
 constexpr double kEyeHeight = 41;  // Doom's view height above the floor
 // Cameras must stay within this many map units of the origin (4x the map range), and

@@ -16,6 +16,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstring>
 
 namespace p3d::render {
 
@@ -128,6 +129,15 @@ void Canvas::prepare_probe(const View& view, Probe* probe) {
   if (probe && probe->want_writes) probe->writes.assign(size_t(view.width) * view.height, 0);
 }
 
+void Canvas::prepare_frame(const level::Level& level, Frame& frame) {
+  if (frame.keep_indices && !level.light_indices.empty()) {
+    frame.indices.resize(size_t(frame.width) * size_t(frame.height));
+    frame.palette = level.palette;
+  } else {
+    frame.indices.clear();
+  }
+}
+
 void Canvas::begin(const level::Level& level, const level::State& state, const View& view, Frame& frame,
                    int camera_sector, Probe* probe, int x0, int x1) {
   level_ = &level;
@@ -162,7 +172,10 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
   painted_index_.clear();
   painted_count_ = 0;
   tabulate_sky_rows();
-  if (x0_ == 0 && x1_ == view.width) prepare_probe(view, probe);
+  if (x0_ == 0 && x1_ == view.width) {
+    prepare_probe(view, probe);
+    prepare_frame(level, frame);
+  }
   pixels_ = closed_count_ = masked_pixels_ = sprites_drawn_ = sprite_pixels_ = 0;
 }
 
@@ -228,6 +241,11 @@ void Canvas::finish() {
 
 void Canvas::resolve(int y0, int y1) {
   if (!indexed_) return;
+  if (frame_->indexed()) {
+    for (int y = y0; y < y1; ++y)
+      std::memcpy(frame_->indices.data() + size_t(y) * size_t(view_->width) + size_t(x0_), index_pixel(x0_, y), index_pitch_);
+    return;
+  }
   const uint32_t* palette = level_->palette.data();
   for (int y = y0; y < y1; ++y) {
     const uint8_t* in = index_pixel(x0_, y);

@@ -38,9 +38,15 @@ class Canvas {
   void begin(const level::Level& level, const level::State& state, const View& view, Frame& frame, int camera_sector,
              Probe* probe, int x0 = 0, int x1 = INT32_MAX);
   static void prepare_probe(const View& view, Probe* probe);
+  // Sizes the frame's indices when it keeps them and the level is drawn in indices;
+  // like prepare_probe, done by begin() for a canvas that owns the whole frame.
+  static void prepare_frame(const level::Level& level, Frame& frame);
   // For a renderer that draws over its own pixels (the painter): write the frame's
   // colours at once rather than palette indices resolved at the end (see indexed_).
-  void draw_directly() { indexed_ = false; }
+  void draw_directly() {
+    indexed_ = false;
+    frame_->indices.clear();
+  }
 
   // Front to back: draws what the hit shows in the column's open rows and narrows
   // them. Returns true when this hit closes the column.
@@ -65,7 +71,8 @@ class Canvas {
   // then draws the layers (see draw_layers).
   void finish();
   // Writes rows [y0, y1) of the canvas's columns into the frame, after finish(), when
-  // it drew palette indices (a no-op otherwise). Strips may resolve rows in any order.
+  // it drew palette indices (a no-op otherwise): the indices themselves when the frame
+  // keeps them, else their colours. Strips may resolve rows in any order.
   void resolve(int y0, int y1);
   bool drew_indices() const { return indexed_; }
   // Masked middle textures and sprites, farthest first in every column, each clipped

@@ -11,6 +11,7 @@
 
 #include "engine/image/image.h"
 #include "engine/level/io.h"
+#include "engine/render/renderer.h"
 #include "engine/util/file.h"
 #include "tests/support/support.h"
 
@@ -330,6 +331,15 @@ TEST_F(Tools, WadMapsCompileCaptureAndFailCleanly) {
   // capture straight from the WAD, from the player start.
   ASSERT_EQ(test::run(tool("capture") + " --iwad " + iwad + " --map MAP02 --size 120x80 -o " + out("w.png"), o), 0) << o;
   EXPECT_EQ(read_file_bytes(out("w.png")), read_file_bytes(out("a.png")));
+
+  // A WAD level's frames stay 8-bit: a paletted PNG (IHDR's colour type 3), the same
+  // picture as the renderer's colours.
+  const std::vector<uint8_t> png = read_file_bytes(out("a.png"));
+  ASSERT_GT(png.size(), 25u);
+  EXPECT_EQ(png[25], 3);
+  render::Frame frame(120, 80);
+  render::make_renderer("bsp")->render(level, render::camera_at(level, level.player_start, level.player_angle), frame);
+  EXPECT_EQ(image::load_png(out("a.png")).pixels, frame.pixels);
 
   // A broken WAD: a clear message, exit 1, nothing written.
   std::vector<uint8_t> broken = read_file_bytes(iwad);

@@ -93,7 +93,7 @@ std::string build_error(const TestMap& m) {
 // The compiled level is sound: exact invariants, and bsp renders exactly as the
 // reference and the painter. The first two draw palette indices and resolve them at the
 // end, the painter writes colours at once; so does bsp on a copy of the level without
-// its index light maps.
+// its index light maps. Frames that keep their indices give the same picture.
 void expect_sound(const level::Level& level, const std::string& what) {
   const auto problems = bsp::check_invariants(level);
   EXPECT_TRUE(problems.empty()) << what << ": " << (problems.empty() ? "" : problems.front());
@@ -112,6 +112,23 @@ void expect_sound(const level::Level& level, const std::string& what) {
     EXPECT_EQ(a.pixels, b.pixels) << what << " camera " << i;
     EXPECT_EQ(a.pixels, painted.pixels) << what << " camera " << i << ": the painter";
     EXPECT_EQ(a.pixels, direct.pixels) << what << " camera " << i << ": drawn in colours";
+    EXPECT_FALSE(a.indexed() || b.indexed() || painted.indexed() || direct.indexed()) << "not asked to keep indices";
+    // Frames that keep their indices (Doom's 8-bit screen): the same picture, pixels untouched.
+    for (const char* name : {"bsp", "reference", "painter"}) {
+      render::Frame kept(64, 40, image::rgba(1, 2, 3));
+      kept.keep_indices = true;
+      render::make_renderer(name, {.threads = 2})->render(level, c, kept);
+      if (std::string_view(name) == "painter") {  // it draws over its own pixels, in colours
+        EXPECT_FALSE(kept.indexed());
+        EXPECT_EQ(kept.pixels, a.pixels) << what << " camera " << i << ": " << name;
+        continue;
+      }
+      ASSERT_TRUE(kept.indexed()) << name;
+      EXPECT_EQ(kept.palette, level.palette);
+      EXPECT_EQ(kept.pixels, std::vector<uint32_t>(kept.pixels.size(), image::rgba(1, 2, 3))) << name;
+      kept.resolve_colours();
+      EXPECT_EQ(kept.pixels, a.pixels) << what << " camera " << i << ": " << name << " keeping indices";
+    }
   }
 }
 
