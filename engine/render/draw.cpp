@@ -119,7 +119,7 @@ void wrapped_column(Pixel* out, size_t pitch, int count, int64_t v, int64_t step
 // this keeps the conversion defined whatever the camera.
 int64_t to_int(double v) {
   constexpr double kLimit = 0x1p62;
-  return static_cast<int64_t>(std::clamp(std::floor(v), -kLimit, kLimit));
+  return !(v > -kLimit) ? int64_t(-kLimit) : v >= kLimit ? int64_t(kLimit) : floor_to_int(v);  // NaN: -kLimit
 }
 
 }  // namespace
@@ -387,8 +387,8 @@ void Canvas::wall_span(int x, int y0, int y1, const Part& part, const WallHit& h
   const double v0 = part.anchor - view_->eye + side.y_offset + level_->part_y(side, part.part) + (0.5 - view_->half_h) * inv_scale;
   const int64_t period = int64_t(tex.height) << 16;
   auto reduce = [&](int64_t v) { return tex.pow2_height ? v & (period - 1) : level::floor_mod(v, period); };
-  const int64_t step = reduce(std::llround(inv_scale * kFix));
-  const int64_t v = reduce(std::llround(v0 * kFix) + int64_t(y0) * step);
+  const int64_t step = reduce(round_to_int(inv_scale * kFix));
+  const int64_t v = reduce(round_to_int(v0 * kFix) + int64_t(y0) * step);
   const int map = wall_light_map(light_start(part.light, w.contrast), hit.depth);
   if (indexed_)
     return wrapped_column(index_pixel(x, y0), index_pitch_, y1 - y0, v, step, period,
@@ -416,8 +416,8 @@ void Canvas::draw_masked(int x, const Step& m) {
   const double inv_scale = m.hit.depth / view_->d;
   const double v0 = anchor - view_->eye + side.y_offset + level_->part_y(side, level::kMiddlePart) +
                     (0.5 - view_->half_h) * inv_scale;
-  const int64_t step = std::llround(inv_scale * kFix);
-  int64_t v = std::llround(v0 * kFix) + int64_t(m.top) * step;
+  const int64_t step = round_to_int(inv_scale * kFix);
+  int64_t v = round_to_int(v0 * kFix) + int64_t(m.top) * step;
   const int light = side.light != kNone ? side.light : s.light;
   const int map = wall_light_map(light_start(light, w.contrast), m.hit.depth);
   const size_t column = size_t(tex.wrap_u(u)) * tex.height;
@@ -474,8 +474,8 @@ void Canvas::add_sprite(uint32_t thing) {
   s.top = origin + image.top;
   // Columns whose centre's ray crosses the picture (one more on each side: draw_sprite_column checks).
   const double scale = view_->d / depth;
-  s.x0 = std::max(x0_, int(std::floor(view_->half_w + s.left * scale)) - 1);
-  s.x1 = std::min(x1_ - 1, int(std::ceil(view_->half_w + (s.left + tex.width) * scale)) + 1);
+  s.x0 = std::max(x0_, int(floor_to_int(view_->half_w + s.left * scale)) - 1);
+  s.x1 = std::min(x1_ - 1, int(ceil_to_int(view_->half_w + (s.left + tex.width) * scale)) + 1);
   if (s.x0 > s.x1) return;
   s.light_map = frame.bright ? 0 : wall_light_map(light_start(sector.light, 0), depth);
   sprites_.push_back(s);
@@ -491,8 +491,8 @@ void Canvas::draw_sprite_column(const Sprite& s, int x, int top, int bottom, boo
   if (u < 0 || u >= tex.width) return;
   const size_t column = size_t(s.flip ? tex.width - 1 - u : u) * tex.height;
   // Texel row at screen row y: (v0 + y * step) >> 16, v0 from top - z at row 0, as walls.
-  const int64_t v0 = std::llround((s.top - view_->eye + (0.5 - view_->half_h) * inv_scale) * kFix);
-  const int64_t step = std::max<int64_t>(1, std::llround(inv_scale * kFix));
+  const int64_t v0 = round_to_int((s.top - view_->eye + (0.5 - view_->half_h) * inv_scale) * kFix);
+  const int64_t step = std::max<int64_t>(1, round_to_int(inv_scale * kFix));
   // Only the rows where the picture is: 0 <= v0 + y * step < height << 16, exactly.
   auto ceil_div = [](int64_t a, int64_t b) { return a >= 0 ? (a + b - 1) / b : -((-a) / b); };
   const int y0 = int(std::clamp<int64_t>(ceil_div(-v0, step), top, bottom));

@@ -11,8 +11,8 @@ Vec2 to_camera(const View& v, Vec2 p) { return {v.lateral_of(p), v.depth_of(p)};
 ColumnRange to_columns(const View& v, double lo, double hi) {
   lo = std::clamp(lo, -2.0, v.width + 2.0);
   hi = std::clamp(hi, -2.0, v.width + 2.0);
-  return {std::max(0, static_cast<int>(std::floor(lo - 0.5)) - 1),
-          std::min(v.width - 1, static_cast<int>(std::ceil(hi - 0.5)) + 1)};
+  return {std::max(0, static_cast<int>(floor_to_int(lo - 0.5)) - 1),
+          std::min(v.width - 1, static_cast<int>(ceil_to_int(hi - 0.5)) + 1)};
 }
 
 // Projects a camera-space polygon clipped to depth >= near; empty if nothing is in front.

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "engine/render/camera.h"
+#include "engine/util/rounding.h"
 
 namespace p3d::render {
 
@@ -41,8 +42,8 @@ struct View {
 
   // First row whose centre is at or below screen y, clamped to [0, height].
   int row_at(double y) const {
-    const double r = std::ceil(y - 0.5);
-    return r <= 0 ? 0 : r >= height ? height : static_cast<int>(r);
+    const double r = y - 0.5;
+    return !(r > 0) ? 0 : r > height ? height : static_cast<int>(ceil_to_int(r));  // NaN: 0
   }
 };
 
