@@ -18,6 +18,10 @@
 #include <cmath>
 #include <cstring>
 
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
 namespace p3d::render {
 
 namespace {
@@ -606,12 +610,47 @@ void with_texel_index(const level::Texture& tex, Draw&& draw) {
   }
 }
 
+// n pixels of a row of a power-of-two plane, in palette indices: with_texel_index's
+// arithmetic (modulo 2^32) for four pixels at a time in SSE2's 32-bit lanes, which a
+// flat's rows spend half their instructions on.
+void indexed_pow2_row(uint8_t* out, int n, uint32_t u, uint32_t du, uint32_t v, uint32_t dv, const level::Texture& tex,
+                      const uint8_t* light_map) {
+  const uint32_t shift = uint32_t(std::countr_zero(unsigned(tex.height)));
+  const uint32_t umask = uint32_t(tex.width - 1) << shift, vmask = uint32_t(tex.height - 1);
+  const uint8_t* indices = tex.indices.data();
+  int i = 0;
+#ifdef __SSE2__
+  const __m128i u_shift = _mm_cvtsi32_si128(int(16 - shift)), u_mask = _mm_set1_epi32(int(umask)),
+                v_mask = _mm_set1_epi32(int(vmask));
+  const __m128i du4 = _mm_set1_epi32(int(4 * du)), dv4 = _mm_set1_epi32(int(4 * dv));
+  __m128i uu = _mm_setr_epi32(int(u), int(u + du), int(u + 2 * du), int(u + 3 * du));
+  __m128i vv = _mm_setr_epi32(int(v), int(v + dv), int(v + 2 * dv), int(v + 3 * dv));
+  for (; i + 4 <= n; i += 4) {
+    const __m128i texels = _mm_or_si128(_mm_and_si128(_mm_srl_epi32(uu, u_shift), u_mask),
+                                        _mm_and_si128(_mm_srli_epi32(vv, 16), v_mask));
+    const uint64_t low = uint64_t(_mm_cvtsi128_si64(texels)), high = uint64_t(_mm_cvtsi128_si64(_mm_unpackhi_epi64(texels, texels)));
+    out[i] = light_map[indices[uint32_t(low)]];
+    out[i + 1] = light_map[indices[low >> 32]];
+    out[i + 2] = light_map[indices[uint32_t(high)]];
+    out[i + 3] = light_map[indices[high >> 32]];
+    uu = _mm_add_epi32(uu, du4);
+    vv = _mm_add_epi32(vv, dv4);
+  }
+  u += uint32_t(i) * du, v += uint32_t(i) * dv;
+#endif
+  for (; i < n; ++i, u += du, v += dv) out[i] = light_map[indices[((u >> (16 - shift)) & umask) | ((v >> 16) & vmask)]];
+}
+
 }  // namespace
 
 // Pixels [xa, xb) of row y of a plane: one light map for the row.
 void Canvas::plane_pixels(const PlaneKey& key, int y, int xa, int xb) {
   const level::Texture& tex = level_->textures[key.texture];
   const PlaneRow row = plane_row(key, y);
+  if (indexed_ && tex.pow2_width && tex.pow2_height)
+    return indexed_pow2_row(index_pixel(xa, y), xb - xa, uint32_t(row.u0 + uint64_t(xa) * row.du), uint32_t(row.du),
+                            uint32_t(row.v0 + uint64_t(xa) * row.dv), uint32_t(row.dv), tex,
+                            level_->light_indices.data() + size_t(row.light_map) * limits::kPaletteSize);
   auto draw = [&](auto colour_of_texel, auto texel_of, auto* out) {
     uint64_t u = row.u0 + uint64_t(xa) * row.du, v = row.v0 + uint64_t(xa) * row.dv;
     for (int x = xa; x < xb; ++x, u += row.du, v += row.dv) *out++ = colour_of_texel(texel_of(u, v));
@@ -661,20 +700,23 @@ const Canvas::PlaneRow* Canvas::painted_rows(const PlaneKey& key, int y0, int y1
 // Doom's sky: 1024 texture columns around the horizon (a 256-wide sky repeats four
 // times), the column at the ray's angle; texture row 100 at the horizon and one row
 // per pixel at Doom's projection (d = 160), so the sky keeps its angular size at any
-// resolution. Full bright. A screen row's texture row is the same in every column:
-// begin() tabulates it.
+// resolution. Full bright. A screen row's texture row is the same in every column,
+// and a column's angle from the view direction the same in every frame of a size:
+// begin() tabulates both.
 constexpr double kSkyColumns = 1024, kSkyMidRow = 100, kDoomProjection = 160;
 
 void Canvas::tabulate_sky_rows() {
   if (level_->sky_texture == kNone) return sky_rows_.clear();
   const level::Texture& tex = level_->textures[level_->sky_texture];
   // The rows depend only on these: a game's or a benchmark's frames reuse them.
-  const SkyKey key{tex.height, view_->d, view_->half_h, view_->height};
+  const SkyKey key{tex.height, view_->d, view_->half_h, view_->height, view_->half_w, view_->width};
   if (key == sky_key_ && sky_rows_.size() == size_t(view_->height)) return;
   sky_key_ = key;
   const double rows_per_pixel = kDoomProjection / view_->d;
   sky_rows_.resize(size_t(view_->height));
   for (int y = 0; y < view_->height; ++y) sky_rows_[size_t(y)] = tex.wrap_v(to_int(kSkyMidRow + row_dy_[y] * rows_per_pixel));
+  sky_angles_.resize(size_t(view_->width));
+  for (int x = 0; x < view_->width; ++x) sky_angles_[size_t(x)] = std::atan2(view_->half_w - (x + 0.5), view_->d);
 }
 
 void Canvas::sky_span(int x, int y0, int y1) {
@@ -682,7 +724,7 @@ void Canvas::sky_span(int x, int y0, int y1) {
   if (level_->sky_texture == kNone) return fill_span(x, y0, y1, Fill::kVoid);
   count(x, y0, y1);
   const level::Texture& tex = level_->textures[level_->sky_texture];
-  const double angle = view_->angle + std::atan2(view_->half_w - (x + 0.5), view_->d);
+  const double angle = view_->angle + sky_angles_[size_t(x)];
   const int64_t u = to_int(angle / (2 * M_PI) * kSkyColumns);
   const int* rows = sky_rows_.data();
   if (indexed_) {

@@ -177,14 +177,17 @@ class Canvas {
   std::vector<int> layer_cursor_;  // draw_layers: per column, the farthest step not yet passed
   std::vector<double> row_dy_;   // (y + 0.5) - H/2 per row
   std::vector<double> row_inv_;  // 1 / row_dy_
-  std::vector<int> sky_rows_;    // the sky's texture row at each screen row
+  std::vector<int> sky_rows_;       // the sky's texture row at each screen row
+  std::vector<double> sky_angles_;  // each column's angle left of the view direction, radians
   struct SkyKey {
     int texture_height = 0;
     double d = 0, half_h = 0;
     int height = 0;
+    double half_w = 0;
+    int width = 0;
     bool operator==(const SkyKey&) const = default;
   };
-  SkyKey sky_key_;  // what sky_rows_ were tabulated for
+  SkyKey sky_key_;  // what sky_rows_ and sky_angles_ were tabulated for
   // Paletted levels draw palette indices (Doom's 8-bit screen) into the canvas's own
   // columns, rows index_pitch_ apart, and resolve() looks the palette up once per pixel:
   // a strip of 80 columns of 400 rows is 32 KB, in the L1 cache, where the 32-bit
