@@ -31,6 +31,24 @@ Texture make_texture(const std::string& name, int width, int height, const uint3
       t.holes |= (rgba_rows[from] >> 24) == 0;
       if (index_rows) t.indices[to] = index_rows[from];
     }
+  static_assert(limits::kMaxTextureSize <= UINT16_MAX, "a run's rows are 16-bit");
+  if (t.holes) {
+    t.run_start.reserve(size_t(width) + 1);
+    for (int x = 0; x < width; ++x) {
+      t.run_start.push_back(uint32_t(t.runs.size()));
+      const uint32_t* column = t.column(x);
+      for (int y = 0; y < height;) {
+        if (!(column[y] >> 24)) {
+          ++y;
+          continue;
+        }
+        const int first = y;
+        while (y < height && (column[y] >> 24)) ++y;
+        t.runs.push_back({uint16_t(first), uint16_t(y)});
+      }
+    }
+    t.run_start.push_back(uint32_t(t.runs.size()));
+  }
   return t;
 }
 

@@ -36,6 +36,13 @@ struct Texture {
   // Derived by make_texture:
   bool holes = false;             // some texel is transparent
   bool pow2_width = false, pow2_height = false;
+  // Textures with holes: each column's runs of opaque texels (Doom's posts), rows
+  // [first, end); column u's are runs[run_start[u]] up to runs[run_start[u + 1]].
+  struct Run {
+    uint16_t first, end;
+  };
+  std::vector<uint32_t> run_start;
+  std::vector<Run> runs;
 
   int wrap_u(int64_t u) const { return int(pow2_width ? u & (width - 1) : floor_mod(u, width)); }
   int wrap_v(int64_t v) const { return int(pow2_height ? v & (height - 1) : floor_mod(v, height)); }

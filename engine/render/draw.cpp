@@ -331,11 +331,6 @@ void Canvas::count(int x, int y0, int y1) {
     for (int y = y0; y < y1; ++y) ++(*writes_)[size_t(y) * view_->width + x];
 }
 
-void Canvas::count_layer(int x, int y, uint64_t& counter) {
-  ++counter;
-  if (writes_) ++(*writes_)[size_t(y) * view_->width + x];
-}
-
 void Canvas::choose_fill_colors() {
   const level::Level& l = *level_;
   fill_indices_[size_t(Fill::kVoid)] = l.void_index;
@@ -420,25 +415,59 @@ void Canvas::draw_masked(int x, const Step& m) {
   const double inv_scale = m.hit.depth / view_->d;
   const double v0 = anchor - view_->eye + side.y_offset + level_->part_y(side, level::kMiddlePart) +
                     (0.5 - view_->half_h) * inv_scale;
-  const int64_t step = round_to_int(inv_scale * kFix);
-  int64_t v = round_to_int(v0 * kFix) + int64_t(m.top) * step;
   const int light = side.light != kNone ? side.light : s.light;
   const int map = wall_light_map(light_start(light, w.contrast), m.hit.depth);
-  const size_t column = size_t(tex.wrap_u(u)) * tex.height;
-  auto draw = [&](auto* out, size_t pitch, auto colour_of) {
-    for (int y = m.top; y < m.bottom; ++y, out += pitch, v += step) {
-      const int64_t row = v >> 16;
-      if (row < 0 || row >= tex.height || !(tex.texels[column + size_t(row)] >> 24)) continue;
-      *out = colour_of(column + size_t(row));
-      count_layer(x, y, masked_pixels_);
+  layer_column(x, m.top, m.bottom, tex, tex.wrap_u(u), round_to_int(v0 * kFix), round_to_int(inv_scale * kFix), map,
+               masked_pixels_);
+}
+
+namespace {
+
+// a / b rounded up (b > 0).
+int64_t ceil_div(int64_t a, int64_t b) { return a >= 0 ? (a + b - 1) / b : -((-a) / b); }
+
+}  // namespace
+
+bool Canvas::layer_column(int x, int top, int bottom, const level::Texture& tex, int u, int64_t v0, int64_t step,
+                          int light_map, uint64_t& counter) {
+  const size_t column = size_t(u) * size_t(tex.height);
+  const size_t map = size_t(light_map) * limits::kPaletteSize;
+  bool drew = false;
+  auto paint = [&](auto* out, size_t pitch, int y0, int y1, auto colour_of) {
+    for (int64_t v = v0 + int64_t(y0) * step; y0 < y1; ++y0, out += pitch, v += step) *out = colour_of(column + size_t(v >> 16));
+  };
+  auto draw_rows = [&](int y0, int y1) {  // texels all opaque
+    if (y0 >= y1) return;
+    drew = true;
+    counter += uint64_t(y1 - y0);
+    if (writes_)
+      for (int y = y0; y < y1; ++y) ++(*writes_)[size_t(y) * view_->width + x];
+    if (indexed_) {
+      const uint8_t* lit = level_->light_indices.data() + map;
+      paint(index_pixel(x, y0), index_pitch_, y0, y1, [&](size_t texel) { return lit[tex.indices[texel]]; });
+    } else {
+      paint(pixel(x, y0), size_t(view_->width), y0, y1, [&](size_t texel) { return this->lit(tex, texel, light_map); });
     }
   };
-  if (indexed_) {
-    const uint8_t* light_map = level_->light_indices.data() + size_t(map) * limits::kPaletteSize;
-    draw(index_pixel(x, m.top), index_pitch_, [&](size_t texel) { return light_map[tex.indices[texel]]; });
-  } else {
-    draw(pixel(x, m.top), size_t(view_->width), [&](size_t texel) { return lit(tex, texel, map); });
+  if (step <= 0) {  // so near that one texel row covers every row
+    const int64_t row = v0 >> 16;
+    if (row >= 0 && row < tex.height && (tex.texels[column + size_t(row)] >> 24)) draw_rows(top, bottom);
+    return drew;
   }
+  // The screen rows of texel rows [first, end): first << 16 <= v0 + y * step < end << 16, exactly.
+  auto first_row = [&](int texel_row) {
+    return int(std::clamp<int64_t>(ceil_div((int64_t(texel_row) << 16) - v0, step), top, bottom));
+  };
+  if (!tex.holes) {
+    draw_rows(first_row(0), first_row(tex.height));
+    return drew;
+  }
+  for (uint32_t r = tex.run_start[size_t(u)]; r < tex.run_start[size_t(u) + 1]; ++r) {
+    const int y0 = first_row(tex.runs[r].first);
+    if (y0 >= bottom) break;
+    draw_rows(y0, first_row(tex.runs[r].end));
+  }
+  return drew;
 }
 
 // A texel under a light map: looked up in the level's light maps when paletted, else shaded.
@@ -461,6 +490,11 @@ void Canvas::add_sprite(uint32_t thing) {
   const double depth = view_->depth_of(t.pos);
   if (depth < kSpriteNearDepth) return;
   const level::SpriteFrame& frame = level_->sprite_frames[size_t(t.sprite)];
+  // Outside this canvas's columns whichever picture shows (with columns to spare for
+  // rounding): a strip of the screen skips the rotation's arc tangent.
+  const double scale = view_->d / depth;
+  const double centre = view_->half_w + view_->lateral_of(t.pos) * scale, reach = frame.reach * scale;
+  if (centre + reach < x0_ - 2 || centre - reach > x1_ + 1) return;
   // Doom's rotation: the angle from the viewer to the thing, less its facing, in 45-degree steps.
   const geom::Vec2 to_thing = t.pos - view_->pos;
   const double seen_from = std::atan2(to_thing.y, to_thing.x) * (180 / M_PI) - t.angle + 22.5 * 9;
@@ -477,7 +511,6 @@ void Canvas::add_sprite(uint32_t thing) {
   const double origin = frame.hanging ? sector.ceiling - frame.drop : sector.floor;
   s.top = origin + image.top;
   // Columns whose centre's ray crosses the picture (one more on each side: draw_sprite_column checks).
-  const double scale = view_->d / depth;
   s.x0 = std::max(x0_, int(floor_to_int(view_->half_w + s.left * scale)) - 1);
   s.x1 = std::min(x1_ - 1, int(ceil_to_int(view_->half_w + (s.left + tex.width) * scale)) + 1);
   if (s.x0 > s.x1) return;
@@ -493,39 +526,11 @@ void Canvas::draw_sprite_column(const Sprite& s, int x, int top, int bottom, boo
   const double inv_scale = s.depth / view_->d;
   const int64_t u = to_int((x + 0.5 - view_->half_w) * inv_scale - s.left);
   if (u < 0 || u >= tex.width) return;
-  const size_t column = size_t(s.flip ? tex.width - 1 - u : u) * tex.height;
   // Texel row at screen row y: (v0 + y * step) >> 16, v0 from top - z at row 0, as walls.
   const int64_t v0 = round_to_int((s.top - view_->eye + (0.5 - view_->half_h) * inv_scale) * kFix);
   const int64_t step = std::max<int64_t>(1, round_to_int(inv_scale * kFix));
-  // Only the rows where the picture is: 0 <= v0 + y * step < height << 16, exactly.
-  auto ceil_div = [](int64_t a, int64_t b) { return a >= 0 ? (a + b - 1) / b : -((-a) / b); };
-  const int y0 = int(std::clamp<int64_t>(ceil_div(-v0, step), top, bottom));
-  const int y1 = int(std::clamp<int64_t>(ceil_div((int64_t(tex.height) << 16) - v0, step), y0, bottom));
-  auto draw = [&](auto* out, size_t pitch, auto colour_of) {
-    const uint32_t* texels = tex.texels.data() + column;
-    int64_t v = v0 + int64_t(y0) * step;
-    for (int y = y0; y < y1; ++y, out += pitch, v += step) {
-      const size_t row = size_t(v >> 16);
-      if (!(texels[row] >> 24)) continue;
-      *out = colour_of(row);
-      count_layer(x, y, sprite_pixels_);
-      drew = true;
-    }
-  };
-  const size_t light_map = size_t(s.light_map) * limits::kPaletteSize;
-  if (indexed_) {
-    const uint8_t* map = level_->light_indices.data() + light_map;
-    const uint8_t* indices = tex.indices.data() + column;
-    draw(index_pixel(x, y0), index_pitch_, [&](size_t row) { return map[indices[row]]; });
-  } else if (level_->paletted()) {
-    const uint32_t* map = level_->light_maps.data() + light_map;
-    const uint8_t* indices = tex.indices.data() + column;
-    draw(pixel(x, y0), size_t(view_->width), [&](size_t row) { return map[indices[row]]; });
-  } else {
-    const uint32_t* texels = tex.texels.data() + column;
-    const uint32_t mult = multiplier(s.light_map);
-    draw(pixel(x, y0), size_t(view_->width), [&](size_t row) { return shade(texels[row], mult); });
-  }
+  if (layer_column(x, top, bottom, tex, int(s.flip ? tex.width - 1 - u : u), v0, step, s.light_map, sprite_pixels_))
+    drew = true;
 }
 
 void Canvas::draw_layers() {

@@ -142,6 +142,12 @@ class Canvas {
   void wall_span(int x, int y0, int y1, const Part& part, const WallHit& hit);
   void draw_masked(int x, const Step& step);
   void draw_sprite_column(const Sprite& s, int x, int top, int bottom, bool& drew);
+  // Rows [top, bottom) of column x of a layer (a masked middle texture, a sprite):
+  // texture column u, texel row (v0 + y * step) >> 16, drawn where the texture is
+  // opaque, by its runs of opaque texels (no test per pixel) and never tiled. Counts
+  // the pixels into counter; returns whether it drew one.
+  bool layer_column(int x, int top, int bottom, const level::Texture& tex, int u, int64_t v0, int64_t step, int light_map,
+                    uint64_t& counter);
   enum class Fill { kVoid, kMissingTexture };
   void fill_span(int x, int y0, int y1, Fill fill);
   void choose_fill_colors();
@@ -152,7 +158,6 @@ class Canvas {
   uint32_t* pixel(int x, int y) { return frame_->pixels.data() + size_t(y) * view_->width + x; }
   uint8_t* index_pixel(int x, int y) { return indices_.data() + size_t(y) * index_pitch_ + size_t(x - x0_); }
   void count(int x, int y0, int y1);
-  void count_layer(int x, int y, uint64_t& counter);
 
   const level::Level* level_ = nullptr;
   const level::State* state_ = nullptr;

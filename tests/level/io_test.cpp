@@ -261,6 +261,37 @@ TEST_F(LevelIo, TexturesOfAnySizeWrap) {
   EXPECT_TRUE(make_texture("h", 1, 2, holes).holes);
 }
 
+// A texture with holes lists each column's runs of opaque texels (Doom's posts): every
+// opaque texel in exactly one run, runs in order, separated by transparent texels.
+TEST_F(LevelIo, TexturesWithHolesListTheirOpaqueRuns) {
+  Rng rng(17);
+  for (int trial = 0; trial < 50; ++trial) {
+    const int w = 1 + int(rng.below(9)), h = 1 + int(rng.below(40));
+    std::vector<uint32_t> rows(size_t(w) * size_t(h));
+    for (uint32_t& p : rows) p = rng.below(3) ? 0xFF000000u | uint32_t(rng.below(256)) : 0;
+    rows[0] = 0;  // some texel is transparent
+    const Texture t = make_texture("t", w, h, rows.data());
+    ASSERT_TRUE(t.holes);
+    ASSERT_EQ(t.run_start.size(), size_t(w) + 1);
+    EXPECT_EQ(t.run_start.back(), t.runs.size());
+    for (int u = 0; u < w; ++u) {
+      std::vector<bool> covered(size_t(h), false);
+      int previous_end = -1;
+      for (uint32_t r = t.run_start[size_t(u)]; r < t.run_start[size_t(u) + 1]; ++r) {
+        const Texture::Run run = t.runs[r];
+        ASSERT_LT(run.first, run.end);
+        ASSERT_LE(run.end, h);
+        EXPECT_GT(int(run.first), previous_end) << "runs apart and in order";
+        previous_end = run.end;
+        for (int v = run.first; v < run.end; ++v) covered[size_t(v)] = true;
+      }
+      for (int v = 0; v < h; ++v) EXPECT_EQ(covered[size_t(v)], (t.at(u, v) >> 24) != 0) << trial << ": " << u << "," << v;
+    }
+  }
+  const uint32_t opaque[2] = {0xFF000001u, 0xFF000002u};
+  EXPECT_TRUE(make_texture("o", 1, 2, opaque).runs.empty()) << "no holes, no runs: drawn whole";
+}
+
 // A paletted level (WAD art) stores palette indices and opacity, and reads back exactly;
 // Doom's line, sector and thing data survive; a ceiling below its floor is Doom's and is kept.
 TEST_F(LevelIo, PalettedLevelsAndDoomDataRoundTrip) {
