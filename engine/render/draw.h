@@ -194,10 +194,10 @@ class Canvas {
   };
   SkyKey sky_key_;  // what sky_rows_ and sky_angles_ were tabulated for
   // Paletted levels draw palette indices (Doom's 8-bit screen) into the canvas's own
-  // columns, rows index_pitch_ apart, and resolve() looks the palette up once per pixel:
-  // a strip of 80 columns of 400 rows is 32 KB, in the L1 cache, where the 32-bit
-  // frame's columns are 2,560 bytes apart. (RGBA levels, and light maps with shades
-  // outside the palette, write the frame.)
+  // columns, rows index_pitch_ apart, and resolve() copies them to the frame or looks
+  // the palette up once per pixel: a strip of 160 columns of 400 rows is 64 KB, where
+  // the 32-bit frame's columns are 2,560 bytes apart. (RGBA levels, and light maps
+  // with shades outside the palette, write the frame.)
   bool indexed_ = false;
   std::vector<uint8_t> indices_;
   size_t index_pitch_ = 0;
