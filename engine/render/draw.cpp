@@ -176,6 +176,7 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
   painted_index_.clear();
   painted_count_ = 0;
   tabulate_sky_rows();
+  light_sky();
   if (x0_ == 0 && x1_ == view.width) {
     prepare_probe(view, probe);
     prepare_frame(level, frame);
@@ -724,6 +725,17 @@ void Canvas::tabulate_sky_rows() {
   for (int x = 0; x < view_->width; ++x) sky_angles_[size_t(x)] = std::atan2(view_->half_w - (x + 0.5), view_->d);
 }
 
+// The sky's palette indices under its light map (full bright), once per level: a sky
+// pixel is then one lookup, not two.
+void Canvas::light_sky() {
+  if (!indexed_ || level_->sky_texture == kNone) return;
+  if (level_->generation != 0 && lit_sky_for_ == level_->generation) return;  // 0: a level never finalized
+  const level::Texture& tex = level_->textures[level_->sky_texture];
+  lit_sky_.resize(tex.indices.size());
+  for (size_t i = 0; i < tex.indices.size(); ++i) lit_sky_[i] = level_->light_indices[tex.indices[i]];
+  lit_sky_for_ = level_->generation;
+}
+
 void Canvas::sky_span(int x, int y0, int y1) {
   if (dry_) return;
   if (level_->sky_texture == kNone) return fill_span(x, y0, y1, Fill::kVoid);
@@ -733,10 +745,9 @@ void Canvas::sky_span(int x, int y0, int y1) {
   const int64_t u = to_int(angle / (2 * M_PI) * kSkyColumns);
   const int* rows = sky_rows_.data();
   if (indexed_) {
-    const uint8_t* indices = tex.index_column(u);
-    const uint8_t* light_map = level_->light_indices.data();
+    const uint8_t* lit = lit_sky_.data() + size_t(tex.wrap_u(u)) * size_t(tex.height);
     uint8_t* out = index_pixel(x, y0);
-    for (int y = y0; y < y1; ++y, out += index_pitch_) *out = light_map[indices[rows[y]]];
+    for (int y = y0; y < y1; ++y, out += index_pitch_) *out = lit[rows[y]];
     return;
   }
   uint32_t* out = pixel(x, y0);

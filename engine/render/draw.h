@@ -139,6 +139,7 @@ class Canvas {
   const PlaneRow* painted_rows(const PlaneKey& key, int y0, int y1);
   void sky_span(int x, int y0, int y1);
   void tabulate_sky_rows();
+  void light_sky();
   void wall_span(int x, int y0, int y1, const Part& part, const WallHit& hit);
   void draw_masked(int x, const Step& step);
   void draw_sprite_column(const Sprite& s, int x, int top, int bottom, bool& drew);
@@ -193,6 +194,8 @@ class Canvas {
     bool operator==(const SkyKey&) const = default;
   };
   SkyKey sky_key_;  // what sky_rows_ and sky_angles_ were tabulated for
+  std::vector<uint8_t> lit_sky_;  // paletted levels: the sky's indices, full bright
+  uint64_t lit_sky_for_ = 0;      // the level generation lit_sky_ belongs to
   // Paletted levels draw palette indices (Doom's 8-bit screen) into the canvas's own
   // columns, rows index_pitch_ apart, and resolve() copies them to the frame or looks
   // the palette up once per pixel: a strip of 160 columns of 400 rows is 64 KB, where
