@@ -26,16 +26,30 @@ void PlaneSpans::begin(int x0, int x1, int height) {
   x1_ = std::max(x0, x1);
   height_ = height;
   planes_.clear();
-  runs_.clear();
+  runs_used_ = 0;
   table_.assign(std::max<size_t>(table_.size(), 64), -1);
   cached_ = -1;
 }
 
+// A plane's runs are set only as it reaches new columns (cover): most planes cover a
+// few columns of a strip, and emptying all of each was a fifth of filing them.
 int PlaneSpans::make_plane(const PlaneKey& key, bool is_head) {
-  const size_t runs = runs_.size();
-  runs_.resize(runs + size_t(x1_ - x0_), Run{0, 0});
+  const size_t runs = runs_used_;
+  runs_used_ += size_t(x1_ - x0_);
+  if (runs_.size() < runs_used_) runs_.resize(std::max(runs_used_, 2 * runs_.size()));  // kept from frame to frame
   planes_.push_back({key, is_head, -1, x1_, x0_ - 1, runs});
   return int(planes_.size()) - 1;
+}
+
+void PlaneSpans::cover(Plane& p, int x) {
+  if (p.x_min > p.x_max) {
+    p.x_min = p.x_max = x;
+    return;
+  }
+  for (int c = p.x_max + 1; c < x; ++c) run(p, c) = {0, 0};
+  for (int c = x + 1; c < p.x_min; ++c) run(p, c) = {0, 0};
+  p.x_min = std::min(p.x_min, x);
+  p.x_max = std::max(p.x_max, x);
 }
 
 int PlaneSpans::head(const PlaneKey& key) {
@@ -59,12 +73,14 @@ void PlaneSpans::add(const PlaneKey& key, int x, int y0, int y1) {
   int i = head(key);
   for (;;) {
     Plane& p = planes_[size_t(i)];
+    if (x < p.x_min || x > p.x_max) {  // a column new to the plane
+      cover(p, x);
+      run(p, x) = {y0, y1};
+      return;
+    }
     Run& r = run(p, x);
     if (r.top >= r.bottom || r.bottom == y0 || r.top == y1) {
-      if (r.top >= r.bottom) r = {y0, y1};
-      else r = {std::min(r.top, y0), std::max(r.bottom, y1)};
-      p.x_min = std::min(p.x_min, x);
-      p.x_max = std::max(p.x_max, x);
+      r = r.top >= r.bottom ? Run{y0, y1} : Run{std::min(r.top, y0), std::max(r.bottom, y1)};
       return;
     }
     if (p.next < 0) {

@@ -47,17 +47,19 @@ class PlaneSpans {
     PlaneKey key;
     bool is_head;      // the first of its key (the table points at it)
     int next;          // the next plane of the same key, or -1
-    int x_min, x_max;  // columns holding runs
+    int x_min, x_max;  // its runs in columns [x_min, x_max] are set (some empty), the others not
     size_t runs;       // its runs in runs_, one per column of [x0_, x1_)
   };
 
   int head(const PlaneKey& key);  // the first plane of the key, made when there is none
   int make_plane(const PlaneKey& key, bool is_head);
+  void cover(Plane& p, int x);  // widens [x_min, x_max] to x, emptying the columns between
   Run& run(const Plane& p, int x) { return runs_[p.runs + size_t(x - x0_)]; }
 
   int x0_ = 0, x1_ = 0, height_ = 0;
   std::vector<Plane> planes_;
-  std::vector<Run> runs_;
+  std::vector<Run> runs_;  // the first runs_used_ belong to this frame's planes
+  size_t runs_used_ = 0;
   std::vector<int> table_;  // open addressing: key hash -> first plane, -1 empty
   int cached_ = -1;         // the last head looked up (runs of one wall come in a row)
   std::vector<int> span_start_;  // for_each_span: per row, the column its open span began in
