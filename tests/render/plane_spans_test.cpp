@@ -13,7 +13,10 @@ const PlaneKey kKeys[] = {{0, 1, 8}, {0, 1, 12}, {128, 1, 8}, {0, 2, 8}, {-0.0, 
 
 // Every column of [x0, x1) cut into random runs, each of a random key or of none, filed
 // in a random order: every filed pixel comes back exactly once, in its own key's spans.
+// One PlaneSpans serves every seed, as a canvas's serves every frame: nothing of an
+// earlier frame's runs shows.
 TEST(PlaneSpans, GivesBackEveryFiledPixelOnceUnderItsKey) {
+  PlaneSpans planes;
   for (uint64_t seed = 1; seed <= 40; ++seed) {
     Rng rng(seed);
     const int height = 1 + int(rng.below(60)), x0 = int(rng.below(20)), x1 = x0 + 1 + int(rng.below(50));
@@ -28,7 +31,6 @@ TEST(PlaneSpans, GivesBackEveryFiledPixelOnceUnderItsKey) {
       }
     for (size_t i = runs.size(); i > 1; --i) std::swap(runs[i - 1], runs[rng.below(i)]);
     std::map<std::pair<int, int>, int> filed;  // (x, y) -> key
-    PlaneSpans planes;
     planes.begin(x0, x1, height);
     for (const Filed& r : runs) {
       planes.add(kKeys[r.key], r.x, r.y0, r.y1);
