@@ -729,11 +729,12 @@ void Canvas::tabulate_sky_rows() {
 // pixel is then one lookup, not two.
 void Canvas::light_sky() {
   if (!indexed_ || level_->sky_texture == kNone) return;
-  if (level_->generation != 0 && lit_sky_for_ == level_->generation) return;  // 0: a level never finalized
+  const std::pair key{level_->generation, level_->sky_texture};
+  if (key.first != 0 && lit_sky_for_ == key) return;  // generation 0: a level never finalized
   const level::Texture& tex = level_->textures[level_->sky_texture];
   lit_sky_.resize(tex.indices.size());
   for (size_t i = 0; i < tex.indices.size(); ++i) lit_sky_[i] = level_->light_indices[tex.indices[i]];
-  lit_sky_for_ = level_->generation;
+  lit_sky_for_ = key;
 }
 
 void Canvas::sky_span(int x, int y0, int y1) {

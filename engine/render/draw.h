@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <span>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "engine/render/plane_spans.h"
@@ -195,7 +196,7 @@ class Canvas {
   };
   SkyKey sky_key_;  // what sky_rows_ and sky_angles_ were tabulated for
   std::vector<uint8_t> lit_sky_;  // paletted levels: the sky's indices, full bright
-  uint64_t lit_sky_for_ = 0;      // the level generation lit_sky_ belongs to
+  std::pair<uint64_t, int> lit_sky_for_{0, -1};  // the level generation and sky texture lit_sky_ is of
   // Paletted levels draw palette indices (Doom's 8-bit screen) into the canvas's own
   // columns, rows index_pitch_ apart, and resolve() copies them to the frame or looks
   // the palette up once per pixel: a strip of 160 columns of 400 rows is 64 KB, where
