@@ -21,10 +21,11 @@ namespace p3d::render {
 
 namespace {
 
-// Strips per frame: one per 160 columns, 4 to 8 (every strip walks the tree's first
+// Strips per frame: one per 160 columns, 4 to 8. Every strip walks the tree's first
 // levels, splits the planes' rows and projects the things near it, so fewer is
-// cheaper, while more balance more threads: on the Freedoom maps 4 strips beat 8 by
-// 5-9% at 640x400, on one thread and two, and 8 beat 4 and 12 at 1920x1080). The
+// cheaper, while more balance more threads and let more cores share a wide frame (on
+// the Freedoom maps 4 strips beat 8 by 5-9% at 640x400, on one thread and two; at
+// 1920x1080 on two threads 4 and 8 were within 10%, either way in different runs). The
 // count depends on the width alone, so the statistics do not depend on the threads.
 // Each strip is a whole number of 64-byte cache lines of pixels wide (16 columns):
 // where rows start on a line, two threads never write the same one.
