@@ -45,7 +45,8 @@ class BspFrontToBack final : public Renderer {
     const int camera_sector = level.sector_at(camera.pos);
     // The order fragments drew in is one walk's: a probe asking for it gets one strip.
     const bool one_walk = probe && probe->want_order;
-    const int width = one_walk ? view.width : (view.width + strip_count(view.width) - 1) / strip_count(view.width);
+    const int count = one_walk ? 1 : strip_count(view.width);
+    const int width = (view.width + count - 1) / count;
     const int strip_width = std::max(kStripAlign, (width + kStripAlign - 1) / kStripAlign * kStripAlign);
     const int strips = (view.width + strip_width - 1) / strip_width;
     if (strips_.size() < size_t(strips)) strips_.resize(size_t(strips));

@@ -24,9 +24,8 @@ struct Frame : image::Image {
   std::vector<uint8_t> indices;  // empty unless the last render kept them
   std::vector<uint32_t> palette;
   bool indexed() const { return !indices.empty(); }
-  // Writes the pixels of rows [y0, y1) from the indices (none when not indexed).
-  void resolve_rows(int y0, int y1);
-  void resolve_colours() { resolve_rows(0, height); }
+  // Writes the pixels from the indices (nothing when not indexed).
+  void resolve_colours();
 };
 
 constexpr double kEyeHeight = 41;  // Doom's view height above the floor

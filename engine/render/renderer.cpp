@@ -4,9 +4,8 @@
 
 namespace p3d::render {
 
-void Frame::resolve_rows(int y0, int y1) {
-  if (!indexed()) return;
-  for (size_t i = size_t(y0) * size_t(width), end = size_t(y1) * size_t(width); i < end; ++i) pixels[i] = palette[indices[i]];
+void Frame::resolve_colours() {
+  for (size_t i = 0; i < indices.size(); ++i) pixels[i] = palette[indices[i]];
 }
 
 Camera camera_at(const level::Level& level, Vec2 pos, double angle, double eye_height, double fov) {
