@@ -120,6 +120,18 @@ class Builder {
 
  private:
   // ---- source -> level records -------------------------------------------
+  // A source picture as the level keeps it; pictures already in columns move out of a
+  // consumable source (p is then *consumable) rather than being copied.
+  template <typename Picture>  // map::Texture or map::SpriteImage
+  static level::Texture level_texture(const Picture& p, Picture* consumable) {
+    const int w = p.image.width, h = p.image.height;
+    if (!p.column_major)
+      return level::make_texture(p.name, w, h, p.image.pixels.data(), p.indices.empty() ? nullptr : p.indices.data());
+    if (consumable)
+      return level::make_texture_from_columns(p.name, w, h, std::move(consumable->image.pixels), std::move(consumable->indices));
+    return level::make_texture_from_columns(p.name, w, h, p.image.pixels, p.indices);
+  }
+
   void copy_source() {
     out_.title = src_.title;
     out_.palette = src_.palette;
@@ -128,9 +140,8 @@ class Builder {
     out_.sectors.reserve(src_.sectors.size());
     out_.walls.reserve(src_.walls.size());
     out_.things.reserve(src_.things.size());
-    for (const map::Texture& t : src_.textures)
-      out_.textures.push_back(level::make_texture(t.name, t.image.width, t.image.height, t.image.pixels.data(),
-                                                  t.indices.empty() ? nullptr : t.indices.data()));
+    for (size_t i = 0; i < src_.textures.size(); ++i)
+      out_.textures.push_back(level_texture(src_.textures[i], consumable_ ? &consumable_->textures[i] : nullptr));
     auto flat = [](int texture) { return texture == map::kSkyTexture ? level::kSky : texture; };
     for (const map::Sector& s : src_.sectors)
       out_.sectors.push_back(
@@ -153,10 +164,10 @@ class Builder {
       lw.sides[1] = side(w.back);
       out_.walls.push_back(lw);
     }
-    for (const map::SpriteImage& i : src_.sprite_images) {
+    for (size_t k = 0; k < src_.sprite_images.size(); ++k) {
+      const map::SpriteImage& i = src_.sprite_images[k];
       out_.sprite_images.push_back({int32_t(out_.textures.size()), i.left, i.top});
-      out_.textures.push_back(level::make_texture(i.name, i.image.width, i.image.height, i.image.pixels.data(),
-                                                  i.indices.empty() ? nullptr : i.indices.data()));
+      out_.textures.push_back(level_texture(i, consumable_ ? &consumable_->sprite_images[k] : nullptr));
     }
     for (const map::SpriteFrame& f : src_.sprites) {
       level::SpriteFrame lf;

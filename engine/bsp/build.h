@@ -55,7 +55,8 @@ struct Stats {
 // sector and options.player_must_be_inside.
 level::Level build(const map::Source& source, const Options& options, Stats* stats = nullptr);
 // The same, freeing the source's walls, vertices and grid as soon as the level holds them
-// (what is left of it is of no further use): a million-wall map's peak memory.
+// (what is left of it is of no further use): a million-wall map's peak memory. Pictures
+// already in columns (a WAD's art) move into the level.
 level::Level build(map::Source&& source, const Options& options, Stats* stats = nullptr);
 
 }  // namespace p3d::bsp

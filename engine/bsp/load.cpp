@@ -108,11 +108,12 @@ level::Level build_wad_map(const wad::Stack& wads, const std::string& map, const
   imported.source.title = map_title(wads, wad::normalize_name(map));
   Options o = options;
   o.player_must_be_inside = false;
-  level::Level level = build(imported.source, o, stats);
+  const FileLoc player = imported.source.player.loc;
+  level::Level level = build(std::move(imported.source), o, stats);  // its pictures move into the level
   if (warnings) {
     warnings->insert(warnings->end(), imported.warnings.begin(), imported.warnings.end());
     if (!level.sectors.empty() && level.sector_at(level.player_start) == level::kNone)
-      warnings->push_back(imported.source.player.loc.str() + ": warning: the player start lies outside every sector");
+      warnings->push_back(player.str() + ": warning: the player start lies outside every sector");
   }
   return level;
 }

@@ -6,9 +6,10 @@
 //     META     str title, f64 player x, y, angle, i32 default sector, i32 sky texture
 //     PALT     u32 paletted (0 or 1); if 1: 256 RGBA8 palette colours, then kLightMaps x 256
 //              RGBA8 light-map colours (map 0 full bright)
-//     TEXTURES u32 n; n x { str name, u32 width, u32 height, pixels in rows: if paletted,
-//              width*height u8 palette indices then ceil(width*height / 8) opacity bytes
-//              (bit p % 8 of byte p / 8, 1 = opaque); else width*height RGBA8 }
+//     TEXTURES u32 n; n x { str name, u32 width, u32 height, pixels in columns (pixel p is
+//              row p % height of column p / height): if paletted, width*height u8 palette
+//              indices then ceil(width*height / 8) opacity bytes (bit p % 8 of byte p / 8,
+//              1 = opaque); else width*height RGBA8 }
 //     SPRITES  u32 n; n x image { i32 texture, i32 left offset, i32 top offset };
 //              u32 n; n x frame { str name, 8 x { i32 image, u8 flip }, u8 bright, u8 hanging, f64 drop }
 //     SECTORS  u32 n; n x { str name, f64 floor, f64 ceiling, i32 light, i32 floor tex, i32 ceiling tex,
@@ -36,7 +37,7 @@
 namespace p3d::level::format {
 
 constexpr char kMagic[8] = {'P', '3', 'D', 'B', 'S', 'P', '\r', '\n'};
-constexpr uint32_t kVersion = 6;
+constexpr uint32_t kVersion = 7;
 constexpr size_t kHeaderSize = 8 + 4 + 4 + 8 + 8;
 
 constexpr uint32_t tag(const char (&s)[5]) {

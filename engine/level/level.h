@@ -290,6 +290,9 @@ inline double splitter_side(const Node& n, Vec2 p) { return geom::cross(n.direct
 // Texture from an RGBA8 row-major image, with its palette indices (row-major) when the level is paletted.
 Texture make_texture(const std::string& name, int width, int height, const uint32_t* rgba_rows,
                      const uint8_t* index_rows = nullptr);
+// The same from texels already column-major (as Texture keeps them; indices likewise, or empty).
+Texture make_texture_from_columns(std::string name, int width, int height, std::vector<uint32_t> texels,
+                                  std::vector<uint8_t> indices = {});
 
 // Walks the walls hit by the ray origin + s * dir (s > 0) in order of distance,
 // using the BSP. visit(wall, s, t) returns false to stop. Hits at a fragment's

@@ -100,21 +100,23 @@ class Reader {
       if (!fits(w) || !fits(h))
         in_.fail("texture '" + name + "' has a bad size " + std::to_string(w) + "x" +
                  std::to_string(h));
-      const size_t texels = size_t(w) * h;
-      std::vector<uint32_t> rows(texels);
+      const size_t texel_count = size_t(w) * h;
       if (!level_.paletted()) {
-        const auto bytes = in_.raw(texels * 4);
-        for (size_t p = 0; p < texels; ++p)
-          rows[p] = uint32_t(bytes[4 * p]) | uint32_t(bytes[4 * p + 1]) << 8 | uint32_t(bytes[4 * p + 2]) << 16 |
-                    uint32_t(bytes[4 * p + 3]) << 24;
-        level_.textures.push_back(make_texture(name, int(w), int(h), rows.data()));
+        const auto bytes = in_.raw(texel_count * 4);  // bounds-checked before anything is allocated
+        std::vector<uint32_t> texels(texel_count);
+        for (size_t p = 0; p < texel_count; ++p)
+          texels[p] = uint32_t(bytes[4 * p]) | uint32_t(bytes[4 * p + 1]) << 8 | uint32_t(bytes[4 * p + 2]) << 16 |
+                      uint32_t(bytes[4 * p + 3]) << 24;
+        level_.textures.push_back(make_texture_from_columns(name, int(w), int(h), std::move(texels)));
         continue;
       }
-      const auto indices = in_.raw(texels);
-      const auto opacity = in_.raw((texels + 7) / 8);
-      for (size_t p = 0; p < texels; ++p)
-        rows[p] = opacity[p / 8] >> (p % 8) & 1 ? level_.palette[indices[p]] : 0u;
-      level_.textures.push_back(make_texture(name, int(w), int(h), rows.data(), indices.data()));
+      const auto indices = in_.raw(texel_count);
+      const auto opacity = in_.raw((texel_count + 7) / 8);
+      std::vector<uint32_t> texels(texel_count);
+      for (size_t p = 0; p < texel_count; ++p)
+        texels[p] = level_.palette[indices[p]] & (opacity[p / 8] >> (p % 8) & 1 ? ~0u : 0u);
+      level_.textures.push_back(make_texture_from_columns(name, int(w), int(h), std::move(texels),
+                                                          std::vector<uint8_t>(indices.begin(), indices.end())));
     }
   }
 

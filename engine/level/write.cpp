@@ -22,37 +22,36 @@ void write_side(ByteWriter& out, const Side& s) {
   out.i32(s.light);
 }
 
-// Rows of palette indices, then one opacity bit per texel; or rows of RGBA8. The
-// texels are stored column-major, so each is written in place at its row-major offset.
+// Palette indices, then one opacity bit per texel; or RGBA8: column-major, as a
+// Texture keeps them, so that each is one copy.
 void write_texels(ByteWriter& out, const Texture& t, bool paletted) {
-  const size_t w = size_t(t.width), h = size_t(t.height);
+  const size_t n = t.texels.size();
   if (!paletted) {
-    uint8_t* rows = out.extend(w * h * 4);
-    for (size_t x = 0; x < w; ++x)
-      for (size_t y = 0; y < h; ++y) {
-        const uint32_t c = t.texels[x * h + y];  // R,G,B,A byte order
-        uint8_t* p = rows + (y * w + x) * 4;
-        p[0] = uint8_t(c), p[1] = uint8_t(c >> 8), p[2] = uint8_t(c >> 16), p[3] = uint8_t(c >> 24);
-      }
-    return;
-  }
-  uint8_t* rows = out.extend(w * h);
-  for (size_t x = 0; x < w; ++x)
-    for (size_t y = 0; y < h; ++y) rows[y * w + x] = t.indices[x * h + y];
-  uint8_t* bits = out.extend((w * h + 7) / 8);
-  if (!t.holes) {  // most textures: every bit set
-    std::memset(bits, 0xFF, w * h / 8);
-    if (w * h % 8) bits[w * h / 8] = uint8_t((1u << (w * h % 8)) - 1);
-    return;
-  }
-  uint8_t byte = 0;
-  size_t p = 0;
-  for (size_t y = 0; y < h; ++y)
-    for (size_t x = 0; x < w; ++x, ++p) {
-      byte |= uint8_t((t.texels[x * h + y] >> 24 != 0) << (p % 8));
-      if (p % 8 == 7) bits[p / 8] = byte, byte = 0;
+    uint8_t* bytes = out.extend(n * 4);
+    for (size_t p = 0; p < n; ++p) {
+      const uint32_t c = t.texels[p];  // R,G,B,A byte order
+      bytes[4 * p] = uint8_t(c), bytes[4 * p + 1] = uint8_t(c >> 8), bytes[4 * p + 2] = uint8_t(c >> 16),
+                bytes[4 * p + 3] = uint8_t(c >> 24);
     }
-  if (p % 8 != 0) bits[p / 8] = byte;
+    return;
+  }
+  std::memcpy(out.extend(n), t.indices.data(), n);
+  uint8_t* bits = out.extend((n + 7) / 8);
+  if (!t.holes) {  // most textures: every bit set
+    std::memset(bits, 0xFF, n / 8);
+    if (n % 8) bits[n / 8] = uint8_t((1u << (n % 8)) - 1);
+    return;
+  }
+  for (size_t byte = 0; byte < n / 8; ++byte) {
+    uint8_t b = 0;
+    for (size_t k = 0; k < 8; ++k) b |= uint8_t((t.texels[8 * byte + k] >> 24 != 0) << k);
+    bits[byte] = b;
+  }
+  if (n % 8) {
+    uint8_t b = 0;
+    for (size_t p = n / 8 * 8; p < n; ++p) b |= uint8_t((t.texels[p] >> 24 != 0) << (p % 8));
+    bits[n / 8] = b;
+  }
 }
 
 void write_payload(ByteWriter& out, const Level& level) {

@@ -21,8 +21,11 @@ constexpr int kSkyTexture = -2;  // the ceiling texture name "sky": draw the sky
 struct Texture {
   std::string name;
   image::Image image;             // RGBA; alpha 0 where transparent. Any size up to kMaxTextureSize
-  std::vector<uint8_t> indices;   // paletted art (WAD levels): each pixel's palette index, row-major; else empty
+  std::vector<uint8_t> indices;   // paletted art (WAD levels): each pixel's palette index, laid out as image; else empty
   FileLoc loc;
+  // image and indices hold columns one after another (pixel (x, y) at x * height + y),
+  // as Doom's art and level::Texture keep them, not rows: image.at() does not apply.
+  bool column_major = false;
 };
 using limits::kMaxTextureSize;
 
@@ -90,8 +93,9 @@ struct Thing {
 struct SpriteImage {
   std::string name;
   image::Image image;            // RGBA; alpha 0 where transparent
-  std::vector<uint8_t> indices;  // paletted art: each pixel's palette index, row-major; else empty
+  std::vector<uint8_t> indices;  // paletted art: each pixel's palette index, laid out as image; else empty
   int left = 0, top = 0;         // the thing's position lies `left` pixels right of the left edge, its feet `top` below the top
+  bool column_major = false;     // as Texture::column_major
 };
 
 constexpr int kRotations = 8;

@@ -148,15 +148,16 @@ std::optional<IndexedImage> Art::texture(std::string_view name, std::vector<std:
       continue;
     }
     const IndexedImage& patch = *decoded.image;
-    // The patch's rows and columns that land on the canvas; its holes keep what is below.
+    // The patch's columns and rows that land on the canvas; its holes keep what is below.
     const int y0 = std::max(0, -p.y), y1 = std::min(patch.height, def.height - p.y);
     const int x0 = std::max(0, -p.x), x1 = std::min(patch.width, def.width - p.x);
-    for (int y = y0; y < y1; ++y) {
-      const uint8_t* from = &patch.indices[patch.at(x0, y)];
-      const uint8_t* shows = &patch.opaque[patch.at(x0, y)];
-      uint8_t* to = &img.indices[img.at(p.x + x0, p.y + y)];
-      uint8_t* covered = &img.opaque[img.at(p.x + x0, p.y + y)];
-      for (int i = 0; i < x1 - x0; ++i) {
+    if (y1 <= y0) continue;
+    for (int x = x0; x < x1; ++x) {
+      const uint8_t* from = &patch.indices[patch.at(x, y0)];
+      const uint8_t* shows = &patch.opaque[patch.at(x, y0)];
+      uint8_t* to = &img.indices[img.at(p.x + x, p.y + y0)];
+      uint8_t* covered = &img.opaque[img.at(p.x + x, p.y + y0)];
+      for (int i = 0; i < y1 - y0; ++i) {
         to[i] = shows[i] ? from[i] : to[i];
         covered[i] |= shows[i];
       }
@@ -175,7 +176,8 @@ std::optional<IndexedImage> Art::flat(std::string_view name, std::vector<std::st
     return std::nullopt;
   }
   IndexedImage img(kFlatSide, kFlatSide);
-  std::copy(lump.bytes.begin(), lump.bytes.begin() + kFlatBytes, img.indices.begin());
+  for (int y = 0; y < kFlatSide; ++y)  // the lump is rows
+    for (int x = 0; x < kFlatSide; ++x) img.indices[img.at(x, y)] = lump.bytes[size_t(y) * kFlatSide + size_t(x)];
   std::fill(img.opaque.begin(), img.opaque.end(), 1);
   return img;
 }

@@ -80,14 +80,20 @@ class Importer {
   int add_texture(const std::string& name, const IndexedImage& img) {
     map::Texture t;
     t.name = name;
-    t.image = image::Image(img.width, img.height);
+    t.image = colours(img);
     t.indices = img.indices;
-    const uint32_t* palette = art_.palette().data();
-    for (size_t p = 0; p < img.indices.size(); ++p)
-      t.image.pixels[p] = palette[img.indices[p]] & (img.opaque[p] ? ~0u : 0u);  // a hole: 0, transparent
+    t.column_major = true;
     t.loc = FileLoc{data_.where, 0};
     src_.textures.push_back(std::move(t));
     return int(src_.textures.size()) - 1;
+  }
+
+  // The picture's colours, laid out as its indices (columns); a hole is 0, transparent.
+  image::Image colours(const IndexedImage& img) const {
+    image::Image out(img.width, img.height);
+    const uint32_t* palette = art_.palette().data();
+    for (size_t p = 0; p < img.indices.size(); ++p) out.pixels[p] = palette[img.indices[p]] & (img.opaque[p] ? ~0u : 0u);
+    return out;
   }
 
   // A wall texture by name: its index, kNone for "-" or an unknown name (warned about
@@ -469,9 +475,9 @@ class Importer {
       const IndexedImage img = decode_picture(lump.bytes, "sprite " + lump.name);
       map::SpriteImage out;
       out.name = lump.name;
-      out.image = image::Image(img.width, img.height);
+      out.image = colours(img);
       out.indices = img.indices;
-      for (size_t p = 0; p < img.indices.size(); ++p) out.image.pixels[p] = img.opaque[p] ? art_.palette()[img.indices[p]] : 0u;
+      out.column_major = true;
       out.left = img.left_offset;
       out.top = img.top_offset;
       src_.sprite_images.push_back(std::move(out));

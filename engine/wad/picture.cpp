@@ -1,5 +1,8 @@
 #include "engine/wad/picture.h"
 
+#include <algorithm>
+#include <cstring>
+
 #include "engine/util/bytes.h"
 #include "engine/util/error.h"
 
@@ -60,11 +63,10 @@ IndexedImage decode_picture(std::span<const uint8_t> bytes, const std::string& w
       post.u8();  // padding byte
       const auto run = post.raw(length);
       post.u8();  // padding byte
-      for (int i = 0; i < length; ++i) {
-        const int y = top + i;
-        if (y >= h.height) break;
-        img.indices[img.at(x, y)] = run[size_t(i)];
-        img.opaque[img.at(x, y)] = 1;
+      const int shown = std::min(length, h.height - top);
+      if (shown > 0) {
+        std::memcpy(&img.indices[img.at(x, top)], run.data(), size_t(shown));
+        std::memset(&img.opaque[img.at(x, top)], 1, size_t(shown));
       }
       if (posts > 4 * h.height + 256) throw Error(what + ": column " + std::to_string(x) + " never ends");
     }

@@ -10,7 +10,8 @@
 
 namespace p3d::wad {
 
-// An image of palette indices with a transparency mask, row-major.
+// An image of palette indices with a transparency mask, column-major as Doom keeps its
+// pictures (and as level::Texture keeps texels), so that a post is one copy.
 struct IndexedImage {
   int width = 0, height = 0;
   int left_offset = 0, top_offset = 0;  // pictures: where the origin lies (sprites hang from it)
@@ -19,7 +20,7 @@ struct IndexedImage {
 
   IndexedImage() = default;
   IndexedImage(int w, int h) : width(w), height(h), indices(size_t(w) * h, 0), opaque(size_t(w) * h, 0) {}
-  size_t at(int x, int y) const { return size_t(y) * width + x; }
+  size_t at(int x, int y) const { return size_t(x) * height + y; }
 };
 
 constexpr int kMaxPictureSide = 4096;

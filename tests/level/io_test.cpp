@@ -246,6 +246,37 @@ TEST_F(LevelIo, TexturesAreColumnMajor) {
   EXPECT_EQ(t.column(2)[1], 7u);
 }
 
+// A texture given in columns is the texture given in rows, transposed: texels, indices,
+// holes and runs (textures of every shape up to 40 on a side, some with holes).
+TEST_F(LevelIo, TexturesFromColumnsMatchTexturesFromRows) {
+  Rng rng(5);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int w = 1 + int(rng.below(40)), h = 1 + int(rng.below(40));
+    std::vector<uint32_t> rows(size_t(w) * size_t(h)), columns(rows.size());
+    std::vector<uint8_t> index_rows(rows.size()), index_columns(rows.size());
+    const bool holes = trial % 2;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const uint32_t c = holes && rng.below(3) == 0 ? 0 : 0xFF000000u | uint32_t(rng.below(1u << 24));
+        const uint8_t i = uint8_t(rng.below(256));
+        rows[size_t(y) * w + x] = columns[size_t(x) * h + y] = c;
+        index_rows[size_t(y) * w + x] = index_columns[size_t(x) * h + y] = i;
+      }
+    const Texture a = make_texture("t", w, h, rows.data(), index_rows.data());
+    const Texture b = make_texture_from_columns("t", w, h, columns, index_columns);
+    EXPECT_EQ(a.texels, b.texels);
+    EXPECT_EQ(a.texels, columns);
+    EXPECT_EQ(a.indices, index_columns);
+    EXPECT_EQ(b.indices, index_columns);
+    EXPECT_EQ(a.holes, b.holes);
+    EXPECT_EQ(a.pow2_width, b.pow2_width);
+    EXPECT_EQ(a.pow2_height, b.pow2_height);
+    EXPECT_EQ(a.run_start, b.run_start);
+    ASSERT_EQ(a.runs.size(), b.runs.size());
+    for (size_t r = 0; r < a.runs.size(); ++r) EXPECT_TRUE(a.runs[r].first == b.runs[r].first && a.runs[r].end == b.runs[r].end);
+  }
+}
+
 // Sides that are not powers of two (Doom's 72-high textures) wrap by modulo, on both signs.
 TEST_F(LevelIo, TexturesOfAnySizeWrap) {
   const uint32_t a = 0xFF000000u;  // opaque

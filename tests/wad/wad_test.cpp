@@ -2,6 +2,7 @@
 // lump lookup with later WADs overriding, Doom's post format, composite textures.
 #include <gtest/gtest.h>
 
+#include "engine/util/bytes.h"
 #include "engine/util/doom.h"
 #include "engine/util/error.h"
 #include "engine/image/image.h"
@@ -154,6 +155,74 @@ TEST(Art, CompositeTexturesFlatsAndSkies) {
   EXPECT_EQ(sky_texture_name("MAP12"), "SKY2");
   EXPECT_EQ(sky_texture_name("MAP20"), "SKY2");
   EXPECT_EQ(sky_texture_name("MAP21"), "SKY3");
+}
+
+// Two patches on one canvas, each partly off it, the second with holes over the first:
+// every texel against a composition done here pixel by pixel. A flat is its lump's rows.
+TEST(Art, PatchesLandWhereTheyArePlacedAndFlatsAreRows) {
+  struct Placed {
+    IndexedImage image;
+    int x, y;
+  };
+  std::vector<Placed> patches = {{IndexedImage(4, 6), -1, -2}, {IndexedImage(5, 5), 6, 7}};
+  for (size_t k = 0; k < patches.size(); ++k)
+    for (int y = 0; y < patches[k].image.height; ++y)
+      for (int x = 0; x < patches[k].image.width; ++x) {
+        IndexedImage& img = patches[k].image;
+        img.indices[img.at(x, y)] = uint8_t(100 * k + 10 * y + x);
+        img.opaque[img.at(x, y)] = k == 0 || (x + y) % 2 == 0;
+      }
+  constexpr int kW = 12, kH = 10;
+  test::WadWriter w(true);
+  test::add_test_art(w);  // the palette and light maps; its PNAMES and TEXTURE1 are replaced below
+  auto name8 = [](ByteWriter& out, const std::string& n) {
+    for (size_t i = 0; i < 8; ++i) out.u8(i < n.size() ? uint8_t(n[i]) : 0);
+  };
+  ByteWriter pnames;
+  pnames.u32(2);
+  name8(pnames, "PA"), name8(pnames, "PB");
+  ByteWriter texture1;
+  texture1.u32(1), texture1.u32(8);
+  name8(texture1, "DUO");
+  texture1.u32(0), texture1.u16(kW), texture1.u16(kH), texture1.u32(0), texture1.u16(2);
+  for (size_t k = 0; k < patches.size(); ++k)
+    texture1.u16(uint16_t(patches[k].x)), texture1.u16(uint16_t(patches[k].y)), texture1.u16(uint16_t(k)),
+        texture1.u16(1), texture1.u16(0);
+  w.lump("PNAMES", pnames.release());
+  w.lump("TEXTURE1", texture1.release());
+  w.lump("P_START");
+  w.lump("PA", test::encode_picture(patches[0].image));
+  w.lump("PB", test::encode_picture(patches[1].image));
+  w.lump("P_END");
+  std::vector<uint8_t> flat(64 * 64);
+  for (size_t p = 0; p < flat.size(); ++p) flat[p] = uint8_t(p % 64 + p / 64 % 3 * 64);  // column + 64 * (row % 3)
+  w.lump("F_START");
+  w.lump("RAMP", flat);
+  w.lump("F_END");
+  Stack stack;
+  stack.add(Wad(w.bytes(), "art.wad"));
+  const Art art(stack);
+  std::vector<std::string> problems;
+  const auto duo = art.texture("DUO", problems);
+  ASSERT_TRUE(duo);
+  EXPECT_TRUE(problems.empty());
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      int want = -1;  // transparent
+      for (const Placed& p : patches) {
+        const int px = x - p.x, py = y - p.y;
+        if (px >= 0 && py >= 0 && px < p.image.width && py < p.image.height && p.image.opaque[p.image.at(px, py)])
+          want = p.image.indices[p.image.at(px, py)];
+      }
+      EXPECT_EQ(duo->opaque[duo->at(x, y)], want >= 0) << x << "," << y;
+      if (want >= 0) {
+        EXPECT_EQ(duo->indices[duo->at(x, y)], want) << x << "," << y;
+      }
+    }
+  const auto ramp = art.flat("RAMP", problems);
+  ASSERT_TRUE(ramp);
+  for (int y = 0; y < 64; y += 7)
+    for (int x = 0; x < 64; x += 5) EXPECT_EQ(ramp->indices[ramp->at(x, y)], x + y % 3 * 64) << x << "," << y;
 }
 
 TEST(Art, MissingArtIsAClearError) {
