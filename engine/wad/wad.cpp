@@ -137,7 +137,7 @@ std::vector<const Lump*> Stack::namespace_lumps(std::initializer_list<std::strin
     }
     return false;
   };
-  std::map<std::string, const Lump*> by_name;
+  std::vector<const Lump*> found;  // in stack order: of two lumps of a name, the later wins
   for (const Wad& w : wads_) {
     int depth = 0;
     for (const Lump& l : w.lumps()) {
@@ -146,12 +146,14 @@ std::vector<const Lump*> Stack::namespace_lumps(std::initializer_list<std::strin
       } else if (marker(l.name, "_END")) {
         depth = std::max(0, depth - 1);
       } else if (depth > 0 && !l.bytes.empty()) {
-        by_name[l.name] = &l;
+        found.push_back(&l);
       }
     }
   }
-  std::vector<const Lump*> out;
-  for (const auto& [name, lump] : by_name) out.push_back(lump);
+  std::stable_sort(found.begin(), found.end(), [](const Lump* a, const Lump* b) { return a->name < b->name; });
+  std::vector<const Lump*> out;  // by name, the last of each
+  for (size_t i = 0; i < found.size(); ++i)
+    if (i + 1 == found.size() || found[i + 1]->name != found[i]->name) out.push_back(found[i]);
   return out;
 }
 
