@@ -4,6 +4,7 @@
 // an arena of address space marked for transparent huge pages (where the kernel allows
 // them): a fault per 2 MB rather than per 4 KB. mapc on a Freedoom map: 0.4 of the time
 // and a twentieth of the faults; the sanitizer builds keep their own allocator.
+#include <mimalloc-new-delete.h>  // new and delete straight to mimalloc (once per program: here)
 #include <mimalloc.h>
 #include <sys/mman.h>
 
