@@ -77,11 +77,11 @@ class Importer {
             art_.palette()[art_.colormap()[size_t(m) * kPaletteColors + i]];
   }
 
-  int add_texture(const std::string& name, const IndexedImage& img) {
+  int add_texture(const std::string& name, IndexedImage img) {
     map::Texture t;
     t.name = name;
     t.image = colours(img);
-    t.indices = img.indices;
+    t.indices = std::move(img.indices);
     t.column_major = true;
     t.loc = FileLoc{data_.where, 0};
     src_.textures.push_back(std::move(t));
@@ -103,9 +103,9 @@ class Importer {
     const auto it = wall_textures_.find(name);
     if (it != wall_textures_.end()) return it->second;
     std::vector<std::string> problems;
-    const auto img = must_exist || art_.has_texture(name) ? art_.texture(name, problems) : std::nullopt;
+    auto img = must_exist || art_.has_texture(name) ? art_.texture(name, problems) : std::nullopt;
     for (const std::string& p : problems) warn("broken patches", record, p);
-    const int index = img ? add_texture(name, *img) : map::kNone;
+    const int index = img ? add_texture(name, std::move(*img)) : map::kNone;
     if (!img && must_exist) warn("unknown textures", record, "texture " + printable(name) + " does not exist (drawn as missing)");
     wall_textures_[name] = index;
     if (const std::string pair = doom::switch_partner(name); img && !pair.empty()) wall_texture(pair, record, false);
@@ -117,11 +117,11 @@ class Importer {
     const auto it = flats_.find(name);
     if (it != flats_.end()) return it->second;
     std::vector<std::string> problems;
-    const auto img = art_.flat(name, problems);
+    auto img = art_.flat(name, problems);
     for (const std::string& p : problems) warn("broken flats", record, p);
     int index;
     if (img) {
-      index = add_texture(name, *img);
+      index = add_texture(name, std::move(*img));
     } else {
       warn("unknown flats", record, "flat " + printable(name) + " does not exist (drawn as a placeholder)");
       index = add_texture(name, placeholder());
@@ -472,11 +472,11 @@ class Importer {
     if (const auto it = sprite_images_.find(lump.name); it != sprite_images_.end()) return it->second;
     int index = -1;
     try {
-      const IndexedImage img = decode_picture(lump.bytes, "sprite " + lump.name);
+      IndexedImage img = decode_picture(lump.bytes, "sprite " + lump.name);
       map::SpriteImage out;
       out.name = lump.name;
       out.image = colours(img);
-      out.indices = img.indices;
+      out.indices = std::move(img.indices);
       out.column_major = true;
       out.left = img.left_offset;
       out.top = img.top_offset;
