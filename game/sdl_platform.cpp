@@ -97,9 +97,9 @@ class Window {
     if (o_.autopilot) autopilot_.emplace(*o_.autopilot);
     if (o_.play) session_.spawn(o_.play->start, o_.play->angle);
     if (!o_.record.empty()) session_.start_recording();
-    mtime_ = modified_time();
+    if (o_.map_reload) session_.watch_files();
 
-    double last = now_seconds(), accumulator = 0, reload_check = last;
+    double last = now_seconds(), accumulator = 0;
     const double start = last;
     uint64_t frames = 0;
     while (running_) {
@@ -115,10 +115,7 @@ class Window {
         accumulator -= kTicSeconds;
       }
       const double t1 = now_seconds();
-      if (o_.map_reload && t1 - reload_check > 0.5) {
-        reload_check = t1;
-        check_reload();
-      }
+      session_.reload_if_saved(t1);
       const double alpha = accumulator / kTicSeconds;
       session_.render(frame_, alpha);
       session_.draw_overlays(frame_, times_, alpha);
@@ -274,23 +271,6 @@ class Window {
     if (o_.quit_after_tics && session_.tics() >= o_.quit_after_tics) running_ = false;
   }
 
-  // The newest modification among the files the level is read from.
-  std::filesystem::file_time_type modified_time() const {
-    std::filesystem::file_time_type newest{};
-    for (const auto& file : session_.files()) {
-      std::error_code ec;
-      newest = std::max(newest, std::filesystem::last_write_time(file, ec));
-    }
-    return newest;
-  }
-
-  void check_reload() {
-    const auto t = modified_time();
-    if (t == mtime_) return;
-    mtime_ = t;
-    session_.reload();
-  }
-
   Session& session_;
   const WindowOptions& o_;
   SDL_Window* window_ = nullptr;
@@ -306,7 +286,6 @@ class Window {
   bool noclip_typed_ = false;
   size_t played_ = 0;
   std::optional<Autopilot> autopilot_;
-  std::filesystem::file_time_type mtime_;
 };
 
 }  // namespace

@@ -156,24 +156,31 @@ void Session::start_recording() {
 
 bool Session::reload() {
   const sim::Player keep = player_;
+  const std::string file_name = std::filesystem::path(name_).filename().string();
   std::unique_ptr<level::Level> old_level = std::move(level_);
   std::unique_ptr<sim::World> old_world = std::move(world_);
-
   try {
     load();
   } catch (const std::exception& e) {
     level_ = std::move(old_level);
     world_ = std::move(old_world);
-
     automap_view_.set_level(*level_);
-    say(std::string("reload failed: ") + e.what());
-    std::fprintf(stderr, "%s\n", e.what());
+    say("not reloaded: " + std::string(e.what()));
+    std::fprintf(stderr, "game: %s not reloaded, the old level kept: %s\n", file_name.c_str(), e.what());
     return false;
   }
-  player_ = previous_ = keep;
-  player_.z = previous_.z = std::max(keep.z, world_->heights_at(keep.pos).floor);
+  if (level_->sector_at(keep.pos) != level::kNone) {
+    player_ = previous_ = keep;
+    player_.z = previous_.z = std::max(keep.z, world_->heights_at(keep.pos).floor);
+  } else {  // the ground under the player is gone
+    const uint8_t keys = keep.keys;
+    player_ = previous_ = world_->spawn();
+    set_keys(keys);
+  }
+  if (watch_) watch_->rebase();
   if (!select_renderer(renderer_name_)) select_renderer("bsp");
-  say("reloaded " + std::filesystem::path(name_).filename().string());
+  say("reloaded " + file_name);
+  std::fprintf(stderr, "game: reloaded %s\n", file_name.c_str());
   return true;
 }
 

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "engine/render/renderer.h"
 #include "engine/sim/demo.h"
 #include "game/automap.h"
+#include "game/file_watch.h"
 #include "game/hud.h"
 #include "game/menu.h"
 
@@ -77,9 +79,15 @@ class Session {
   // ---- demos and reloading
   void start_recording();
   const sim::Demo& recording() const { return recording_; }
-  // Recompiles the map from disk, keeping the player where it is. False (and a
-  // message, the old level kept) if the new map does not compile.
+  // Recompiles the map from disk, keeping the player where it stands if that point
+  // is still inside the level (else at the new start). False (and a message, the
+  // old level kept) if the new map does not compile. Both outcomes are also said on
+  // stderr.
   bool reload();
+  // --map-reload: watch the level's files; reload_if_saved, called every frame with a
+  // monotonic clock, reloads once an editor has finished saving them.
+  void watch_files() { watch_ = FileWatch(files()); }
+  bool reload_if_saved(double now_seconds) { return watch_ && watch_->changed(now_seconds) && reload(); }
 
  private:
   void load();
@@ -101,6 +109,7 @@ class Session {
   int message_tics_ = 0;
   bool recording_on_ = false;
   sim::Demo recording_;
+  std::optional<FileWatch> watch_;
 };
 
 }  // namespace p3d::game

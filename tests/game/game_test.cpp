@@ -2,6 +2,8 @@
 // interpolation, renderer switching and reloading, and headless replay.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "engine/map/generate.h"
 #include "engine/util/file.h"
 #include "game/autopilot.h"
@@ -183,6 +185,111 @@ TEST(Session, ReloadsAWadMapWhenThePwadChanges) {
   write_file_atomically(dir / "mine.wad", std::string("PWAD broken"));
   EXPECT_FALSE(s.reload());
   EXPECT_EQ(s.level().sectors[0].light, 200) << "the old level stays";
+  std::filesystem::remove_all(dir);
+}
+
+// The summed brightness of a frame (red + green + blue over every pixel).
+uint64_t brightness(const render::Frame& frame) {
+  uint64_t sum = 0;
+  for (uint32_t p : frame.pixels) sum += (p & 0xff) + (p >> 8 & 0xff) + (p >> 16 & 0xff);
+  return sum;
+}
+
+// --map-reload end to end, without a window: the game's loop (tic, reload check,
+// render) runs on a clock of its own while an editor saves the map the ways editors
+// do; the frames show the change once the save has settled, and only then.
+TEST(Session, MapReloadShowsAnEditorsSaveInTheNextFrames) {
+  const auto dir = test::temp_dir("map-reload");
+  std::filesystem::create_directory_symlink(test::source_dir() / "maps/textures", dir / "textures");
+  const std::string bright = read_file_text(test::source_dir() / "maps/outpost.map");
+  const std::string hall = "sector hall     floor=0   ceiling=160 light=176";
+  ASSERT_NE(bright.find(hall), std::string::npos);
+  std::string dark = bright;
+  dark.replace(dark.find(hall), hall.size(), "sector hall     floor=0   ceiling=160 light=40 ");
+  const auto map = dir / "m.map";
+  write_file_atomically(map, bright);
+
+  Session s(map);
+  s.watch_files();
+  s.tic({0, 0, 0});
+  const geom::Vec2 stand = s.player().pos;
+  render::Frame frame(160, 100);
+  double now = 0;
+  int reloads = 0;
+  auto run = [&](double seconds) {  // the loop: one tic, the reload check and a frame, 35 times a second
+    for (int i = 0; i < int(seconds * sim::kTicRate); ++i) {
+      s.tic({});
+      now += 1.0 / sim::kTicRate;
+      reloads += s.reload_if_saved(now);
+      s.render(frame, 1);
+    }
+    return brightness(frame);
+  };
+  const uint64_t before = run(1);
+  EXPECT_EQ(reloads, 0) << "nothing changed";
+
+  // Written in place, half at first: nothing happens while the file is still growing.
+  { std::ofstream(map, std::ios::binary | std::ios::trunc) << dark.substr(0, dark.size() / 2); }
+  run(0.2);
+  { std::ofstream(map, std::ios::binary | std::ios::trunc) << dark; }
+  EXPECT_EQ(reloads, 0) << "a half-written file is not read";
+  const uint64_t darker = run(1.5);
+  EXPECT_EQ(reloads, 1);
+  EXPECT_LT(darker, before * 0.9) << "the hall's new light shows in the frames";
+  EXPECT_EQ(s.player().pos, stand) << "the player stays where they stood";
+
+  // Renamed over, after being briefly missing: one reload, back to the bright hall.
+  std::filesystem::rename(map, dir / "m.map~");
+  EXPECT_EQ(run(1.5), darker) << "a missing file is waited for, the level kept";
+  EXPECT_EQ(reloads, 1);
+  write_file_atomically(map, bright);
+  EXPECT_EQ(run(1.5), before);
+  EXPECT_EQ(reloads, 2);
+
+  // A broken save keeps the old level; the fix after it reloads.
+  write_file_atomically(map, bright + "nonsense\n");
+  EXPECT_EQ(run(1.5), before);
+  EXPECT_EQ(reloads, 2);
+  write_file_atomically(map, dark);
+  EXPECT_LT(run(1.5), before * 0.9);
+  EXPECT_EQ(reloads, 3);
+  std::filesystem::remove_all(dir);
+}
+
+// A PWAD renamed over by an editor: the new map is shown, the player moved to its
+// start when the old spot is outside it.
+TEST(Session, MapReloadFollowsAPwadRenamedOver) {
+  const auto dir = test::temp_dir("map-reload-wad");
+  test::WadWriter iwad(true);
+  test::add_test_art(iwad);
+  write_file_atomically(dir / "doom.wad", iwad.bytes());
+  auto save = [&](int size, int light) {
+    test::TestMap m;
+    m.add_room({{0, 0}, {0, size}, {size, size}, {size, 0}}, {0, 128, "FLOOR", "CEIL", light});
+    m.things.push_back({32, 32, 0, 1, 7});
+    test::WadWriter pwad;
+    m.add_to(pwad, "MAP01");
+    write_file_atomically(dir / "mine.wad", pwad.bytes());  // a temporary file renamed over
+  };
+  save(1024, 100);
+  Session s(bsp::LevelSource{{}, {dir / "doom.wad", dir / "mine.wad"}, "MAP01"});
+  s.watch_files();
+  s.spawn({900, 900}, 0);
+  double now = 0;
+  auto settle = [&] {
+    bool reloaded = false;
+    for (int i = 0; i < 50; ++i) reloaded |= s.reload_if_saved(now += 0.1);
+    return reloaded;
+  };
+  EXPECT_FALSE(settle());
+  save(1024, 200);
+  EXPECT_TRUE(settle());
+  EXPECT_EQ(s.level().sectors[0].light, 200);
+  EXPECT_EQ(s.player().pos, geom::Vec2(900, 900));
+  save(256, 50);  // the room shrank under the player
+  EXPECT_TRUE(settle());
+  EXPECT_EQ(s.level().sectors[0].light, 50);
+  EXPECT_EQ(s.player().pos, geom::Vec2(32, 32)) << "moved to the start";
   std::filesystem::remove_all(dir);
 }
 
