@@ -184,6 +184,7 @@ class Builder {
     out_.player_angle = src_.player.angle;
     out_.default_sector = src_.default_sector;
     out_.sky_texture = src_.sky_texture;
+    out_.animations = src_.animations;
     if (consumable_ && consumable_->grid) {  // moved: 17 bytes a tile, 285 MB at 4096x4096
       map::GridInfo& g = *consumable_->grid;
       out_.grid = level::Grid{g.cols, g.rows, g.cell, std::move(g.solid), std::move(g.faces)};

@@ -24,6 +24,7 @@
 //                           f64 bbox min x, min y, max x, max y }
 //     LEAVES   u32 n; n x { i32 sector }
 //     THINGS   u32 n; n x { i32 type, f64 x, y, angle, u32 flags, i32 sprite frame (-1: none), i32 sector (-1: none) }
+//     ANIMS    u32 n; n x { i32 tics, i32 phase, u32 frames, frames x i32 texture }
 //     GRID     u32 present (0 or 1); if 1: u32 cols, u32 rows, f64 cell,
 //              cols*rows u8 solid (row 0 south), cols*rows*4 i32 face walls (east, north, west, south)
 // All integers and IEEE doubles little-endian; str = u32 length + bytes.
@@ -37,7 +38,7 @@
 namespace p3d::level::format {
 
 constexpr char kMagic[8] = {'P', '3', 'D', 'B', 'S', 'P', '\r', '\n'};
-constexpr uint32_t kVersion = 7;
+constexpr uint32_t kVersion = 8;
 constexpr size_t kHeaderSize = 8 + 4 + 4 + 8 + 8;
 
 constexpr uint32_t tag(const char (&s)[5]) {
@@ -47,7 +48,7 @@ constexpr uint32_t tag(const char (&s)[5]) {
 constexpr uint32_t kMeta = tag("META"), kPalette = tag("PALT"), kTextures = tag("TEXS"), kSprites = tag("SPRS"),
                    kSectors = tag("SECS"), kPartOffsets = tag("PRTS"),
                    kWalls = tag("WALL"), kFragments = tag("FRAG"), kNodes = tag("NODE"), kLeaves = tag("LEAF"),
-                   kThings = tag("THNG"), kGrid = tag("GRID");
+                   kThings = tag("THNG"), kAnimations = tag("ANIM"), kGrid = tag("GRID");
 
 constexpr size_t kSideRecord = 4 * 4 + 2 * 8 + 4 + 4;
 constexpr size_t kPartOffsetsRecord = 6 * 8;

@@ -263,6 +263,18 @@ State start_state(const Level& level, int skill) {
   return s;
 }
 
+void animate_textures(const Level& level, State& state, uint64_t tic) {
+  if (level.animations.empty()) return;
+  if (state.shown_textures.empty()) {
+    state.shown_textures.resize(level.textures.size());
+    for (size_t t = 0; t < level.textures.size(); ++t) state.shown_textures[t] = int32_t(t);
+  }
+  for (const doom::TextureAnimation& a : level.animations) {
+    const uint64_t n = a.frames.size(), step = tic / uint64_t(a.tics) + uint64_t(a.phase);
+    for (uint64_t k = 0; k < n; ++k) state.shown_textures[size_t(a.frames[k])] = a.frames[(step + k) % n];
+  }
+}
+
 int Level::leaf_at(Vec2 p) const {
   int32_t c = 0;
   while (!is_leaf(c)) {

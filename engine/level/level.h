@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/geom/geom.h"
+#include "engine/util/doom.h"
 #include "engine/util/limits.h"
 
 namespace p3d::level {
@@ -213,6 +214,7 @@ struct Level {
   double player_angle = 0;
   int default_sector = kNone;
   int sky_texture = kNone;
+  std::vector<doom::TextureAnimation> animations;  // textures shown in turn, in place of each other
   // Paletted levels (WAD art): the palette, and limits::kLightMaps maps of its colours
   // shaded (map m of index i at [m * kPaletteSize + i], map 0 full bright). Both empty:
   // textures are RGBA, shaded by multiplying.
@@ -273,6 +275,11 @@ struct State {
   std::vector<uint8_t> things;    // per thing: 1 when present
   std::vector<int32_t> textures;  // per wall, side and Part: [(wall * 2 + side) * 3 + part]
   std::vector<int32_t> specials;  // per wall: its line special, 0 once used up
+  // Per texture, the one drawn in its place (animations); empty: each draws itself.
+  std::vector<int32_t> shown_textures;
+
+  // The texture drawn for `texture` (kNone and kSky stay as they are).
+  int shown(int texture) const { return texture < 0 || shown_textures.empty() ? texture : shown_textures[size_t(texture)]; }
 
   int texture(uint32_t wall, int side, int part) const { return textures[(size_t(wall) * 2 + size_t(side)) * 3 + size_t(part)]; }
   int& texture(uint32_t wall, int side, int part) { return textures[(size_t(wall) * 2 + size_t(side)) * 3 + size_t(part)]; }
@@ -283,6 +290,9 @@ constexpr int kDefaultSkill = 3;  // Doom's "Hurt me plenty"
 // skill and things only in multiplayer games are left out (things without a sprite
 // are present but never drawn).
 State start_state(const Level& level, int skill = kDefaultSkill);
+// Shows each animation's frames as Doom does after the tic at level time `tic`
+// (the first tic is 0); before the first tic every texture shows itself.
+void animate_textures(const Level& level, State& state, uint64_t tic);
 
 // Side of p relative to a node's splitter: > 0 back (left), < 0 front (right).
 inline double splitter_side(const Node& n, Vec2 p) { return geom::cross(n.direction, p - n.origin); }

@@ -38,6 +38,7 @@ class Reader {
     read_nodes();
     read_leaves();
     read_things();
+    read_animations();
     read_grid();
     in_.at(nullptr);
     if (in_.remaining() != 0) in_.fail(std::to_string(in_.remaining()) + " unexpected bytes after the last section");
@@ -274,6 +275,23 @@ class Reader {
     }
   }
 
+  void read_animations() {
+    section(format::kAnimations, "ANIM");
+    const uint32_t n = in_.count(12, "animations");
+    level_.animations.resize(n);
+    for (doom::TextureAnimation& a : level_.animations) {
+      in_.at("ANIM", &a - level_.animations.data());
+      a.tics = in_.i32();
+      a.phase = in_.i32();
+      if (a.tics <= 0 || a.tics > 35 * 60) in_.fail("bad tics per frame " + std::to_string(a.tics));
+      const uint32_t frames = in_.count(4, "animation frames");
+      if (frames < 2) in_.fail("an animation needs two frames or more");
+      if (a.phase < 0 || uint32_t(a.phase) >= frames) in_.fail("bad phase " + std::to_string(a.phase));
+      a.frames.resize(frames);
+      for (int32_t& f : a.frames) f = in_.i32();
+    }
+  }
+
   void read_grid() {
     section(format::kGrid, "GRID");
     const uint32_t present = in_.u32();
@@ -338,6 +356,10 @@ class Reader {
     in_.at("META");
     index(level_.default_sector, kNone, sectors, "default sector");
     index(level_.sky_texture, kNone, textures, "sky texture");
+    for (const doom::TextureAnimation& a : level_.animations) {
+      in_.at("ANIM", &a - level_.animations.data());
+      for (int32_t f : a.frames) index(f, 0, textures, "animation frame");
+    }
     for (const Sector& s : level_.sectors) {
       in_.at("SECS", &s - level_.sectors.data());
       if (s.floor_texture != kSky) index(s.floor_texture, 0, textures, "floor texture");

@@ -173,6 +173,15 @@ void write_payload(ByteWriter& out, const Level& level) {
     out.i32(t.sector);
   }
 
+  out.u32(format::kAnimations);
+  out.u32(static_cast<uint32_t>(level.animations.size()));
+  for (const doom::TextureAnimation& a : level.animations) {
+    out.i32(a.tics);
+    out.i32(a.phase);
+    out.u32(static_cast<uint32_t>(a.frames.size()));
+    for (int32_t f : a.frames) out.i32(f);
+  }
+
   out.u32(format::kGrid);
   out.u32(level.grid ? 1 : 0);
   if (level.grid) {
@@ -195,6 +204,7 @@ size_t encoded_size_estimate(const Level& level) {
            format::kPartOffsetsRecord * level.part_offsets.size() + 28 * level.fragments.size() +
            52 * level.nodes.size() + 4 * level.leaves.size() + 40 * level.things.size();
   if (level.grid) bytes += 24 + level.grid->solid.size() + level.grid->faces.size() * 4;
+  for (const doom::TextureAnimation& a : level.animations) bytes += 12 + 4 * a.frames.size();
   return bytes;
 }
 

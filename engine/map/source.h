@@ -140,6 +140,7 @@ struct Source {
   PlayerStart player;
   int default_sector = kNone;  // used where no sector bounds a point (segment-only maps always have one)
   int sky_texture = kNone;
+  std::vector<doom::TextureAnimation> animations;  // WAD levels: Doom's animated textures and flats in use
   // Paletted art (WAD levels): the palette and its limits::kLightMaps light maps (Doom's
   // COLORMAP through PLAYPAL; map m of index i at [m * kPaletteSize + i], map 0 full bright).
   std::vector<uint32_t> palette, light_maps;

@@ -273,9 +273,9 @@ void Canvas::resolve(int y0, int y1) {
 bool Canvas::draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom) {
   const level::Wall& w = level_->walls[hit.wall];
   const level::Side& side = w.sides[hit.side];
-  const int upper = state_->texture(hit.wall, hit.side, level::kUpperPart);
-  const int middle = state_->texture(hit.wall, hit.side, level::kMiddlePart);
-  const int lower = state_->texture(hit.wall, hit.side, level::kLowerPart);
+  const int upper = state_->shown(state_->texture(hit.wall, hit.side, level::kUpperPart));
+  const int middle = state_->shown(state_->texture(hit.wall, hit.side, level::kMiddlePart));
+  const int lower = state_->shown(state_->texture(hit.wall, hit.side, level::kLowerPart));
   if (near == kNone) {  // no sector to measure heights from: a wall over every open row
     wall_span(x, top, bottom, {middle, level::kMiddlePart, 0, 255}, hit);
     top = bottom;
@@ -409,7 +409,7 @@ void Canvas::draw_masked(int x, const Step& m) {
   const level::Side& side = w.sides[m.hit.side];
   const level::SectorState& s = state_->sectors[m.near];
   const level::SectorState& b = state_->sectors[m.far];
-  const level::Texture& tex = level_->textures[state_->texture(m.hit.wall, m.hit.side, level::kMiddlePart)];
+  const level::Texture& tex = level_->textures[state_->shown(state_->texture(m.hit.wall, m.hit.side, level::kMiddlePart))];
   const double anchor = (w.flags & level::kUnpegLower) ? std::max(s.floor, b.floor) + tex.height
                                                        : std::min(s.ceiling, b.ceiling);
   const int64_t u = to_int(texture_u(m.hit, level::kMiddlePart));
@@ -586,7 +586,7 @@ Canvas::PlaneRow Canvas::plane_row(const PlaneKey& key, int y) const {
 void Canvas::plane_span(int x, int y0, int y1, int sector, bool ceiling) {
   if (y0 >= y1 || dry_) return;
   const level::SectorState& s = state_->sectors[sector];
-  const int texture = ceiling ? s.ceiling_texture : s.floor_texture;
+  const int texture = state_->shown(ceiling ? s.ceiling_texture : s.floor_texture);
   if (texture == kSky) return sky_span(x, y0, y1);
   count(x, y0, y1);
   const PlaneKey key{ceiling ? s.ceiling : s.floor, texture, light_start(s.light, 0)};

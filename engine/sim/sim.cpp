@@ -277,6 +277,7 @@ void World::tick(Player& p, const TicCommand& cmd) {
   pick_up(p);
   movers_.tick([&](int sector) { return fits_after_move(p, sector); });
   tick_buttons();
+  level::animate_textures(level_, state_, level_time_++);  // after the tic's movers, as Doom's P_UpdateSpecials
 }
 
 }  // namespace p3d::sim

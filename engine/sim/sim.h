@@ -120,6 +120,7 @@ class World {
   int secrets_found() const { return secrets_found_; }
   int secrets_total() const { return secrets_total_; }
   const Movers& movers() const { return movers_; }
+  uint64_t level_time() const { return level_time_; }
   // Starts what a line's special does to sectors, as if its trigger fired, with no
   // lock, player or side involved (tests and tools set levels moving so). True if
   // anything started; teleporters, exits and unknown specials do nothing.
@@ -178,6 +179,7 @@ class World {
   bool teleported_ = false;  // during a move
   double player_floor_ = 0;  // the floor the player last stood on or over (Doom's floorz)
   int secrets_found_ = 0, secrets_total_ = 0;
+  uint64_t level_time_ = 0;  // tics played (Doom's leveltime)
 };
 
 }  // namespace p3d::sim

@@ -5,6 +5,20 @@
 
 namespace p3d::doom {
 
+std::span<const AnimatedRange> animated_ranges() {
+  static constexpr AnimatedRange kRanges[] = {
+      {false, "NUKAGE1", "NUKAGE3", 8},  {false, "FWATER1", "FWATER4", 8},  {false, "SWATER1", "SWATER4", 8},
+      {false, "LAVA1", "LAVA4", 8},      {false, "BLOOD1", "BLOOD3", 8},    {false, "RROCK05", "RROCK08", 8},
+      {false, "SLIME01", "SLIME04", 8},  {false, "SLIME05", "SLIME08", 8},  {false, "SLIME09", "SLIME12", 8},
+      {true, "BLODGR1", "BLODGR4", 8},   {true, "SLADRIP1", "SLADRIP3", 8}, {true, "BLODRIP1", "BLODRIP4", 8},
+      {true, "FIREWALA", "FIREWALL", 8}, {true, "GSTFONT1", "GSTFONT3", 8}, {true, "FIRELAV3", "FIRELAVA", 8},
+      {true, "FIREMAG1", "FIREMAG3", 8}, {true, "FIREBLU1", "FIREBLU2", 8}, {true, "ROCKRED1", "ROCKRED3", 8},
+      {true, "BFALL1", "BFALL4", 8},     {true, "SFALL1", "SFALL4", 8},     {true, "WFALL1", "WFALL4", 8},
+      {true, "DBRAIN1", "DBRAIN4", 8},
+  };
+  return kRanges;
+}
+
 namespace {
 
 // "E<e>M<m>" or "MAP<nn>" (case-insensitive): the numbers, or false.

@@ -3,8 +3,10 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace p3d::doom {
 
@@ -57,6 +59,29 @@ inline std::string switch_partner(std::string_view name) {
   partner[2] = name[2] == '1' ? '2' : '1';
   return partner;
 }
+
+// An animated texture or flat (Doom's nukage, water, lava, fire walls...): the
+// textures of its frames in Doom's order, each shown `tics` tics in turn in place of
+// any of them. `phase` is Doom's number of the first frame modulo the frame count:
+// Doom starts each frame's cycle at its own number, so frame k shows
+// frames[(t / tics + phase + k) % n] at level time t.
+struct TextureAnimation {
+  std::vector<int32_t> frames;
+  int32_t tics = 8;
+  int32_t phase = 0;
+  friend bool operator==(const TextureAnimation&, const TextureAnimation&) = default;
+};
+
+// Doom's animated ranges, by the names of their first and last frames (the frames
+// are every texture or flat between them in the WADs' order). A range whose first
+// frame is not in the WADs is not there (another game's or episode's).
+struct AnimatedRange {
+  bool texture;  // a wall texture's range, else a flat's
+  const char* first;
+  const char* last;
+  int tics;
+};
+std::span<const AnimatedRange> animated_ranges();
 
 // The map an exit leads to, in Doom's order (ExMy: M8 ends the episode, a secret
 // exit goes to M9, M9 returns where its episode's secret exit left; MAPxx: MAP15's

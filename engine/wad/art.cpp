@@ -116,8 +116,46 @@ void Art::read_texture_lump(const Lump& lump, const std::vector<std::string>& pa
       placement.patch = patch_names[size_t(index)];
       def.patches.push_back(placement);
     }
+    texture_numbers_.push_back(def.name);
     textures_.emplace(def.name, std::move(def));  // Doom takes the first texture of a name
   }
+}
+
+Art::AnimationFrames Art::animation_frames(const doom::AnimatedRange& range) const {
+  AnimationFrames out;
+  if (range.texture) {
+    const auto begin = texture_numbers_.begin(), end = texture_numbers_.end();
+    const auto first = std::find(begin, end, range.first), last = std::find(begin, end, range.last);
+    if (first == end || last == end || last <= first) return out;
+    out.names.assign(first, last + 1);
+    out.first_number = int(first - begin);
+    return out;
+  }
+  // A flat's number is its place after F_START in the WAD that holds it (Doom's
+  // lump numbers); the last WAD holding the first frame decides.
+  for (auto w = stack_.wads().rbegin(); w != stack_.wads().rend(); ++w) {
+    const std::vector<Lump>& lumps = w->lumps();
+    auto named = [&](size_t from, std::string_view name) {
+      size_t found = lumps.size();
+      for (size_t i = from; i < lumps.size(); ++i)
+        if (lumps[i].name == name) found = i;
+      return found;
+    };
+    const size_t first = named(0, range.first);
+    if (first == lumps.size()) continue;
+    const size_t last = named(first + 1, range.last);
+    if (last == lumps.size()) return out;
+    size_t start = 0;  // the F_START (or FF_START) before the range
+    for (size_t i = 0; i < first; ++i)
+      if (lumps[i].name == "F_START" || lumps[i].name == "FF_START") start = i + 1;
+    for (size_t i = first; i <= last; ++i) {
+      if (lumps[i].bytes.size() < kFlatBytes) return {};  // a marker or a broken flat inside the range
+      out.names.push_back(lumps[i].name);
+    }
+    out.first_number = int(first - start);
+    return out;
+  }
+  return out;
 }
 
 const Art::DecodedPatch& Art::patch(const std::string& name) const {

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "engine/util/doom.h"
 #include "engine/util/limits.h"
 #include "engine/wad/picture.h"
 #include "engine/wad/wad.h"
@@ -54,6 +55,15 @@ class Art {
 
   const std::map<std::string, TextureDef>& texture_defs() const { return textures_; }
 
+  // The frames of one of Doom's animated ranges, in Doom's order (texture definitions;
+  // flats as their lumps lie), and Doom's number of the first frame; no names when
+  // the range is not in these WADs or is broken (an end missing, a marker inside).
+  struct AnimationFrames {
+    std::vector<std::string> names;
+    int first_number = 0;
+  };
+  AnimationFrames animation_frames(const doom::AnimatedRange& range) const;
+
  private:
   void read_texture_lump(const Lump& lump, const std::vector<std::string>& patch_names);
   // A patch decoded once however many textures use it, or the problem with it.
@@ -67,6 +77,7 @@ class Art {
   std::vector<uint32_t> palette_;
   std::vector<uint8_t> colormap_;
   std::map<std::string, TextureDef> textures_;  // TEXTURE1, then TEXTURE2: the first definition of a name wins
+  std::vector<std::string> texture_numbers_;     // every definition's name in order: Doom's texture numbers
   std::map<std::string, const Lump*> flats_;
   mutable std::map<std::string, DecodedPatch, std::less<>> patches_;
 };

@@ -109,6 +109,7 @@ class Importer {
     if (!img && must_exist) warn("unknown textures", record, "texture " + printable(name) + " does not exist (drawn as missing)");
     wall_textures_[name] = index;
     if (const std::string pair = doom::switch_partner(name); img && !pair.empty()) wall_texture(pair, record, false);
+    if (img) animate(true, name, record);
     return index;
   }
 
@@ -127,7 +128,33 @@ class Importer {
       index = add_texture(name, placeholder());
     }
     flats_[name] = index;
+    if (img) animate(false, name, record);
     return index;
+  }
+
+  // A texture or flat in one of Doom's animated ranges brings the range's other
+  // frames along, and the level learns to show them in turn.
+  void animate(bool texture, const std::string& name, const std::string& record) {
+    if (!animation_frames_) {  // the ranges these WADs hold, found once
+      animation_frames_.emplace();
+      for (const doom::AnimatedRange& range : doom::animated_ranges())
+        if (Art::AnimationFrames f = art_.animation_frames(range); !f.names.empty())
+          animation_frames_->push_back({range, std::move(f), false});
+    }
+    for (AnimatedRangeInUse& a : *animation_frames_) {
+      if (a.used || a.range.texture != texture) continue;
+      if (std::find(a.frames.names.begin(), a.frames.names.end(), name) == a.frames.names.end()) continue;
+      a.used = true;
+      doom::TextureAnimation animation;
+      animation.tics = a.range.tics;
+      const int n = int(a.frames.names.size());
+      animation.phase = a.frames.first_number % n;
+      for (const std::string& frame : a.frames.names)
+        animation.frames.push_back(texture ? wall_texture(frame, record, false) : flat(frame, record));
+      if (std::find(animation.frames.begin(), animation.frames.end(), map::kNone) == animation.frames.end())
+        src_.animations.push_back(std::move(animation));
+      return;
+    }
   }
 
   // A checkerboard of the palette's darkest and brightest colours.
@@ -506,6 +533,12 @@ class Importer {
   std::vector<std::string> warnings_;
   std::map<std::string, size_t> warning_counts_;
   std::unordered_map<std::string, int> wall_textures_, flats_, sprite_frames_, sprite_images_;
+  struct AnimatedRangeInUse {
+    doom::AnimatedRange range;
+    Art::AnimationFrames frames;
+    bool used;
+  };
+  std::optional<std::vector<AnimatedRangeInUse>> animation_frames_;
   std::vector<const Lump*> sprite_lumps_;
 };
 

@@ -92,6 +92,7 @@ TEST(LevelRoundTrip, WhatCompilesIsReadBack) {
     for (double& v : parts.x) v = -limits::kMaxOffset;
     for (double& v : parts.y) v = limits::kMaxOffset;
   }
+  edge.animations.push_back({{1, 0}, 8, 1});  // as a WAD's animated textures
   map::validate(edge);
   sources.push_back(edge);
   for (const map::Source& src : sources) {

@@ -207,7 +207,9 @@ void add_test_art(WadWriter& wad) {
     int w, h, patch;
   };
   const Def defs[] = {{"WALL", 64, 72, 0}, {"MESH", 32, 32, 1}, {"SKY1", 256, 128, 2},
-                      {"SW1TEST", 64, 72, 0}, {"SW2TEST", 64, 72, 2}};
+                      {"SW1TEST", 64, 72, 0}, {"SW2TEST", 64, 72, 2},
+                      // Doom's animated fire wall (FIREWALA to FIREWALL in definition order)
+                      {"FIREWALA", 64, 72, 0}, {"FIREWALB", 32, 32, 1}, {"FIREWALL", 256, 128, 2}};
   constexpr int kDefs = int(std::size(defs));
   ByteWriter textures;
   textures.u32(kDefs);
@@ -234,6 +236,8 @@ void add_test_art(WadWriter& wad) {
     for (size_t p = 0; p < pixels.size(); ++p) pixels[p] = uint8_t(flat[0] == 'F' ? 20 + p % 8 : 60 + p % 8);
     wad.lump(flat, pixels);
   }
+  for (int frame = 1; frame <= 3; ++frame)  // Doom's animated nukage: one colour a frame
+    wad.lump("NUKAGE" + std::to_string(frame), std::vector<uint8_t>(64 * 64, uint8_t(200 + 10 * frame)));
   wad.lump("F_END");
 }
 

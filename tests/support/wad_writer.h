@@ -71,7 +71,8 @@ std::vector<uint8_t> encode_picture(const wad::IndexedImage& image);
 //   MESH  32x32 with transparent holes (every other column), for masked middles
 //   SKY1  256x128
 //   SW1TEST and SW2TEST, a switch and its pair
-//   FLOOR, CEIL and STEP flats, F_SKY1
+//   FIREWALA, FIREWALB, FIREWALL: Doom's animated fire wall, drawn with WALL, MESH and SKY1's patches
+//   FLOOR, CEIL and STEP flats, F_SKY1, and NUKAGE1..3 (solid indices 210, 220, 230)
 // Palette index i is rgb(i, 255 - i, 128) and light map m darkens by m/32.
 void add_test_art(WadWriter& wad);
 

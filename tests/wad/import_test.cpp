@@ -11,6 +11,7 @@
 #include "engine/bsp/load.h"
 #include "engine/image/image.h"
 #include "engine/render/renderer.h"
+#include "engine/sim/sim.h"
 #include "engine/util/error.h"
 #include "tests/support/support.h"
 #include "tests/support/wad_writer.h"
@@ -572,6 +573,54 @@ TEST(Import, LightMapsBecomePaletteIndicesWhenEveryShadeIsInThePalette) {
 // POSSA1, POSSA2A8, POSSA3A7, POSSA4A6, POSSA5 (the A2A8 picture shows rotation 2, and
 // mirrored rotation 8). Picture n has palette index 20n on its left half and 20n + 1
 // on its right half, so a frame tells which picture shows and whether it is mirrored.
+// Doom's animated flats and walls: a texture in one of Doom's ranges brings the
+// range's frames into the level, and the world shows them in turn, 8 tics each,
+// each frame's cycle starting at its Doom number (NUKAGE1 is flat 4 here: phase 1).
+TEST(Import, AnimatedFlatsAndWallsCycleAsDoomCyclesThem) {
+  test::TestMap m;
+  m.add_room({{0, 0}, {0, 256}, {256, 256}, {256, 0}}, {0, 128, "NUKAGE2", "CEIL", 255}, "FIREWALB");
+  m.things.push_back({128, 128, 0, 1, 7});
+  const Built b = build(m);
+  const level::Level& level = b.level;
+  ASSERT_EQ(level.animations.size(), 2u);
+  auto names = [&](const doom::TextureAnimation& a) {
+    std::string out;
+    for (int32_t f : a.frames) out += level.textures[size_t(f)].name + " ";
+    return out;
+  };
+  const bool nukage_first = level.textures[size_t(level.animations[0].frames[0])].name == "NUKAGE1";
+  const doom::TextureAnimation& fire = level.animations[nukage_first ? 1 : 0];
+  const doom::TextureAnimation& nukage = level.animations[nukage_first ? 0 : 1];
+  EXPECT_EQ(names(fire), "FIREWALA FIREWALB FIREWALL ");
+  EXPECT_EQ(fire.phase, 5 % 3) << "FIREWALA is texture 5";
+  EXPECT_EQ(names(nukage), "NUKAGE1 NUKAGE2 NUKAGE3 ");
+  EXPECT_EQ(nukage.phase, 4 % 3) << "NUKAGE1 is the fifth flat";
+  EXPECT_EQ(nukage.tics, 8);
+
+  sim::World world(level);
+  sim::Player player = world.spawn();
+  const int nukage2 = nukage.frames[1];
+  EXPECT_EQ(world.state().shown(nukage2), nukage2) << "before the first tic, every flat shows itself";
+  std::string shown;  // the flat shown for NUKAGE2 after each tic
+  for (int tic = 0; tic < 32; ++tic) {
+    world.tick(player, {});
+    if (tic % 8 == 0) shown += level.textures[size_t(world.state().shown(nukage2))].name + " ";
+  }
+  EXPECT_EQ(shown, "NUKAGE3 NUKAGE1 NUKAGE2 NUKAGE3 ");
+  EXPECT_EQ(world.state().shown(level::kSky), level::kSky);
+
+  // The frames drawn: the floor's colour changes with the flat, every renderer agreeing.
+  const render::Camera down{{128, 40}, 41, 90, 90};
+  render::Frame before(64, 40), after(64, 40), reference(64, 40);
+  render::make_renderer("bsp")->render(level, level::start_state(level), down, before);
+  for (const char* name : {"bsp", "painter"}) {
+    render::make_renderer(name)->render(level, world.state(), down, after);
+    render::make_renderer("reference")->render(level, world.state(), down, reference);
+    EXPECT_EQ(after.pixels, reference.pixels) << name;
+  }
+  EXPECT_NE(after.pixels, before.pixels) << "the nukage and the fire wall moved on";
+}
+
 TEST(Import, SpritesTurnAsDoomTurnsThem) {
   test::WadWriter w(true);
   test::add_test_art(w);
