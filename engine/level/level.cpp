@@ -8,6 +8,8 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <unordered_map>
 
 #include "engine/geom/polygon.h"
 #include "engine/util/doom.h"
@@ -90,6 +92,13 @@ void measure_sprites(Level& level) {
       f.reach = std::max({f.reach, double(std::abs(img.left)), double(std::abs(width - img.left))});
     }
   }
+  std::unordered_map<std::string, double> by_sprite;  // the largest reach of each four-letter sprite name
+  for (const SpriteFrame& f : level.sprite_frames) {
+    double& r = by_sprite[f.name.substr(0, 4)];
+    r = std::max(r, f.reach);
+  }
+  for (Thing& t : level.things)
+    t.reach = t.sprite == kNone ? 0 : by_sprite[level.sprite_frames[size_t(t.sprite)].name.substr(0, 4)];
 }
 
 // Attaches each drawn thing to the deepest node whose cell holds its sprite's disc,
@@ -102,7 +111,7 @@ void attach_things(Level& level) {
   for (size_t i = 0; i < level.things.size(); ++i) {
     const Thing& t = level.things[i];
     if (t.sprite == kNone) continue;
-    const double reach = level.sprite_frames[size_t(t.sprite)].reach;
+    const double reach = t.reach;
     int32_t c = 0;
     for (;;) {
       if (is_leaf(c)) {
@@ -132,9 +141,8 @@ void attach_things(Level& level) {
   auto disc_box = [&](const ThingRange& r, BBox& box) {
     for (uint32_t k = r.first; k < r.first + r.count; ++k) {
       const Thing& t = level.things[level.attached_things[k]];
-      const double reach = level.sprite_frames[size_t(t.sprite)].reach;
-      box.add(t.pos - Vec2(reach));
-      box.add(t.pos + Vec2(reach));
+      box.add(t.pos - Vec2(t.reach));
+      box.add(t.pos + Vec2(t.reach));
     }
   };
   for (size_t i = level.nodes.size(); i-- > 0;) {  // children come after their parent

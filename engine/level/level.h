@@ -180,8 +180,11 @@ struct Thing {
   Vec2 pos;
   double angle = 0;
   uint32_t flags = 0;  // doom::ThingFlags
-  int32_t sprite = kNone;  // its frame in Level::sprite_frames, or kNone: never drawn (player starts...)
+  int32_t sprite = kNone;  // its first frame in Level::sprite_frames, or kNone: never drawn (player starts...)
   int32_t sector = kNone;  // the sector it stands in (finalize finds it by point location when kNone)
+  // Derived on load: the farthest any frame of its sprite (Doom's four-letter name)
+  // extends sideways, whichever of them the world shows.
+  double reach = 0;
 };
 
 // The tile grid of a level compiled from a .grid map, for the grid ray caster.
@@ -277,9 +280,13 @@ struct State {
   std::vector<int32_t> specials;  // per wall: its line special, 0 once used up
   // Per texture, the one drawn in its place (animations); empty: each draws itself.
   std::vector<int32_t> shown_textures;
+  // Per thing, the sprite frame it shows now (things animate); empty: their first.
+  // A frame shown must share the first one's sprite name (Thing::reach covers those).
+  std::vector<int32_t> thing_sprites;
 
   // The texture drawn for `texture` (kNone and kSky stay as they are).
   int shown(int texture) const { return texture < 0 || shown_textures.empty() ? texture : shown_textures[size_t(texture)]; }
+  int32_t thing_sprite(uint32_t thing, int32_t first) const { return thing_sprites.empty() ? first : thing_sprites[thing]; }
 
   int texture(uint32_t wall, int side, int part) const { return textures[(size_t(wall) * 2 + size_t(side)) * 3 + size_t(part)]; }
   int& texture(uint32_t wall, int side, int part) { return textures[(size_t(wall) * 2 + size_t(side)) * 3 + size_t(part)]; }

@@ -487,10 +487,11 @@ constexpr double kSpriteNearDepth = 4;  // Doom's MINZ: nearer things are not dr
 
 void Canvas::add_sprite(uint32_t thing) {
   const level::Thing& t = level_->things[thing];
-  if (!state_->things[thing] || t.sprite == level::kNone) return;
+  const int32_t sprite = state_->thing_sprite(thing, t.sprite);
+  if (!state_->things[thing] || sprite == level::kNone) return;
   const double depth = view_->depth_of(t.pos);
   if (depth < kSpriteNearDepth) return;
-  const level::SpriteFrame& frame = level_->sprite_frames[size_t(t.sprite)];
+  const level::SpriteFrame& frame = level_->sprite_frames[size_t(sprite)];
   // Outside this canvas's columns whichever picture shows (with columns to spare for
   // rounding): a strip of the screen skips the rotation's arc tangent.
   const double scale = view_->d / depth;

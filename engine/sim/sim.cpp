@@ -81,7 +81,11 @@ Blockmap::Blockmap(const level::Level& level) {
 // ---- world -------------------------------------------------------------------
 
 World::World(const level::Level& level, int skill)
-    : level_(level), blockmap_(level), state_(level::start_state(level, skill)), movers_(level, state_) {
+    : level_(level),
+      blockmap_(level),
+      state_(level::start_state(level, skill)),
+      movers_(level, state_),
+      things_(level, state_, random_) {
   // Pieces of one LINEDEF share its special: used once, it is used up on all of them.
   std::unordered_map<int32_t, std::vector<uint32_t>> by_source;
   for (uint32_t w = 0; w < level.walls.size(); ++w) by_source[level.walls[w].source].push_back(w);
@@ -277,7 +281,8 @@ void World::tick(Player& p, const TicCommand& cmd) {
   pick_up(p);
   movers_.tick([&](int sector) { return fits_after_move(p, sector); });
   tick_buttons();
-  level::animate_textures(level_, state_, level_time_++);  // after the tic's movers, as Doom's P_UpdateSpecials
+  things_.tick(state_);                                    // Doom's thinkers, then
+  level::animate_textures(level_, state_, level_time_++);  // its P_UpdateSpecials
 }
 
 }  // namespace p3d::sim

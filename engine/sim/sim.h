@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "engine/level/level.h"
+#include "engine/play/random.h"
+#include "engine/play/things.h"
 #include "engine/sim/movers.h"
 
 namespace p3d::sim {
@@ -167,6 +169,8 @@ class World {
   Blockmap blockmap_;
   level::State state_;
   Movers movers_;
+  play::Random random_;       // Doom's play stream
+  play::ThingClocks things_;  // what the things show
   std::vector<std::vector<uint32_t>> pieces_;  // per wall: every wall of its LINEDEF (or statement)
   std::vector<int> switch_partner_;            // per texture: its switch pair, or kNone
   struct Button {

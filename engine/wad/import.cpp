@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 #include <unordered_map>
 
+#include "engine/play/info.h"
 #include "engine/util/error.h"
 #include "engine/wad/art.h"
 #include "engine/wad/nodes.h"
@@ -436,6 +438,8 @@ class Importer {
 
   // The sprite frame a thing type shows at the start, built from the WADs' sprite
   // lumps; kNone for editor-only things, unknown types and missing sprites (warned).
+  // The frames of the rest of its idle loop come along (idle_frames), for the world
+  // to show in turn.
   int sprite_for(int type, const std::string& record) {
     if (editor_only_thing(type)) return map::kNone;
     const ThingInfo* info = thing_info(type);
@@ -443,16 +447,46 @@ class Importer {
       warn("unknown thing types", record, "thing type " + std::to_string(type) + " is not Doom's (not drawn)");
       return map::kNone;
     }
-    const std::string name = std::string(info->sprite) + info->frame;
-    if (const auto it = sprite_frames_.find(name); it != sprite_frames_.end()) return it->second;
-    const int frame = build_frame(*info, name, record);
-    sprite_frames_[name] = frame;
+    const int first = sprite_frame(*info, info->sprite, info->frame, info->bright, record);
+    if (first != map::kNone)
+      for (const auto& [sprite, frame, bright] : idle_frames(type)) sprite_frame(*info, sprite, frame, bright, record);
+    return first;
+  }
+
+  // The frames a thing type shows from its first state on, following each state's
+  // next (Doom's idle loops: torches flicker, monsters breathe, pickups blink).
+  static std::vector<std::tuple<std::string, char, bool>> idle_frames(int type) {
+    std::vector<std::tuple<std::string, char, bool>> out;
+    const play::ThingType t = play::thing_type_for_editor_number(type);
+    if (t == play::ThingType::kCount) return out;
+    std::vector<bool> seen(size_t(play::StateId::kCount), false);
+    for (play::StateId s = play::thing_info(t).spawn; s != play::StateId::kNull && !seen[size_t(s)];) {
+      seen[size_t(s)] = true;
+      const play::StateInfo& info = play::state_info(s);
+      if (info.tics != 0) out.emplace_back(play::kSpriteNames[size_t(info.sprite)], char('A' + info.frame), info.bright);
+      s = info.next;
+    }
+    return out;
+  }
+
+  // A sprite frame of a thing type, built once for each way of showing it (a frame
+  // may be bright in one state and not in another; two hanging things may show the
+  // same picture at different drops).
+  int sprite_frame(const ThingInfo& info, const std::string& sprite, char frame_letter, bool bright,
+                   const std::string& record) {
+    const std::string name = sprite + frame_letter;
+    const std::string key = name + (bright ? "*" : "") + (info.hanging ? "@" + std::to_string(info.height) : "");
+    if (const auto it = sprite_frames_.find(key); it != sprite_frames_.end()) return it->second;
+    const int frame = build_frame(info, sprite, frame_letter, bright, record);
+    sprite_frames_[key] = frame;
     return frame;
   }
 
   // Doom's sprite lumps: PPPPFR, or PPPPFRFR where the second frame and rotation use
   // the same picture mirrored; rotation 0 serves every direction.
-  int build_frame(const ThingInfo& info, const std::string& name, const std::string& record) {
+  int build_frame(const ThingInfo& info, const std::string& sprite, char frame_letter, bool bright,
+                  const std::string& record) {
+    const std::string name = sprite + frame_letter;
     int lumps[map::kRotations];
     bool flips[map::kRotations] = {};
     std::fill(std::begin(lumps), std::end(lumps), -1);
@@ -468,9 +502,9 @@ class Importer {
     };
     for (size_t k = 0; k < sprite_lumps_.size(); ++k) {
       const std::string& lump = sprite_lumps_[k]->name;
-      if (lump.size() < 6 || lump.compare(0, 4, info.sprite) != 0) continue;
-      if (lump[4] == info.frame) install(lump[5], int(k), false);
-      if (lump.size() >= 8 && lump[6] == info.frame) install(lump[7], int(k), true);
+      if (lump.size() < 6 || lump.compare(0, 4, sprite) != 0) continue;
+      if (lump[4] == frame_letter) install(lump[5], int(k), false);
+      if (lump.size() >= 8 && lump[6] == frame_letter) install(lump[7], int(k), true);
     }
     const int any = *std::max_element(std::begin(lumps), std::end(lumps));
     if (any < 0) {
@@ -481,7 +515,7 @@ class Importer {
       warn("missing sprites", record, "sprite " + name + " lacks some rotations (the others stand in)");
     map::SpriteFrame frame;
     frame.name = name;
-    frame.bright = info.bright;
+    frame.bright = bright;
     frame.hanging = info.hanging;
     frame.drop = info.height;
     for (int r = 0; r < map::kRotations; ++r) {
