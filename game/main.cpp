@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
   std::vector<int> warp;
   std::string record, play, out_dir, resolution, window = "960x600", renderer = "bsp", autopilot;
   bool headless = false, fullscreen = false, no_vsync = false, map_reload = false, timedemo = false, all_keys = false;
-  bool json = false;
+  bool json = false, no_sound = false;
   int capture_every = 35;
   uint64_t quit_after = 0;
   int skill = level::kDefaultSkill;
@@ -73,6 +73,7 @@ int main(int argc, char** argv) {
   app.add_flag("--no-vsync", no_vsync, "uncapped frame rate");
   app.add_option("--renderer", renderer, "bsp, painter, dda, sphere, sphere-naive or reference")->capture_default_str();
   app.add_option("--fov", fov, "horizontal field of view")->check(cli::finite_range(30.0, 160.0))->capture_default_str();
+  app.add_flag("--nosound", no_sound, "no sound effects (headless runs are always silent)");
   app.add_flag("--map-reload", map_reload, "recompile and reload the level when its source or WAD changes on disk");
   app.add_option("--autopilot", autopilot,
                  "walk through these waypoints (a camera list; a camera named 'use' presses use there, 'wait' waits) "
@@ -141,6 +142,7 @@ int main(int argc, char** argv) {
     o.fullscreen = fullscreen;
     o.vsync = !no_vsync;
     o.map_reload = map_reload;
+    o.sound = !no_sound;
     o.record = record;
     o.play = demo;
     o.timedemo = timedemo;

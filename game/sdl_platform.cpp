@@ -10,6 +10,7 @@
 #include "engine/image/image.h"
 #include "engine/util/file.h"
 #include "game/autopilot.h"
+#include "game/sound_mixer.h"
 
 namespace p3d::game {
 
@@ -68,6 +69,7 @@ class Window {
  public:
   Window(Session& session, const WindowOptions& options) : session_(session), o_(options) {}
   ~Window() {
+    if (audio_) SDL_CloseAudioDevice(audio_);  // stops the callback before the mixer goes
     if (texture_) SDL_DestroyTexture(texture_);
     if (renderer_) SDL_DestroyRenderer(renderer_);
     if (window_) SDL_DestroyWindow(window_);
@@ -84,6 +86,7 @@ class Window {
       std::fprintf(stderr, "game: SDL found no display, only its offscreen driver; %s\n", kHeadlessHint);
       return 1;
     }
+    if (o_.sound) open_audio();
     SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "nearest");  // a fixed low resolution stays crisp
     window_ = SDL_CreateWindow(("pseudo3d: " + session_.title()).c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
                                o_.window_width, o_.window_height,
@@ -114,6 +117,7 @@ class Window {
         run_tic();
         accumulator -= kTicSeconds;
       }
+      play_sounds();
       const double t1 = now_seconds();
       session_.reload_if_saved(t1);
       const double alpha = accumulator / kTicSeconds;
@@ -146,6 +150,44 @@ class Window {
   int fail(const char* what) {
     std::fprintf(stderr, "game: %s: %s\n", what, SDL_GetError());
     return 1;
+  }
+
+  // ---- sound: the mixer on SDL's audio thread; without a device the game is silent
+  void open_audio() {
+    if (SDL_InitSubSystem(SDL_INIT_AUDIO) != 0) {
+      std::fprintf(stderr, "game: no sound (%s)\n", SDL_GetError());
+      return;
+    }
+    SDL_AudioSpec want{}, have{};
+    want.freq = 44100;
+    want.format = AUDIO_S16SYS;
+    want.channels = 2;
+    want.samples = 512;
+    want.callback = [](void* self, Uint8* bytes, int length) {
+      auto* w = static_cast<Window*>(self);
+      w->mixer_->mix(std::span<int16_t>(reinterpret_cast<int16_t*>(bytes), size_t(length) / sizeof(int16_t)));
+    };
+    want.userdata = this;
+    mixer_.emplace(want.freq, [this](play::Sound s) { return session_.sound_clip(s); });
+    audio_ = SDL_OpenAudioDevice(nullptr, 0, &want, &have, 0);
+    if (!audio_) {
+      std::fprintf(stderr, "game: no sound (%s)\n", SDL_GetError());
+      return;
+    }
+    SDL_PauseAudioDevice(audio_, 0);
+    session_.listen();
+  }
+
+  // Starts the sounds of the tics just run and moves the others with the listener.
+  void play_sounds() {
+    std::vector<Session::PlacedSound> sounds = session_.take_sounds();
+    if (!audio_) return;
+    const play::Listener listener = session_.listener();
+    for (const Session::PlacedSound& s : sounds) session_.sound_clip(s.sound);  // decoded outside the lock
+    SDL_LockAudioDevice(audio_);
+    for (const Session::PlacedSound& s : sounds) mixer_->start(s.sound, s.origin, s.at, listener);
+    mixer_->update(listener);
+    SDL_UnlockAudioDevice(audio_);
   }
 
   // Renders at the window's size unless a fixed resolution was asked for; only here
@@ -286,6 +328,8 @@ class Window {
   bool noclip_typed_ = false;
   size_t played_ = 0;
   std::optional<Autopilot> autopilot_;
+  std::optional<SoundMixer> mixer_;
+  SDL_AudioDeviceID audio_ = 0;
 };
 
 }  // namespace

@@ -17,6 +17,7 @@ struct WindowOptions {
   int window_width = 960, window_height = 600;
   int render_width = 0, render_height = 0;  // 0: render at the window's size
   bool fullscreen = false, vsync = true;
+  bool sound = true;                        // Doom's sound effects from the level's WADs
   bool map_reload = false;                  // recompile the source map when it changes on disk
   std::filesystem::path record;             // write the tics played to this demo on exit
   std::optional<sim::Demo> play;            // replay this demo, then quit

@@ -5,6 +5,7 @@
 
 #include "engine/bsp/load.h"
 #include "engine/util/doom.h"
+#include "game/sound_mixer.h"
 
 namespace p3d::game {
 
@@ -26,6 +27,7 @@ void Session::load() {
   level_ = std::make_unique<level::Level>(std::move(opened.level));
   world_ = std::make_unique<sim::World>(*level_, skill_);
   automap_view_.set_level(*level_);
+  sound_origins_ = play::sector_sound_origins(*level_);
 }
 
 std::string Session::title() const {
@@ -52,6 +54,7 @@ void Session::tic(const sim::TicCommand& cmd) {
   advance_message();
   for (const sim::Event& e : world_->events())
     if (!e.message.empty()) say(e.message);
+  if (listening_) keep_sounds();
   if (world_->exit() != sim::Exit::kNone) {
     recording_on_ = false;  // a demo holds one level: it ends at its exit
     say(world_->exit() == sim::Exit::kSecret ? "secret exit" : "exit");
@@ -139,6 +142,33 @@ void Session::draw_overlays(render::Frame& frame, const FrameTimes& times, doubl
     draw_panel(frame, frame.width / 2 - 60 * scale, frame.height / 2 - int(lines.size()) * 4 * scale, lines, scale);
   }
 }
+
+void Session::keep_sounds() {
+  constexpr uint64_t kPlayerOrigin = uint64_t(1) << 40;  // beyond every sector's number
+  for (const sim::SoundEvent& e : world_->sounds()) {
+    if (e.sector == level::kNone)
+      sounds_.push_back({e.sound, kPlayerOrigin, std::nullopt});
+    else
+      sounds_.push_back({e.sound, uint64_t(e.sector) + 1, sound_origins_[size_t(e.sector)]});
+  }
+}
+
+const play::SoundClip* Session::sound_clip(play::Sound sound) {
+  if (!source_.is_wad()) return nullptr;
+  if (const auto it = clips_.find(sound); it != clips_.end()) return it->second ? &*it->second : nullptr;
+  std::optional<play::SoundClip>& clip = clips_[sound];
+  const std::string lump_name = play::sound_lump_name(sound);
+  try {
+    if (!sound_wads_) sound_wads_ = std::make_unique<wad::Stack>(bsp::read_wads(source_.wads));
+    if (const wad::Lump* lump = sound_wads_->find(lump_name))
+      clip = play::decode_dmx(lump->bytes, source_.wads.back().filename().string() + ": " + lump_name);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "game: %s (not played)\n", e.what());
+  }
+  return clip ? &*clip : nullptr;
+}
+
+play::Listener Session::listener() const { return listener_at(player_.pos, player_.angle); }
 
 void Session::say(const std::string& text) {
   message_ = text;

@@ -6,12 +6,16 @@
 
 #include <filesystem>
 #include <memory>
+#include <map>
 #include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
 #include "engine/bsp/load.h"
 #include "engine/level/level.h"
+#include "engine/play/sound.h"
+#include "engine/wad/wad.h"
 #include "engine/render/renderer.h"
 #include "engine/sim/demo.h"
 #include "game/automap.h"
@@ -60,6 +64,25 @@ class Session {
   // The camera between the previous tic (alpha 0) and this one (alpha 1).
   render::Camera camera(double alpha) const;
 
+  // ---- sound
+  // A sound the last tics started: from a point (map units) or from the player
+  // (nullopt); origin tells sound makers apart.
+  struct PlacedSound {
+    play::Sound sound;
+    uint64_t origin;
+    std::optional<geom::Vec2> at;
+  };
+  // From now on, keep the sounds the tics start for take_sounds (the window's audio
+  // listens; headless runs do not, and keep none).
+  void listen() { listening_ = true; }
+  // The sounds started since the last call, in order.
+  std::vector<PlacedSound> take_sounds() { return std::exchange(sounds_, {}); }
+  // A sound's samples from the level's WADs; nullptr for levels without WADs, or a
+  // lump missing or broken (said once on stderr).
+  const play::SoundClip* sound_clip(play::Sound sound);
+  // Where the player hears from.
+  play::Listener listener() const;
+
   // ---- rendering
   // Switches renderer; false (with a message) if it cannot draw this level.
   bool select_renderer(const std::string& name);
@@ -91,6 +114,7 @@ class Session {
 
  private:
   void load();
+  void keep_sounds();  // the tic's, placed
 
   bsp::LevelSource source_;
   std::string name_;
@@ -107,6 +131,11 @@ class Session {
   Automap automap_view_;
   std::string message_;
   int message_tics_ = 0;
+  std::vector<PlacedSound> sounds_;
+  bool listening_ = false;
+  std::vector<geom::Vec2> sound_origins_;  // per sector
+  std::unique_ptr<wad::Stack> sound_wads_;
+  std::map<play::Sound, std::optional<play::SoundClip>> clips_;
   bool recording_on_ = false;
   sim::Demo recording_;
   std::optional<FileWatch> watch_;

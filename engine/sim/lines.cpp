@@ -86,10 +86,11 @@ void World::use_lines(Player& p) {
       if (side_of(w, p.pos) == 0) use_line(p, i);
       return;
     }
-    if (!w.two_sided()) return;
+    auto grunt = [&] { sounds_.push_back({play::Sound::kNoway}); };  // Doom's "oof" at a plain wall
+    if (!w.two_sided()) return grunt();
     const level::SectorState& f = state_.sectors[size_t(w.sides[0].sector)];
     const level::SectorState& b = state_.sectors[size_t(w.sides[1].sector)];
-    if (std::min(f.ceiling, b.ceiling) - std::max(f.floor, b.floor) <= 0) return;  // a closed door, a wall
+    if (std::min(f.ceiling, b.ceiling) - std::max(f.floor, b.floor) <= 0) return grunt();  // a closed door, a wall
   }
 }
 
@@ -129,6 +130,7 @@ bool World::unlocked(const Player& p, Lock lock, bool door) {
   if (p.keys & keys) return true;
   say(Event::Kind::kLocked,
       std::string("You need a ") + colour + " key to " + (door ? "open this door" : "activate this object"));
+  sounds_.push_back({play::Sound::kOof});
   return false;
 }
 
@@ -157,14 +159,19 @@ void World::flip_switch(uint32_t wall, bool repeat) {
     const bool pressed = std::any_of(buttons_.begin(), buttons_.end(), [&](const Button& b) { return b.wall == wall; });
     if (repeat && !pressed) buttons_.push_back({wall, part, texture, kButtonTics});
     say(Event::Kind::kSwitch);
+    const LineSpecial* s = line_special(level_.walls[wall].special);
+    const bool exit = s && (s->action == Action::kExit || s->action == Action::kSecretExit);
+    sounds_.push_back({exit ? play::Sound::kSwtchx : play::Sound::kSwtchn, level_.walls[wall].sides[0].sector});
     return;
   }
 }
 
 void World::tick_buttons() {
   for (Button& b : buttons_)
-    if (--b.tics == 0)
+    if (--b.tics == 0) {
       for (uint32_t w : pieces_[b.wall]) state_.texture(w, 0, b.part) = b.texture;
+      sounds_.push_back({play::Sound::kSwtchn, level_.walls[b.wall].sides[0].sector});
+    }
   std::erase_if(buttons_, [](const Button& b) { return b.tics == 0; });
 }
 
@@ -229,6 +236,7 @@ bool World::teleport(Player& p, uint32_t wall) {
   p.frozen = kTeleportFreeze;
   teleported_ = true;
   say(Event::Kind::kTeleport);
+  sounds_.push_back({play::Sound::kTelept});
   return true;
 }
 
@@ -244,6 +252,7 @@ void World::pick_up(Player& p) {
     const double dz = state_.sectors[size_t(t.sector)].floor - p.z;
     if (dz < -kPickupBelow || dz > kPlayerHeight) continue;
     if (!(p.keys & key->bit)) say(Event::Kind::kKey, key->message);
+    sounds_.push_back({play::Sound::kItemup});
     p.keys |= key->bit;
     state_.things[i] = 0;
   }

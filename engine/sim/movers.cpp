@@ -239,7 +239,14 @@ bool Movers::start_door(const LineSpecial& s, int sector) {
       m.direction = 1;
       break;
   }
+  door_sound(m);
   return true;
+}
+
+void Movers::door_sound(const Mover& m) {
+  using play::Sound;
+  if (m.direction == 1) sound(m.blaze ? Sound::kBdopn : Sound::kDoropn, m.sector);
+  if (m.direction == -1) sound(m.blaze ? Sound::kBdcls : Sound::kDorcls, m.sector);
 }
 
 bool Movers::start_floor(const LineSpecial& s, int sector, uint32_t wall) {
@@ -344,6 +351,8 @@ bool Movers::start_plat(const LineSpecial& s, int sector, uint32_t wall) {
     default:
       break;
   }
+  const bool changes = s.action == Action::kPlatRaiseAndChange || s.action == Action::kPlatRaiseToNearestAndChange;
+  sound(changes ? play::Sound::kStnmov : play::Sound::kPstart, sector);
   return true;
 }
 
@@ -537,14 +546,22 @@ Movers::Moved Movers::move_plane(Mover& m, Plane plane, double dest, int directi
 void Movers::tick_door(Mover& m, const FitsAfterMove& fits) {
   switch (m.direction) {
     case 0:  // open, waiting to close (or closed, waiting to reopen)
-      if (--m.count == 0) m.direction = m.action == Action::kDoorCloseWait ? 1 : m.action == Action::kDoorRaise ? -1 : 0;
+      if (--m.count == 0) {
+        m.direction = m.action == Action::kDoorCloseWait ? 1 : m.action == Action::kDoorRaise ? -1 : 0;
+        if (m.direction == 1) sound(play::Sound::kDoropn, m.sector);  // Doom reopens with the plain sound
+        if (m.direction == -1) door_sound(m);
+      }
       return;
     case 2:  // waiting to open
-      if (--m.count == 0) m.direction = 1;
+      if (--m.count == 0) {
+        m.direction = 1;
+        sound(play::Sound::kDoropn, m.sector);
+      }
       return;
     case -1: {
       const Moved r = move_plane(m, Plane::kCeiling, state_.sectors[size_t(m.sector)].floor, -1, fits);
       if (r == Moved::kArrived) {
+        if (m.blaze) sound(play::Sound::kBdcls, m.sector);  // a fast door slams shut
         if (m.action == Action::kDoorCloseWait) {
           m.direction = 0;
           m.count = kDoorCloseWait;
@@ -553,6 +570,7 @@ void Movers::tick_door(Mover& m, const FitsAfterMove& fits) {
         }
       } else if (r == Moved::kBlocked && m.action != Action::kDoorClose) {
         m.direction = 1;  // something in the way: back up
+        sound(play::Sound::kDoropn, m.sector);
       }
       return;
     }
@@ -572,8 +590,10 @@ void Movers::tick_door(Mover& m, const FitsAfterMove& fits) {
 }
 
 void Movers::tick_floor(Mover& m, const FitsAfterMove& fits) {
+  grind(m);
   const double dest = m.direction > 0 ? m.high : m.low;
   if (move_plane(m, Plane::kFloor, dest, m.direction, fits) != Moved::kArrived) return;  // blocked floors wait
+  sound(play::Sound::kPstop, m.sector);
   m.finished = true;
   level::SectorState& sec = state_.sectors[size_t(m.sector)];
   if (m.change_texture != level::kNone) sec.floor_texture = m.change_texture;
@@ -584,13 +604,16 @@ void Movers::tick_plat(Mover& m, const FitsAfterMove& fits) {
   const bool changes = m.action == Action::kPlatRaiseAndChange || m.action == Action::kPlatRaiseToNearestAndChange;
   switch (m.status) {
     case Status::kUp: {
+      if (changes) grind(m);
       const Moved r = move_plane(m, Plane::kFloor, m.high, 1, fits);
       if (r == Moved::kBlocked && !changes) {  // a lift that meets the player goes back down
         m.status = Status::kDown;
         m.count = m.wait;
+        sound(play::Sound::kPstart, m.sector);
       } else if (r == Moved::kArrived) {
         m.status = Status::kWaiting;
         m.count = m.wait;
+        sound(play::Sound::kPstop, m.sector);
         if (m.action != Action::kPlatPerpetual) m.finished = true;
       }
       return;
@@ -599,10 +622,14 @@ void Movers::tick_plat(Mover& m, const FitsAfterMove& fits) {
       if (move_plane(m, Plane::kFloor, m.low, -1, fits) == Moved::kArrived) {
         m.status = Status::kWaiting;
         m.count = m.wait;
+        sound(play::Sound::kPstop, m.sector);
       }
       return;
     case Status::kWaiting:
-      if (--m.count == 0) m.status = state_.sectors[size_t(m.sector)].floor == m.low ? Status::kUp : Status::kDown;
+      if (--m.count == 0) {
+        m.status = state_.sectors[size_t(m.sector)].floor == m.low ? Status::kUp : Status::kDown;
+        sound(play::Sound::kPstart, m.sector);
+      }
       return;
     case Status::kStopped:
       return;
@@ -611,6 +638,7 @@ void Movers::tick_plat(Mover& m, const FitsAfterMove& fits) {
 
 void Movers::tick_ceiling(Mover& m, const FitsAfterMove& fits) {
   const bool crusher = m.action == Action::kCeilingCrushAndRaise;
+  if (m.direction != 0) grind(m);
   if (m.direction == 1) {
     if (move_plane(m, Plane::kCeiling, m.high, 1, fits) == Moved::kArrived) {
       if (crusher)
@@ -701,6 +729,7 @@ void Movers::tick(const FitsAfterMove& fits) {
   }
   std::erase_if(movers_, [](const Mover& m) { return m.finished; });
   for (Light& l : lights_) tick_light(l);
+  ++time_;
 }
 
 }  // namespace p3d::sim

@@ -18,9 +18,18 @@
 #include <vector>
 
 #include "engine/level/level.h"
+#include "engine/play/info.h"
 #include "engine/sim/specials.h"
 
 namespace p3d::sim {
+
+// A sound started during a tic: from the middle of a sector (doors, lifts,
+// switches), or from the player when `sector` is kNone (pickups, a locked door).
+struct SoundEvent {
+  play::Sound sound;
+  int sector = level::kNone;
+  friend bool operator==(const SoundEvent&, const SoundEvent&) = default;
+};
 
 // Asked after a plane of `sector` moved: clip whatever stands in the sector to its new
 // heights (the player rides floors) and answer whether it all still fits.
@@ -43,6 +52,9 @@ class Movers {
   void tick(const FitsAfterMove& fits);
 
   bool busy(int sector) const { return busy_[size_t(sector)] != 0; }
+  // The sounds started since the last clear, in order (Doom's, from p_doors.c etc.).
+  const std::vector<SoundEvent>& sounds() const { return sounds_; }
+  void clear_sounds() { sounds_.clear(); }
   size_t active() const { return movers_.size(); }
 
   // Neighbour queries (Doom's P_Find*Surrounding), over the sectors across the
@@ -91,6 +103,7 @@ class Movers {
 
   Mover& add(Kind kind, Action action, int sector, double speed);
   bool start_door(const LineSpecial& s, int sector);
+  void door_sound(const Mover& m);  // as it starts opening or closing
   bool start_floor(const LineSpecial& s, int sector, uint32_t wall);
   bool start_plat(const LineSpecial& s, int sector, uint32_t wall);
   bool start_ceiling(const LineSpecial& s, int sector);
@@ -102,6 +115,11 @@ class Movers {
 
   int other_side(uint32_t wall, int sector) const;
   int next_random();  // 0..255
+  void sound(play::Sound s, int sector) { sounds_.push_back({s, sector}); }
+  // Doom's grinding planes: a sound every 8 tics of level time while they move.
+  void grind(const Mover& m) {
+    if (time_ % 8 == 0) sound(play::Sound::kStnmov, m.sector);
+  }
 
   const level::Level& level_;
   level::State& state_;
@@ -112,6 +130,8 @@ class Movers {
   std::unordered_map<int, std::vector<int>> tagged_;  // sectors by tag, in sector order
   const std::vector<int>& tagged(int tag) const;
   uint32_t random_ = 0x2545F491;
+  std::vector<SoundEvent> sounds_;
+  uint64_t time_ = 0;  // tics run (Doom's leveltime)
 };
 
 }  // namespace p3d::sim

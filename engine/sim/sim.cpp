@@ -225,7 +225,10 @@ void World::fall(Player& p) {
     p.momz -= kGravity;
     p.z += p.momz;
     if (p.z <= h.floor) {
-      if (p.momz < -8) p.view_offset += p.momz / 4;  // a hard landing squats
+      if (p.momz < -8) {  // a hard landing squats, with a grunt
+        p.view_offset += p.momz / 4;
+        sounds_.push_back({play::Sound::kOof});
+      }
       p.z = h.floor;
       p.momz = 0;
     }
@@ -253,6 +256,8 @@ bool World::fits_after_move(Player& p, int sector) {
 // (crossing lines), falls; then every mover and light; then switches flip back.
 void World::tick(Player& p, const TicCommand& cmd) {
   events_.clear();
+  sounds_.clear();
+  movers_.clear_sounds();
   if (cmd.buttons & kNoclip) {
     p.noclip = !p.noclip;
     say(Event::Kind::kCheat, p.noclip ? "No Clipping Mode ON" : "No Clipping Mode OFF");
@@ -281,6 +286,7 @@ void World::tick(Player& p, const TicCommand& cmd) {
   pick_up(p);
   movers_.tick([&](int sector) { return fits_after_move(p, sector); });
   tick_buttons();
+  sounds_.insert(sounds_.end(), movers_.sounds().begin(), movers_.sounds().end());
   things_.tick(state_);                                    // Doom's thinkers, then
   level::animate_textures(level_, state_, level_time_++);  // its P_UpdateSpecials
 }

@@ -117,6 +117,8 @@ class World {
   // Advances the player and the level by one tic; events() tells what happened.
   void tick(Player& player, const TicCommand& cmd);
   const std::vector<Event>& events() const { return events_; }
+  // The sounds the tic started, in order.
+  const std::vector<SoundEvent>& sounds() const { return sounds_; }
   // Set once the player takes an exit; the level keeps running.
   Exit exit() const { return exit_; }
   int secrets_found() const { return secrets_found_; }
@@ -179,6 +181,7 @@ class World {
   };
   std::vector<Button> buttons_;  // repeatable switches flipping back
   std::vector<Event> events_;
+  std::vector<SoundEvent> sounds_;
   Exit exit_ = Exit::kNone;
   bool teleported_ = false;  // during a move
   double player_floor_ = 0;  // the floor the player last stood on or over (Doom's floorz)

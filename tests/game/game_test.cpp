@@ -11,6 +11,7 @@
 #include "game/hud.h"
 #include "game/input.h"
 #include "game/session.h"
+#include "game/sound_mixer.h"
 #include "tests/support/support.h"
 #include "tests/support/wad_writer.h"
 
@@ -290,6 +291,71 @@ TEST(Session, MapReloadFollowsAPwadRenamedOver) {
   EXPECT_TRUE(settle());
   EXPECT_EQ(s.level().sectors[0].light, 50);
   EXPECT_EQ(s.player().pos, geom::Vec2(32, 32)) << "moved to the start";
+  std::filesystem::remove_all(dir);
+}
+
+// The mixer: Doom's panning and distance, resampling, and channels freed when a
+// sound ends or goes out of hearing.
+TEST(SoundMixer, PlacesResamplesAndFrees) {
+  play::SoundClip clip{11025, std::vector<uint8_t>(100, 255)};
+  SoundMixer mixer(44100, [&](play::Sound) { return &clip; });
+  const play::Listener east = listener_at({0, 0}, 0);
+  ASSERT_TRUE(mixer.start(play::Sound::kItemup, 1, std::nullopt, east));  // the player's own: centred
+  std::vector<int16_t> out(16);
+  mixer.mix(out);
+  EXPECT_GT(out[0], 0);
+  EXPECT_NEAR(out[0], out[1], out[0] / 50) << "centred: both ears nearly alike (Doom's pan is 126 to 128)";
+  for (size_t i = 2; i < out.size(); ++i) EXPECT_EQ(out[i], out[i % 2]) << "four output samples for each 11025 Hz one";
+
+  ASSERT_TRUE(mixer.start(play::Sound::kDoropn, 2, geom::Vec2{0, 600}, east));  // to the left
+  std::vector<int16_t> both(2);
+  mixer.mix(both);
+  EXPECT_GT(both[0] - out[0], both[1] - out[1]) << "the left ear hears the door more";
+  EXPECT_FALSE(mixer.start(play::Sound::kDoropn, 3, geom::Vec2{5000, 0}, east)) << "too far to hear";
+  EXPECT_EQ(mixer.playing(), 2);
+  mixer.update(listener_at({5000, 5000}, 0));  // walked away from the door
+  EXPECT_EQ(mixer.playing(), 1);
+  std::vector<int16_t> rest(400 * 2);
+  mixer.mix(rest);  // the clip's 100 samples end within 400 output samples
+  mixer.update(east);
+  EXPECT_EQ(mixer.playing(), 0);
+  EXPECT_EQ(rest.back(), 0);
+}
+
+// A session on a WAD level places its sounds: a door's from the middle of the door
+// sector, and reads them from the WAD's lumps (a level without WADs is silent).
+TEST(Session, SoundsComeFromTheirSectorsAndTheWadsLumps) {
+  const auto dir = test::temp_dir("sounds");
+  test::WadWriter wad(true);
+  test::add_test_art(wad);
+  std::vector<uint8_t> lump = {3, 0, 0x11, 0x2b, 100, 0, 0, 0};
+  lump.resize(108, 200);
+  wad.lump("DSDOROPN", lump);
+  test::TestMap m;
+  m.add_room({{0, 0}, {0, 256}, {256, 256}, {256, 160}, {256, 96}, {256, 0}}, {0, 128});
+  m.add_room({{256, 96}, {256, 160}, {288, 160}, {288, 96}}, {0, 0});
+  m.line_at({256, 160}, {256, 96}).special = 1;
+  m.things.push_back({230, 128, 0, 1});
+  m.add_to(wad, "MAP01");
+  write_file_atomically(dir / "doom.wad", wad.bytes());
+  const bsp::LevelSource source{{}, {dir / "doom.wad"}, "MAP01"};
+  Session deaf(source);
+  deaf.tic({0, 0, 0, sim::kUse});
+  EXPECT_EQ(deaf.state().sectors[1].ceiling, 2) << "the door opens";
+  EXPECT_TRUE(deaf.take_sounds().empty()) << "but nobody listens";
+  Session s(source);
+  s.listen();
+  s.tic({0, 0, 0, sim::kUse});
+  const std::vector<Session::PlacedSound> sounds = s.take_sounds();
+  ASSERT_EQ(sounds.size(), 1u);
+  EXPECT_EQ(sounds[0].sound, play::Sound::kDoropn);
+  ASSERT_TRUE(sounds[0].at);
+  EXPECT_EQ(*sounds[0].at, geom::Vec2(272, 128)) << "the middle of the door sector";
+  const play::SoundClip* clip = s.sound_clip(play::Sound::kDoropn);
+  ASSERT_NE(clip, nullptr);
+  EXPECT_EQ(clip->rate, 11025);
+  EXPECT_EQ(s.sound_clip(play::Sound::kPistol), nullptr) << "not in the WAD";
+  EXPECT_EQ(Session(test::source_dir() / "maps/outpost.map").sound_clip(play::Sound::kDoropn), nullptr);
   std::filesystem::remove_all(dir);
 }
 

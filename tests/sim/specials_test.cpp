@@ -32,6 +32,7 @@ struct Play {
     for (int t = 0; t < n; ++t) {
       world.tick(player, cmd);
       for (const Event& e : world.events()) events.push_back(e);
+      for (const SoundEvent& e : world.sounds()) sounds.push_back({tics, e});
       ++tics;
       if (on_tic) on_tic();
     }
@@ -52,6 +53,7 @@ struct Play {
   World world;
   Player player;
   std::vector<Event> events;
+  std::vector<std::pair<int, SoundEvent>> sounds;  // tic, sound
   int tics = 0;
 };
 
@@ -88,6 +90,34 @@ TEST(Doors, UsedDoorOpensWaitsAndCloses) {
   EXPECT_EQ(highest, 124);
   EXPECT_EQ(play.sector(kDoor).ceiling, 0);
   EXPECT_FALSE(play.world.movers().busy(kDoor)) << "a closed door's mover is done";
+}
+
+// The sounds Doom starts: the door's own from the door sector as it opens and as it
+// closes, a grunt at a plain wall, a grunt and no door at a lock.
+TEST(Doors, SoundWhereAndWhenDoomSoundsThem) {
+  using play::Sound;
+  Play play(door_map(1));
+  play.run(60, kWalk);
+  play.run(1, kUseCmd);
+  play.run(20, kBack);  // out of the door's way
+  play.run(280, kStand);
+  ASSERT_EQ(play.sounds.size(), 2u);
+  EXPECT_EQ(play.sounds[0].second, (SoundEvent{Sound::kDoropn, kDoor}));
+  EXPECT_EQ(play.sounds[0].first, 60) << "on the tic it was used";
+  EXPECT_EQ(play.sounds[1].second, (SoundEvent{Sound::kDorcls, kDoor}));
+  EXPECT_EQ(play.sounds[1].first, 60 + 62 + 150) << "after opening 62 tics and waiting 150";
+
+  Play wall(door_map(0));
+  wall.run(60, kWalk);
+  wall.run(1, kUseCmd);
+  ASSERT_EQ(wall.sounds.size(), 1u);
+  EXPECT_EQ(wall.sounds[0].second, SoundEvent{Sound::kNoway}) << "the player's own grunt";
+
+  Play locked(door_map(26, {160, 128}));
+  locked.run(20, kWalk);
+  locked.run(1, kUseCmd);
+  ASSERT_EQ(locked.sounds.size(), 1u);
+  EXPECT_EQ(locked.sounds[0].second, SoundEvent{Sound::kOof});
 }
 
 TEST(Doors, AClosingDoorGoesBackUpAtThePlayer) {
@@ -190,6 +220,14 @@ TEST(Lifts, RiddenDownAndUp) {
   EXPECT_EQ(play.player.z, 128);
   EXPECT_GT(play.player.pos.x, 336) << "and walked off it into the upper room";
   EXPECT_EQ(play.sector(1).floor, 128);
+  // Doom's lift: a start as it goes down, a stop at the bottom, a start up, a stop at the top.
+  std::vector<play::Sound> heard;
+  for (const auto& [tic, e] : play.sounds) {
+    EXPECT_EQ(e.sector, 1);
+    heard.push_back(e.sound);
+  }
+  EXPECT_EQ(heard, (std::vector<play::Sound>{play::Sound::kPstart, play::Sound::kPstop, play::Sound::kPstart,
+                                             play::Sound::kPstop}));
 }
 
 // Rooms A1 (0..128) and A2 (128..256) split by a teleporter line facing A1; room C
