@@ -280,6 +280,9 @@ struct State {
   std::vector<int32_t> specials;  // per wall: its line special, 0 once used up
   // Per texture, the one drawn in its place (animations); empty: each draws itself.
   std::vector<int32_t> shown_textures;
+  // Per wall, how far its front side's texture has scrolled left (Doom's special 48,
+  // one unit a tic); empty: no wall scrolls.
+  std::vector<double> scrolled;
   // Per thing, the sprite frame it shows now (things animate); empty: their first.
   // A frame shown must share the first one's sprite name (Thing::reach covers those).
   std::vector<int32_t> thing_sprites;
@@ -287,6 +290,7 @@ struct State {
   // The texture drawn for `texture` (kNone and kSky stay as they are).
   int shown(int texture) const { return texture < 0 || shown_textures.empty() ? texture : shown_textures[size_t(texture)]; }
   int32_t thing_sprite(uint32_t thing, int32_t first) const { return thing_sprites.empty() ? first : thing_sprites[thing]; }
+  double scroll(uint32_t wall, int side) const { return side != 0 || scrolled.empty() ? 0 : scrolled[wall]; }
 
   int texture(uint32_t wall, int side, int part) const { return textures[(size_t(wall) * 2 + size_t(side)) * 3 + size_t(part)]; }
   int& texture(uint32_t wall, int side, int part) { return textures[(size_t(wall) * 2 + size_t(side)) * 3 + size_t(part)]; }

@@ -369,7 +369,8 @@ void Canvas::near_plane(int x, int y0, int y1, int sector, bool ceiling) {
 double Canvas::texture_u(const WallHit& hit, int part) const {
   const level::Wall& w = level_->walls[hit.wall];
   const level::Side& side = w.sides[hit.side];
-  return (hit.side == 0 ? hit.t : 1 - hit.t) * w.length + side.x_offset + level_->part_x(side, part);
+  return (hit.side == 0 ? hit.t : 1 - hit.t) * w.length + side.x_offset + level_->part_x(side, part) +
+         state_->scroll(hit.wall, hit.side);
 }
 
 // Texture row v at screen row y is v0 + y * step, v0 = anchor - eye + offsets at row

@@ -98,6 +98,16 @@ World::World(const level::Level& level, int skill)
     if (const auto it = by_name.find(doom::switch_partner(level.textures[t].name)); it != by_name.end())
       switch_partner_[t] = it->second;
   for (const level::SectorState& s : state_.sectors) secrets_total_ += s.special == doom::kSecretSector;
+  for (uint32_t w = 0; w < level.walls.size(); ++w)
+    if (level.walls[w].special == doom::kScrollLeft) scrolling_.push_back(w);
+  if (!scrolling_.empty()) state_.scrolled.assign(level.walls.size(), 0);
+}
+
+// Doom's special 48: the front side's texture moves left a unit each tic. Kept
+// below 65536 units, a multiple of every power-of-two texture width (Doom's walls
+// wrap at such widths), so the offset never grows without bound.
+void World::scroll_walls() {
+  for (uint32_t w : scrolling_) state_.scrolled[w] = std::fmod(state_.scrolled[w] + 1, 65536.0);
 }
 
 Player World::spawn() const { return spawn_at(level_.player_start, level_.player_angle); }
@@ -289,6 +299,7 @@ void World::tick(Player& p, const TicCommand& cmd) {
   sounds_.insert(sounds_.end(), movers_.sounds().begin(), movers_.sounds().end());
   things_.tick(state_);                                    // Doom's thinkers, then
   level::animate_textures(level_, state_, level_time_++);  // its P_UpdateSpecials
+  scroll_walls();
 }
 
 }  // namespace p3d::sim

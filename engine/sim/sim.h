@@ -187,6 +187,8 @@ class World {
   double player_floor_ = 0;  // the floor the player last stood on or over (Doom's floorz)
   int secrets_found_ = 0, secrets_total_ = 0;
   uint64_t level_time_ = 0;  // tics played (Doom's leveltime)
+  std::vector<uint32_t> scrolling_;  // walls of Doom's special 48
+  void scroll_walls();
 };
 
 }  // namespace p3d::sim

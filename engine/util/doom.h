@@ -32,6 +32,11 @@ enum ThingType : int {
   kBlueSkullThing = 40,
 };
 
+// Line specials the world acts on every tic.
+enum LineSpecialNumber : int {
+  kScrollLeft = 48,  // the front side's texture scrolls left
+};
+
 // Sector specials (SECTORS' special field) that the simulation acts on.
 enum SectorSpecial : int {
   kLightFlicker = 1,

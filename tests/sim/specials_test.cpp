@@ -7,6 +7,7 @@
 #include <functional>
 #include <set>
 
+#include "engine/render/renderer.h"
 #include "engine/sim/demo.h"
 #include "tests/support/support.h"
 #include "tests/support/wad_writer.h"
@@ -406,6 +407,30 @@ TEST(Cheats, NoclipWalksThroughWallsAndBack) {
   EXPECT_GT(play.player.pos.x, 300) << "through the shut door";
   play.run(1, {0, 0, 0, kNoclip});
   EXPECT_FALSE(play.player.noclip);
+}
+
+// Doom's special 48: the line's front texture scrolls left a unit a tic, and every
+// renderer draws it where the reference does.
+TEST(Scrolling, SpecialFortyEightScrollsTheFrontTexture) {
+  TestMap m;
+  m.add_room(rect(0, 0, 256, 256), {0, 128}, "SKY1");  // a texture whose columns differ
+  m.line_at({256, 256}, {256, 0}).special = 48;
+  m.things.push_back({128, 128, 0, 1});
+  Play play(m);
+  const uint32_t wall = play.wall_of(line_index(m, {256, 256}, {256, 0}));
+  const render::Camera c{{128, 128}, 41, 0, 90};
+  render::Frame before(64, 40), after(64, 40), reference(64, 40);
+  render::make_renderer("bsp")->render(play.level, play.world.state(), c, before);
+  play.run(10, kStand);
+  EXPECT_EQ(play.world.state().scroll(wall, 0), 10);
+  EXPECT_EQ(play.world.state().scroll(wall, 1), 0) << "only the front side";
+  EXPECT_EQ(play.world.state().scroll(play.wall_of(line_index(m, {0, 0}, {0, 256})), 0), 0);
+  for (const char* name : {"bsp", "painter"}) {
+    render::make_renderer(name)->render(play.level, play.world.state(), c, after);
+    render::make_renderer("reference")->render(play.level, play.world.state(), c, reference);
+    EXPECT_EQ(after.pixels, reference.pixels) << name;
+  }
+  EXPECT_NE(after.pixels, before.pixels);
 }
 
 TEST(Lights, SectorSpecialsFlickerDeterministically) {
