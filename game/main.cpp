@@ -1,8 +1,10 @@
 // game: walk a level in a window, record and replay demos, or replay a demo
 // headless into PNG frames and a stats CSV.
+#include <cctype>
 #include <cstdio>
 
 #include "engine/bsp/load.h"
+#include "engine/play/doom_demo.h"
 #include "engine/render/camera_file.h"
 #include "engine/util/file.h"
 #include "game/autopilot.h"
@@ -27,11 +29,43 @@ size_t autopilot_headless(game::Session& session, const std::vector<game::Waypoi
   return session.recording().tics.size();
 }
 
+// Whether the WADs hold Doom II's maps (MAPxx) rather than Doom's (ExMy).
+bool has_doom2_maps(const bsp::LevelSource& source) {
+  const auto names = bsp::read_wads(source.wads).map_names();
+  return std::any_of(names.begin(), names.end(), [](const std::string& n) { return n.rfind("MAP", 0) == 0; });
+}
+
+// A demo's bytes: a file, or else a WAD's DEMOn lump by that name.
+struct DemoBytes {
+  std::vector<uint8_t> bytes;
+  std::string what;  // for messages
+};
+DemoBytes demo_bytes(const std::string& name, const bsp::LevelSource& source) {
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(name, ec)) return {read_file_bytes(name), name};
+  const std::string lump = wad::normalize_name(name);
+  const bool lump_name = lump.size() == 5 && lump.compare(0, 4, "DEMO") == 0 && std::isdigit(static_cast<unsigned char>(lump[4]));
+  if (!source.is_wad() || !lump_name)
+    throw CLI::ValidationError("--play", name + ": no such file" + std::string(source.is_wad() ? " or DEMOn lump" : ""));
+  const wad::Stack wads = bsp::read_wads(source.wads);
+  const wad::Lump* found = wads.find(lump);
+  if (!found) throw CLI::ValidationError("--play", name + ": no such file, and the WADs have no lump " + lump);
+  return {{found->bytes.begin(), found->bytes.end()}, source.wads.back().filename().string() + ":" + lump};
+}
+
+// What a Doom demo asks for that the simulation does not do yet, said once.
+void say_what_is_not_played(const play::DoomDemo& d, const std::string& what) {
+  std::string missing;
+  for (const auto& [on, name] : {std::pair{d.deathmatch, "deathmatch"}, {d.respawn, "-respawn"}, {d.fast, "-fast"},
+                                 {d.no_monsters, "-nomonsters"}, {d.player_count() > 1, "other players"}})
+    if (on) missing += std::string(missing.empty() ? "" : ", ") + name;
+  if (!missing.empty()) std::fprintf(stderr, "game: %s: not simulated yet: %s\n", what.c_str(), missing.c_str());
+  if (d.truncated) std::fprintf(stderr, "game: %s: ends without Doom's end marker (played as far as it goes)\n", what.c_str());
+}
+
 // Doom's -warp: "MAP" on a Doom II IWAD (MAPxx maps), "EPISODE [MAP]" on Doom's (ExMy).
 std::string warp_map(const bsp::LevelSource& source, const std::vector<int>& warp) {
-  const wad::Stack wads = bsp::read_wads(source.wads);
-  const auto names = wads.map_names();
-  const bool doom2 = std::any_of(names.begin(), names.end(), [](const std::string& n) { return n.rfind("MAP", 0) == 0; });
+  const bool doom2 = has_doom2_maps(source);
   char name[16];
   if (doom2)
     std::snprintf(name, sizeof name, "MAP%02d", warp[0]);
@@ -57,8 +91,9 @@ int main(int argc, char** argv) {
   app.add_option("--warp", warp, "start on a WAD map as Doom's -warp: MAP (Doom II) or EPISODE [MAP]")
       ->expected(1, 2)
       ->check(CLI::Range(0, 99));
-  app.add_option("--record", record, "record every tic's input to this demo file");
-  app.add_option("--play", play, "replay this demo, then quit")->check(CLI::ExistingFile);
+  app.add_option("--record", record, "record every tic's input to this demo file (x.lmp: as a Doom v1.9 demo)");
+  app.add_option("--play", play,
+                 "replay this demo, then quit: our .demo, a Doom .lmp, or a WAD's DEMO1..DEMO4 lump (--play demo1)");
   app.add_flag("--timedemo", timedemo, "with --play: one tic per frame as fast as possible, then report the fps");
   app.add_flag("--headless", headless, "no window: with --play, write frames and stats; with --autopilot, record");
   app.add_option("--capture-every", capture_every, "--headless: tics between captured frames")
@@ -66,7 +101,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--out", out_dir, "--headless: directory for the frames and stats.csv");
   app.add_flag("--json", json, "--headless --play: also stats.json, the same statistics by name");
-  app.add_option("--resolution", resolution, "render at this fixed WxH (320x200 for the old look); "
+  app.add_option("--resolution,--size", resolution, "render at this fixed WxH (320x200 for the old look); "
                  "default: the window's size (640x400 headless)");
   app.add_option("--window", window, "window size WxH")->capture_default_str();
   app.add_flag("--fullscreen", fullscreen, "start fullscreen (F11 toggles)");
@@ -108,11 +143,22 @@ int main(int argc, char** argv) {
     cli::parse_size(window, ww, wh, "--window");
 
     std::optional<sim::Demo> demo;
+    std::optional<play::DoomDemo> doom_demo;
     if (!play.empty()) {
-      demo = sim::decode_demo(read_file_bytes(play), play);
-      skill = demo->skill;  // the demo's things, as recorded
+      const DemoBytes bytes = demo_bytes(play, source);
+      if (sim::is_our_demo(bytes.bytes)) {
+        demo = sim::decode_demo(bytes.bytes, bytes.what);
+        skill = demo->skill;  // the demo's things, as recorded
+      } else {
+        doom_demo = play::decode_doom_demo(bytes.bytes, bytes.what);
+        if (!source.is_wad()) throw Error(bytes.what + ": a Doom demo plays a WAD's map: name the IWAD with --iwad");
+        if (level_args.map.empty() && warp.empty()) source.map = doom_demo->map_name(has_doom2_maps(source));
+        skill = doom_demo->skill;
+        say_what_is_not_played(*doom_demo, bytes.what);
+      }
     }
     game::Session session(source, skill);
+    if (doom_demo) demo = sim::demo_from_doom(*doom_demo, session.level());
     session.fov = fov;
     session.renderer_options = renderer_options;
     session.give_all_keys(all_keys);
@@ -129,9 +175,9 @@ int main(int argc, char** argv) {
                     demo->tics.size(), game::exit_name(r.exit), r.frames, out_dir.c_str());
         return 0;
       }
-      session.start_recording();
+      session.start_recording(std::filesystem::path(record).extension() == ".lmp");
       const size_t tics = autopilot_headless(session, route(autopilot), quit_after);
-      if (!record.empty()) write_file_atomically(record, sim::encode_demo(session.recording()));
+      if (!record.empty()) write_file_atomically(record, session.encode_recording(record));
       std::printf("autopilot walked %zu tics (exit: %s)%s\n", tics, game::exit_name(session.exited()),
                   record.empty() ? "" : (", recorded to " + record).c_str());
       return 0;

@@ -99,7 +99,7 @@ class Window {
     SDL_SetRelativeMouseMode(SDL_TRUE);
     if (o_.autopilot) autopilot_.emplace(*o_.autopilot);
     if (o_.play) session_.spawn(o_.play->start, o_.play->angle);
-    if (!o_.record.empty()) session_.start_recording();
+    if (!o_.record.empty()) session_.start_recording(o_.record.extension() == ".lmp");
     if (o_.map_reload) session_.watch_files();
 
     double last = now_seconds(), accumulator = 0;
@@ -140,7 +140,7 @@ class Window {
       std::printf("%llu tics, %llu frames in %.2f s: %.1f fps\n", (unsigned long long)session_.tics(),
                   (unsigned long long)frames, now_seconds() - start, frames / std::max(1e-9, now_seconds() - start));
     if (!o_.record.empty()) {
-      write_file_atomically(o_.record, sim::encode_demo(session_.recording()));
+      write_file_atomically(o_.record, session_.encode_recording(o_.record));
       std::printf("recorded %zu tics to %s\n", session_.recording().tics.size(), o_.record.c_str());
     }
     return 0;

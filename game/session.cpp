@@ -5,6 +5,7 @@
 
 #include "engine/bsp/load.h"
 #include "engine/util/doom.h"
+#include "engine/util/error.h"
 #include "game/sound_mixer.h"
 
 namespace p3d::game {
@@ -48,9 +49,11 @@ void Session::spawn(geom::Vec2 pos, double angle) {
 void Session::tic(const sim::TicCommand& cmd) {
   if (world_->exit() != sim::Exit::kNone) return;  // the level is over: waiting for the next one
   previous_ = player_;
-  world_->tick(player_, cmd);
+  sim::TicCommand played = cmd;
+  if (recording_on_ && doom_turns_) played.turn = sim::doom_demo_turn(cmd.turn);
+  world_->tick(player_, played);
   ++tics_;
-  if (recording_on_) recording_.tics.push_back(cmd);
+  if (recording_on_) recording_.tics.push_back(played);
   advance_message();
   for (const sim::Event& e : world_->events())
     if (!e.message.empty()) say(e.message);
@@ -179,8 +182,20 @@ void Session::advance_message() {
   if (message_tics_ > 0) --message_tics_;
 }
 
-void Session::start_recording() {
+std::vector<uint8_t> Session::encode_recording(const std::filesystem::path& path) const {
+  if (path.extension() != ".lmp") return sim::encode_demo(recording_);
+  const std::string map = source_.is_wad() ? bsp::resolve_map_name(bsp::read_wads(source_.wads), source_.map) : "";
+  int episode = 0, number = 0;
+  if (std::sscanf(map.c_str(), "MAP%d", &number) == 1)
+    episode = 1;
+  else if (std::sscanf(map.c_str(), "E%dM%d", &episode, &number) != 2)
+    throw Error(path.string() + ": a Doom demo (.lmp) records a WAD's MAPxx or ExMy map, not " + name_);
+  return play::encode_doom_demo(sim::doom_from_demo(recording_, episode, number));
+}
+
+void Session::start_recording(bool doom_turns) {
   recording_on_ = true;
+  doom_turns_ = doom_turns;
   recording_ = {sim::fingerprint(*level_), player_.pos, player_.angle, skill_, player_.keys, {}};
 }
 

@@ -100,8 +100,13 @@ class Session {
   void advance_message();             // once per tic
 
   // ---- demos and reloading
-  void start_recording();
+  // Records every tic from now. With doom_turns, turns are rounded as a Doom demo
+  // keeps them, before they are played, so a Doom demo of the recording replays it.
+  void start_recording(bool doom_turns = false);
   const sim::Demo& recording() const { return recording_; }
+  // The recording in the format the file's name asks for: Doom v1.9 for .lmp (of a
+  // WAD map), ours otherwise. Throws Error for a .lmp of a level that is no Doom map.
+  std::vector<uint8_t> encode_recording(const std::filesystem::path& path) const;
   // Recompiles the map from disk, keeping the player where it stands if that point
   // is still inside the level (else at the new start). False (and a message, the
   // old level kept) if the new map does not compile. Both outcomes are also said on
@@ -136,7 +141,7 @@ class Session {
   std::vector<geom::Vec2> sound_origins_;  // per sector
   std::unique_ptr<wad::Stack> sound_wads_;
   std::map<play::Sound, std::optional<play::SoundClip>> clips_;
-  bool recording_on_ = false;
+  bool recording_on_ = false, doom_turns_ = false;
   sim::Demo recording_;
   std::optional<FileWatch> watch_;
 };

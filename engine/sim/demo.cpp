@@ -87,4 +87,34 @@ Demo decode_demo(std::span<const uint8_t> bytes, const std::string& what) {
   return d;
 }
 
+bool is_our_demo(std::span<const uint8_t> bytes) {
+  return bytes.size() >= 8 && std::memcmp(bytes.data(), kDemoMagic, 8) == 0;
+}
+
+Demo demo_from_doom(const play::DoomDemo& doom, const level::Level& level) {
+  Demo d;
+  d.level_fingerprint = fingerprint(level);
+  d.start = level.player_start;
+  d.angle = level.player_angle;
+  d.skill = doom.skill;
+  d.tics.reserve(doom.tic_count());
+  for (size_t t = 0; t < doom.tic_count(); ++t) {
+    const play::DoomTic c = doom.console_tic(t);
+    TicCommand cmd{c.forward, c.side, int16_t(c.turn * 256), 0};
+    if (!(c.buttons & play::kButtonSpecial) && (c.buttons & play::kButtonUse)) cmd.buttons = kUse;
+    d.tics.push_back(cmd);
+  }
+  return d;
+}
+
+play::DoomDemo doom_from_demo(const Demo& demo, int episode, int map) {
+  play::DoomDemo d;
+  d.skill = demo.skill;
+  d.episode = episode;
+  d.map = map;
+  for (const TicCommand& t : demo.tics)
+    d.commands.push_back({t.forward, t.side, int8_t(doom_demo_turn(t.turn) >> 8), uint8_t(t.buttons & kUse ? play::kButtonUse : 0)});
+  return d;
+}
+
 }  // namespace p3d::sim

@@ -359,6 +359,36 @@ TEST(Session, SoundsComeFromTheirSectorsAndTheWadsLumps) {
   std::filesystem::remove_all(dir);
 }
 
+// --record x.lmp: a Doom v1.9 demo of the walk, its turns rounded as Doom keeps them
+// before they are played, so replaying the Doom demo walks the same path.
+TEST(Session, ADoomDemoRecordingReplaysTheSameWalk) {
+  const auto dir = test::temp_dir("lmp");
+  test::WadWriter wad(true);
+  test::add_test_art(wad);
+  test::TestMap m;
+  m.add_room({{0, 0}, {0, 1024}, {1024, 1024}, {1024, 0}}, {0, 128});
+  m.things.push_back({100, 100, 0, 1});
+  m.add_to(wad, "MAP07");
+  write_file_atomically(dir / "doom.wad", wad.bytes());
+  const bsp::LevelSource source{{}, {dir / "doom.wad"}, "MAP07"};
+  Session recorder(source);
+  recorder.start_recording(true);
+  for (int t = 0; t < 120; ++t) recorder.tic({50, int8_t(t % 7 - 3), int16_t(300 + 37 * (t % 5)), 0});
+  const std::vector<uint8_t> bytes = recorder.encode_recording(dir / "walk.lmp");
+  const play::DoomDemo doom = play::decode_doom_demo(bytes, "walk.lmp");
+  EXPECT_EQ(doom.map_name(true), "MAP07");
+  EXPECT_EQ(doom.tic_count(), 120u);
+  Session player(source);
+  const sim::Demo demo = sim::demo_from_doom(doom, player.level());
+  for (const sim::TicCommand& t : demo.tics) player.tic(t);
+  EXPECT_EQ(player.player().pos, recorder.player().pos);
+  EXPECT_EQ(player.player().angle, recorder.player().angle);
+  EXPECT_NE(recorder.player().pos, geom::Vec2(100, 100));
+  EXPECT_THROW(Session(test::source_dir() / "maps/outpost.map").encode_recording(dir / "x.lmp"), Error)
+      << "a hand-made level is no Doom map";
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Headless, ReplayIsByteForByteReproducible) {
   const auto dir = test::temp_dir("headless");
   Session recorder(test::source_dir() / "maps/outpost.map");

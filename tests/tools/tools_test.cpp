@@ -299,6 +299,21 @@ TEST_F(Tools, HeadlessReplayWritesTheSameFramesEveryTime) {
   EXPECT_EQ(run_in_source(std::string(P3D_GAME) + " maps/outpost.map --headless", o), 2);
   EXPECT_FALSE(std::filesystem::exists(out("c")));
 }
+
+// Doom's own demos: a WAD's DEMOn lump picks its map and skill and plays headless.
+TEST_F(Tools, HeadlessPlaysAWadsDemoLump) {
+  const std::string game = std::string(P3D_GAME) + " --iwad " + test::freedoom_path("freedoom2.wad").string();
+  std::string o;
+  ASSERT_EQ(run_in_source(game + " --play demo1 --headless --size 160x100 --capture-every 700 --out " + out("d"), o), 0)
+      << o;
+  EXPECT_NE(o.find("replayed 1415 of 1415 tics"), std::string::npos) << o;
+  EXPECT_TRUE(std::filesystem::exists(out("d") + "/frame00002.png"));
+  EXPECT_EQ(run_in_source(game + " --play demo9 --headless --out " + out("e"), o), 2);
+  EXPECT_NE(o.find("demo9: no such file, and the WADs have no lump DEMO9"), std::string::npos) << o;
+  EXPECT_EQ(run_in_source(std::string(P3D_GAME) + " maps/outpost.map --play demo1 --headless --out " + out("e"), o), 2);
+  EXPECT_NE(o.find("demo1: no such file"), std::string::npos) << o;
+  EXPECT_FALSE(std::filesystem::exists(out("e")));
+}
 #endif
 
 // WAD maps end to end: Doom's command-line habits, determinism, LINEDEF numbers in
