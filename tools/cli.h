@@ -91,16 +91,30 @@ inline size_t edit_distance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
-// The app's option nearest an unknown argument ("--sise" -> "--size"), or "".
+// Every long option name of the app and its subcommands ("--size").
+inline std::vector<std::string> long_options(const CLI::App& app) {
+  std::vector<std::string> names;
+  for (const CLI::Option* o : app.get_options())
+    for (const std::string& long_name : o->get_lnames()) names.push_back("--" + long_name);
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+    const std::vector<std::string> more = long_options(*sub);
+    names.insert(names.end(), more.begin(), more.end());
+  }
+  return names;
+}
+
+// The option nearest an unknown argument ("--sise" -> "--size"): a real near miss
+// (a few edits, fewer for short names), or "" when the argument is an option that
+// exists or nothing is near.
 inline std::string nearest_option(const CLI::App& app, const std::string& arg) {
   const std::string name = arg.substr(0, arg.find('='));
+  const std::vector<std::string> names = long_options(app);
+  if (std::find(names.begin(), names.end(), name) != names.end()) return "";
   std::string best;
   size_t best_distance = std::max<size_t>(2, name.size() / 4) + 1;
-  for (const CLI::Option* o : app.get_options()) {
-    for (const std::string& long_name : o->get_lnames()) {
-      const size_t d = edit_distance(name, "--" + long_name);
-      if (d < best_distance) best_distance = d, best = "--" + long_name;
-    }
+  for (const std::string& option : names) {
+    const size_t d = edit_distance(name, option);
+    if (d < best_distance) best_distance = d, best = option;
   }
   return best;
 }
@@ -273,22 +287,30 @@ int run(CLI::App& app, int argc, char** argv, Body&& body) {
     std::fprintf(stderr, "%s: %s\n", app.get_name().c_str(), e.what());
     for (int i = 1; i < argc; ++i) {
       const std::string arg = argv[i];
-      if (arg.rfind("--", 0) != 0 || app.get_option_no_throw(arg.substr(2, arg.find('=') - 2))) continue;
+      if (arg.rfind("--", 0) != 0) continue;
       if (const std::string near = nearest_option(app, arg); !near.empty())
         std::fprintf(stderr, "%s: %s: did you mean %s?\n", app.get_name().c_str(), arg.c_str(), near.c_str());
     }
     std::fprintf(stderr, "Run with --help for more information.\n");
     return 2;
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;  // --help is a success; every usage error exits 2, as documented
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {  // every usage error exits 2, as documented, under the program's name
+    std::fprintf(stderr, "%s: %s\nRun with --help for more information.\n", app.get_name().c_str(),
+                 escape_controls(e.what()).c_str());
+    return 2;
   }
   try {
     return body();
   } catch (const CLI::ValidationError& e) {
     std::fprintf(stderr, "%s: %s\n", app.get_name().c_str(), e.what());
     return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s\n", escape_controls(e.what()).c_str());  // a file system error names raw paths
+  } catch (const std::exception& e) {  // bad input: the file's own message, under the program's name
+    std::fprintf(stderr, "%s: %s\n", app.get_name().c_str(), escape_controls(e.what()).c_str());
     return 1;
   }
 }

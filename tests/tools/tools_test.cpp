@@ -46,13 +46,32 @@ TEST_F(Tools, BadMapsGiveTheirMessageAndNoOutput) {
     const int status =
         run_in_source(tool("mapc") + " tests/bad/" + entry.path().filename().string() + " -o " + out("x.bsp"), output);
     EXPECT_EQ(status, 1) << entry.path();
-    EXPECT_EQ(first_line(output), expected) << entry.path();
+    EXPECT_EQ(first_line(output), "mapc: " + expected) << entry.path() << ": the program's name, then the file's message";
     EXPECT_FALSE(std::filesystem::exists(out("x.bsp"))) << entry.path() << " left a partial output";
     ++cases;
   }
   EXPECT_GE(cases, 10);
   for (const auto& entry : std::filesystem::directory_iterator(dir_))
     EXPECT_EQ(entry.path().string().find(".tmp-"), std::string::npos) << "temporary file left: " << entry.path();
+}
+
+// Every message opens with the program's name; "did you mean" comes only for an
+// option that does not exist, and only with a near miss (subcommands' options too).
+TEST_F(Tools, UsageMessagesNameTheProgramAndSuggestOnlyNearMisses) {
+  std::string o;
+  EXPECT_EQ(run_in_source(tool("mapgen") + " soup --walls 10 --seed 1 --bogus -o " + out("x.map"), o), 2);
+  EXPECT_EQ(first_line(o), "mapgen: The following argument was not expected: --bogus") << o;
+  EXPECT_EQ(o.find("did you mean"), std::string::npos) << o;
+  EXPECT_EQ(run_in_source(tool("mapgen") + " soup --wals 10 -o " + out("x.map"), o), 2);
+  EXPECT_NE(o.find("mapgen: --wals: did you mean --walls?"), std::string::npos) << o;
+  EXPECT_EQ(o.find("-o: did you mean"), std::string::npos) << o;
+  for (const char* program : {"mapc", "capture", "compare"}) {
+    EXPECT_EQ(run_in_source(tool(program) + " missing.bsp -o " + out("x.png"), o), 2) << program;
+    EXPECT_EQ(o.rfind(std::string(program) + ": ", 0), 0u) << o;
+  }
+  EXPECT_EQ(run_in_source(tool("capture") + " maps/outpost.map -o /proc/none/x.png", o), 1);
+  EXPECT_EQ(o.rfind("capture: ", 0), 0u) << o;
+  EXPECT_FALSE(std::filesystem::exists(out("x.map")) || std::filesystem::exists(out("x.png")));
 }
 
 TEST_F(Tools, CompileAndCaptureAreReproducible) {
