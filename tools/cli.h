@@ -234,7 +234,7 @@ inline std::filesystem::path bundled_maps_dir() {
   std::error_code ec;
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (!ec) {
-    for (const auto& candidate : {exe.parent_path() / "../../maps", exe.parent_path() / "../share/pseudo3d/maps"})
+    for (const auto& candidate : {exe.parent_path() / "../share/pseudo3d/maps", exe.parent_path() / "../../maps"})
       if (std::filesystem::exists(candidate / "textures")) return std::filesystem::weakly_canonical(candidate);
   }
 #ifdef P3D_DATA_DIR

@@ -74,6 +74,53 @@ TEST_F(Tools, UsageMessagesNameTheProgramAndSuggestOnlyNearMisses) {
   EXPECT_FALSE(std::filesystem::exists(out("x.map")) || std::filesystem::exists(out("x.png")));
 }
 
+// `cmake --install build --prefix P`: the installed programs run from any directory
+// and find the bundled maps and textures in P/share/pseudo3d.
+TEST_F(Tools, InstalledToolsRunFromAScratchPrefix) {
+  const std::filesystem::path build = test::tools_dir().parent_path();
+  const std::string prefix = out("prefix");
+  std::string o;
+  ASSERT_EQ(test::run("cmake --install '" + build.string() + "' --prefix '" + prefix + "'", o), 0) << o;
+  const std::string bin = prefix + "/bin/", share = prefix + "/share/pseudo3d/maps/";
+  for (const char* program : {"mapc", "capture", "compare", "mapgen", "texgen", "bench"})
+    EXPECT_TRUE(std::filesystem::exists(bin + program)) << program;
+  EXPECT_TRUE(std::filesystem::exists(prefix + "/share/doc/pseudo3d/README.md"));
+  const std::string here = "cd '" + out("") + "' && ";
+  ASSERT_EQ(test::run(here + bin + "mapc " + share + "outpost.map -o outpost.bsp", o), 0) << o;
+  ASSERT_EQ(test::run(here + bin + "capture outpost.bsp --size 80x50 -o outpost.png", o), 0) << o;
+  ASSERT_EQ(test::run(here + bin + "mapgen rooms --walls 120 --seed 3 -o rooms.map", o), 0) << o;
+  ASSERT_EQ(test::run(here + bin + "mapc rooms.map -o rooms.bsp", o), 0) << o << ": the generated map's textures come from share/";
+#ifdef P3D_GAME
+  ASSERT_EQ(test::run(here + bin + "game " + share + "outpost.map --play " + share +
+                          "outpost.demo --headless --size 80x50 --capture-every 330 --out frames", o), 0) << o;
+  EXPECT_TRUE(std::filesystem::exists(out("frames/stats.csv")));
+#endif
+}
+
+// cpack -G DEB: a Debian package of the programs and the bundled maps, its
+// dependencies found from the libraries the programs link.
+TEST_F(Tools, DebianPackageHoldsTheProgramsAndDeclaresItsDependencies) {
+  std::string o;
+  if (test::run("command -v dpkg-deb && command -v dpkg-shlibdeps", o) != 0) GTEST_SKIP() << "not a Debian machine";
+  const std::filesystem::path build = test::tools_dir().parent_path();
+  ASSERT_EQ(test::run("cd '" + out("") + "' && cpack -G DEB --config '" + (build / "CPackConfig.cmake").string() +
+                          "' -B '" + out("deb") + "'", o), 0) << o;
+  std::string deb;
+  for (const auto& entry : std::filesystem::directory_iterator(out("deb")))
+    if (entry.path().extension() == ".deb") deb = entry.path().string();
+  ASSERT_FALSE(deb.empty()) << o;
+  ASSERT_EQ(test::run("dpkg-deb -I '" + deb + "'", o), 0) << o;
+  EXPECT_NE(o.find("Package: pseudo3d"), std::string::npos) << o;
+  EXPECT_NE(o.find("libdeflate0"), std::string::npos) << o;
+#ifdef P3D_GAME
+  EXPECT_NE(o.find("libsdl2"), std::string::npos) << o;
+#endif
+  ASSERT_EQ(test::run("dpkg-deb -c '" + deb + "'", o), 0) << o;
+  for (const char* file : {"./usr/bin/mapc", "./usr/bin/capture", "./usr/share/pseudo3d/maps/outpost.map",
+                           "./usr/share/pseudo3d/maps/textures/brick.png"})
+    EXPECT_NE(o.find(file), std::string::npos) << file;
+}
+
 TEST_F(Tools, CompileAndCaptureAreReproducible) {
   std::string o;
   ASSERT_EQ(run_in_source(tool("mapc") + " maps/outpost.map -o " + out("a.bsp") + " --stats --check --json " +
