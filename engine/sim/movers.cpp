@@ -30,8 +30,8 @@ const std::vector<int> kNoSectors;
 
 }  // namespace
 
-Movers::Movers(const level::Level& level, level::State& state)
-    : level_(level), state_(state), busy_(level.sectors.size(), 0), sector_walls_(level.sectors.size()) {
+Movers::Movers(const level::Level& level, level::State& state, play::Random& random)
+    : level_(level), state_(state), random_(random), busy_(level.sectors.size(), 0), sector_walls_(level.sectors.size()) {
   for (uint32_t w = 0; w < level.walls.size(); ++w) {
     const level::Wall& wall = level.walls[w];
     if (!wall.two_sided()) continue;
@@ -52,12 +52,7 @@ int Movers::other_side(uint32_t wall, int sector) const {
   return w.sides[0].sector == sector ? w.sides[1].sector : w.sides[0].sector;
 }
 
-int Movers::next_random() {
-  random_ ^= random_ << 13;  // xorshift32
-  random_ ^= random_ >> 17;
-  random_ ^= random_ << 5;
-  return int(random_ >> 24);
-}
+int Movers::next_random() { return random_.play(); }
 
 // ---- neighbours ----------------------------------------------------------------
 

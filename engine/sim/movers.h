@@ -8,8 +8,8 @@
 // a plane that would leave the player no room goes back where it was, and then a
 // door reverses, a lift returns, a floor or crusher waits (crushers stop at the
 // player rather than hurt: this is not a shooter). Deterministic: randomness (which
-// way a perpetual lift starts, lights) comes from a generator seeded alike for every
-// level.
+// way a perpetual lift starts, lights) comes from Doom's play stream, drawn as Doom
+// draws it, so the lights flicker as Doom's do.
 #pragma once
 
 #include <cstdint>
@@ -19,6 +19,7 @@
 
 #include "engine/level/level.h"
 #include "engine/play/info.h"
+#include "engine/play/random.h"
 #include "engine/sim/specials.h"
 
 namespace p3d::sim {
@@ -37,8 +38,9 @@ using FitsAfterMove = std::function<bool(int sector)>;
 
 class Movers {
  public:
-  // Starts the lights and the timed doors of the level's sector specials.
-  Movers(const level::Level& level, level::State& state);
+  // Starts the lights and the timed doors of the level's sector specials, in sector
+  // order, drawing from Doom's play stream as Doom's P_SpawnSpecials does.
+  Movers(const level::Level& level, level::State& state, play::Random& random);
 
   // A tagged special acting on every sector with the line's tag, as if the line
   // `wall` triggered it (some actions read the line's front sector). True if it
@@ -114,7 +116,7 @@ class Movers {
   void add_strobe(int sector, int dark_time, bool in_sync);
 
   int other_side(uint32_t wall, int sector) const;
-  int next_random();  // 0..255
+  int next_random();  // 0..255, Doom's P_Random
   void sound(play::Sound s, int sector) { sounds_.push_back({s, sector}); }
   // Doom's grinding planes: a sound every 8 tics of level time while they move.
   void grind(const Mover& m) {
@@ -129,7 +131,7 @@ class Movers {
   std::vector<std::vector<uint32_t>> sector_walls_;  // two-sided walls touching each sector, in wall order
   std::unordered_map<int, std::vector<int>> tagged_;  // sectors by tag, in sector order
   const std::vector<int>& tagged(int tag) const;
-  uint32_t random_ = 0x2545F491;
+  play::Random& random_;
   std::vector<SoundEvent> sounds_;
   uint64_t time_ = 0;  // tics run (Doom's leveltime)
 };

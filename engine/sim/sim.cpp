@@ -84,8 +84,8 @@ World::World(const level::Level& level, int skill)
     : level_(level),
       blockmap_(level),
       state_(level::start_state(level, skill)),
-      movers_(level, state_),
-      things_(level, state_, random_) {
+      things_(level, state_, random_),
+      movers_(level, state_, random_) {
   // Pieces of one LINEDEF share its special: used once, it is used up on all of them.
   std::unordered_map<int32_t, std::vector<uint32_t>> by_source;
   for (uint32_t w = 0; w < level.walls.size(); ++w) by_source[level.walls[w].source].push_back(w);

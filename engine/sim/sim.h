@@ -125,6 +125,8 @@ class World {
   int secrets_total() const { return secrets_total_; }
   const Movers& movers() const { return movers_; }
   uint64_t level_time() const { return level_time_; }
+  // Where Doom's play stream of random numbers stands (its P_Random index).
+  uint8_t random_index() const { return random_.play_index(); }
   // Starts what a line's special does to sectors, as if its trigger fired, with no
   // lock, player or side involved (tests and tools set levels moving so). True if
   // anything started; teleporters, exits and unknown specials do nothing.
@@ -170,9 +172,11 @@ class World {
   const level::Level& level_;
   Blockmap blockmap_;
   level::State state_;
-  Movers movers_;
-  play::Random random_;       // Doom's play stream
+  // Doom's order at a level's start: the things spawn, then the sector specials;
+  // both draw from the play stream.
+  play::Random random_;
   play::ThingClocks things_;  // what the things show
+  Movers movers_;
   std::vector<std::vector<uint32_t>> pieces_;  // per wall: every wall of its LINEDEF (or statement)
   std::vector<int> switch_partner_;            // per texture: its switch pair, or kNone
   struct Button {
