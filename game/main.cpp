@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
   std::vector<int> warp;
   std::string record, play, out_dir, resolution, window = "960x600", renderer = "bsp", autopilot;
   bool headless = false, fullscreen = false, no_vsync = false, map_reload = false, timedemo = false, all_keys = false;
-  bool json = false, no_sound = false;
+  bool json = false, no_sound = false, no_status_bar = false;
   int capture_every = 35;
   uint64_t quit_after = 0;
   int skill = level::kDefaultSkill;
@@ -109,6 +109,7 @@ int main(int argc, char** argv) {
   app.add_option("--renderer", renderer, "bsp, painter, dda, sphere, sphere-naive or reference")->capture_default_str();
   app.add_option("--fov", fov, "horizontal field of view")->check(cli::finite_range(30.0, 160.0))->capture_default_str();
   app.add_flag("--nosound", no_sound, "no sound effects (headless runs are always silent)");
+  app.add_flag("--no-status-bar", no_status_bar, "WAD levels: the view fills the frame, without Doom's status bar");
   app.add_flag("--map-reload", map_reload, "recompile and reload the level when its source or WAD changes on disk");
   app.add_option("--autopilot", autopilot,
                  "walk through these waypoints (a camera list; a camera named 'use' presses use there, 'wait' waits) "
@@ -160,6 +161,7 @@ int main(int argc, char** argv) {
     game::Session session(source, skill);
     if (doom_demo) demo = sim::demo_from_doom(*doom_demo, session.level());
     session.fov = fov;
+    session.show_status_bar = !no_status_bar;
     session.renderer_options = renderer_options;
     session.give_all_keys(all_keys);
     const std::string& map_path = session.name();

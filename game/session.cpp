@@ -29,6 +29,8 @@ void Session::load() {
   world_ = std::make_unique<sim::World>(*level_, skill_);
   automap_view_.set_level(*level_);
   sound_origins_ = play::sector_sound_origins(*level_);
+  status_art_.reset();
+  if (source_.is_wad()) status_art_ = play::StatusBarArt::load(bsp::read_wads(source_.wads));
 }
 
 std::string Session::title() const {
@@ -55,6 +57,7 @@ void Session::tic(const sim::TicCommand& cmd) {
   ++tics_;
   if (recording_on_) recording_.tics.push_back(played);
   advance_message();
+  face_.tic(other_random_, 100);
   for (const sim::Event& e : world_->events())
     if (!e.message.empty()) say(e.message);
   if (listening_) keep_sounds();
@@ -112,9 +115,28 @@ bool Session::select_renderer(const std::string& name) {
 
 const render::RenderStats& Session::render(render::Frame& frame, double alpha) {
   probe_.want_order = show_automap;
-  stats_ = renderer_->render(*level_, world_->state(), camera(alpha), frame, &probe_);
+  const int bar = status_bar_rows(frame);
+  if (bar == 0) {
+    stats_ = renderer_->render(*level_, world_->state(), camera(alpha), frame, &probe_);
+  } else {  // the view above the bar, as Doom's 320x168 above its 32 rows
+    if (view_frame_.width != frame.width || view_frame_.height != frame.height - bar)
+      view_frame_ = render::Frame(frame.width, frame.height - bar);
+    stats_ = renderer_->render(*level_, world_->state(), camera(alpha), view_frame_, &probe_);
+    std::copy(view_frame_.pixels.begin(), view_frame_.pixels.end(), frame.pixels.begin());
+    play::StatusValues values;
+    values.keys = player_.keys;
+    values.face = face_.index();
+    status_art_->draw(values, frame, level_->palette);
+  }
   if (!show_automap) probe_.order.clear();
   return stats_;
+}
+
+int Session::status_bar_rows(const render::Frame& frame) const {
+  if (!status_art_ || !show_status_bar || frame.keep_indices) return 0;
+  // Doom's bar needs Doom's screen at least: a smaller frame shows the view alone.
+  if (frame.width < 320 || frame.height < 200) return 0;
+  return play::StatusBarArt::height_in(frame.width, frame.height);
 }
 
 void Session::draw_overlays(render::Frame& frame, const FrameTimes& times, double alpha) const {

@@ -15,6 +15,7 @@
 #include "engine/bsp/load.h"
 #include "engine/level/level.h"
 #include "engine/play/sound.h"
+#include "engine/play/status_bar.h"
 #include "engine/wad/wad.h"
 #include "engine/render/renderer.h"
 #include "engine/sim/demo.h"
@@ -89,10 +90,13 @@ class Session {
   render::RendererOptions renderer_options;  // for the renderers select_renderer makes
   const std::string& renderer_name() const { return renderer_name_; }
   const render::RenderStats& render(render::Frame& frame, double alpha);
+  // The rows Doom's status bar takes at the bottom of such a frame (0: none shown).
+  int status_bar_rows(const render::Frame& frame) const;
   void draw_overlays(render::Frame& frame, const FrameTimes& times, double alpha) const;
 
   // ---- what the keys toggle
   bool show_automap = false, show_hud = false, show_help = false;
+  bool show_status_bar = true;  // Doom's, along the bottom, on levels whose WADs have its art
   AutomapSettings automap;
   Menu menu;
   double fov = 90;
@@ -136,6 +140,10 @@ class Session {
   Automap automap_view_;
   std::string message_;
   int message_tics_ = 0;
+  std::optional<play::StatusBarArt> status_art_;
+  play::Face face_;
+  play::Random other_random_;  // Doom's M_Random: the face's glances, never the play
+  render::Frame view_frame_;   // the 3D view above the status bar
   std::vector<PlacedSound> sounds_;
   bool listening_ = false;
   std::vector<geom::Vec2> sound_origins_;  // per sector

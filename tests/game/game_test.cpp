@@ -389,6 +389,25 @@ TEST(Session, ADoomDemoRecordingReplaysTheSameWalk) {
   std::filesystem::remove_all(dir);
 }
 
+// A WAD level at 320x200 is laid out as Doom's screen: the view in the top 168 rows,
+// exactly as a 320x168 frame shows it, and the status bar in the 32 below.
+TEST(Session, WadLevelsShowDoomsStatusBarBelowAShorterView) {
+  Session s(bsp::LevelSource{{}, {test::freedoom_path("freedoom2.wad")}, "MAP01"});
+  for (int t = 0; t < 5; ++t) s.tic({});
+  render::Frame doom(320, 200), view(320, 168);
+  EXPECT_EQ(s.status_bar_rows(doom), 32);
+  s.render(doom, 1);
+  s.show_status_bar = false;
+  s.render(view, 1);
+  EXPECT_EQ(s.status_bar_rows(view), 0);
+  EXPECT_TRUE(std::equal(view.pixels.begin(), view.pixels.end(), doom.pixels.begin())) << "the view above the bar";
+  s.show_status_bar = true;
+  render::Frame big(640, 400), tiny(160, 100);
+  EXPECT_EQ(s.status_bar_rows(big), 64) << "scaled by 2";
+  EXPECT_EQ(s.status_bar_rows(tiny), 0) << "no room for it";
+  EXPECT_EQ(Session(test::source_dir() / "maps/outpost.map").status_bar_rows(doom), 0) << "our own levels have none";
+}
+
 TEST(Headless, ReplayIsByteForByteReproducible) {
   const auto dir = test::temp_dir("headless");
   Session recorder(test::source_dir() / "maps/outpost.map");
