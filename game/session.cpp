@@ -30,7 +30,12 @@ void Session::load() {
   automap_view_.set_level(*level_);
   sound_origins_ = play::sector_sound_origins(*level_);
   status_art_.reset();
-  if (source_.is_wad()) status_art_ = play::StatusBarArt::load(bsp::read_wads(source_.wads));
+  palettes_.clear();
+  if (source_.is_wad()) {
+    const wad::Stack wads = bsp::read_wads(source_.wads);
+    status_art_ = play::StatusBarArt::load(wads);
+    palettes_ = wad::Art(wads).palettes();
+  }
 }
 
 std::string Session::title() const {
@@ -57,7 +62,7 @@ void Session::tic(const sim::TicCommand& cmd) {
   ++tics_;
   if (recording_on_) recording_.tics.push_back(played);
   advance_message();
-  face_.tic(other_random_, 100);
+  face_.tic(other_random_, player_.inventory.health);
   for (const sim::Event& e : world_->events())
     if (!e.message.empty()) say(e.message);
   if (listening_) keep_sounds();
@@ -116,20 +121,32 @@ bool Session::select_renderer(const std::string& name) {
 const render::RenderStats& Session::render(render::Frame& frame, double alpha) {
   probe_.want_order = show_automap;
   const int bar = status_bar_rows(frame);
-  if (bar == 0) {
-    stats_ = renderer_->render(*level_, world_->state(), camera(alpha), frame, &probe_);
-  } else {  // the view above the bar, as Doom's 320x168 above its 32 rows
-    if (view_frame_.width != frame.width || view_frame_.height != frame.height - bar)
-      view_frame_ = render::Frame(frame.width, frame.height - bar);
-    stats_ = renderer_->render(*level_, world_->state(), camera(alpha), view_frame_, &probe_);
+  if (bar > 0 && (view_frame_.width != frame.width || view_frame_.height != frame.height - bar))
+    view_frame_ = render::Frame(frame.width, frame.height - bar);
+  render::Frame& view = bar > 0 ? view_frame_ : frame;  // the view above the bar, as Doom's 320x168 above its 32 rows
+  const int flash = frame.keep_indices ? 0 : flash_palette();
+  if (flash) view.keep_indices = true;  // drawn in palette indices, then seen through the flash's palette
+  stats_ = renderer_->render(*level_, world_->state(), camera(alpha), view, &probe_);
+  if (flash) {
+    view.keep_indices = false;
+    if (view.indexed()) {
+      view.palette = palettes_[size_t(flash)];
+      view.resolve_colours();
+      view.indices.clear();
+    }
+  }
+  if (bar > 0) {
     std::copy(view_frame_.pixels.begin(), view_frame_.pixels.end(), frame.pixels.begin());
-    play::StatusValues values;
-    values.keys = player_.keys;
-    values.face = face_.index();
-    status_art_->draw(values, frame, level_->palette);
+    status_art_->draw(player_.inventory.status(player_.keys, face_.index()), frame,
+                      flash ? palettes_[size_t(flash)] : level_->palette);
   }
   if (!show_automap) probe_.order.clear();
   return stats_;
+}
+
+int Session::flash_palette() const {
+  const int p = play::flash_palette(player_.inventory);
+  return size_t(p) < palettes_.size() ? p : 0;
 }
 
 int Session::status_bar_rows(const render::Frame& frame) const {

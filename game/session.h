@@ -16,6 +16,7 @@
 #include "engine/level/level.h"
 #include "engine/play/sound.h"
 #include "engine/play/status_bar.h"
+#include "engine/wad/art.h"
 #include "engine/wad/wad.h"
 #include "engine/render/renderer.h"
 #include "engine/sim/demo.h"
@@ -92,6 +93,9 @@ class Session {
   const render::RenderStats& render(render::Frame& frame, double alpha);
   // The rows Doom's status bar takes at the bottom of such a frame (0: none shown).
   int status_bar_rows(const render::Frame& frame) const;
+  // Which of the WAD's palettes the screen shows now: 0, or Doom's flash (gold after a
+  // pickup, green in the radiation suit; red when hurt, once damage comes).
+  int flash_palette() const;
   void draw_overlays(render::Frame& frame, const FrameTimes& times, double alpha) const;
 
   // ---- what the keys toggle
@@ -141,6 +145,7 @@ class Session {
   std::string message_;
   int message_tics_ = 0;
   std::optional<play::StatusBarArt> status_art_;
+  std::vector<std::vector<uint32_t>> palettes_;  // PLAYPAL's, for the flashes
   play::Face face_;
   play::Random other_random_;  // Doom's M_Random: the face's glances, never the play
   render::Frame view_frame_;   // the 3D view above the status bar

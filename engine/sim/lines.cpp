@@ -21,28 +21,7 @@ namespace {
 constexpr double kUseRange = 64;
 constexpr int kButtonTics = 35;
 constexpr int kTeleportFreeze = 18;
-constexpr double kKeyRadius = 20;
-constexpr double kPickupBelow = 8;  // a pickup this far below the feet is still reached
-
-struct KeyThing {
-  int type;
-  uint8_t bit;
-  const char* message;
-};
-constexpr KeyThing kKeyThings[] = {
-    {doom::kBlueCardThing, kBlueCard, "Picked up a blue keycard."},
-    {doom::kYellowCardThing, kYellowCard, "Picked up a yellow keycard."},
-    {doom::kRedCardThing, kRedCard, "Picked up a red keycard."},
-    {doom::kBlueSkullThing, kBlueSkull, "Picked up a blue skull key."},
-    {doom::kYellowSkullThing, kYellowSkull, "Picked up a yellow skull key."},
-    {doom::kRedSkullThing, kRedSkull, "Picked up a red skull key."},
-};
-
-const KeyThing* key_thing(int type) {
-  for (const KeyThing& k : kKeyThings)
-    if (k.type == type) return &k;
-  return nullptr;
-}
+constexpr double kPickupBelow = 8;  // a pickup this far below the feet is still reached (Doom's -8)
 
 // 1 on the back (left) side of the wall, 0 on the front or on the line.
 int side_of(const level::Wall& w, Vec2 p) { return geom::cross(w.b - w.a, p - w.a) > 0 ? 1 : 0; }
@@ -242,19 +221,25 @@ bool World::teleport(Player& p, uint32_t wall) {
 
 // ---- things and sectors ----------------------------------------------------------
 
+// Doom's P_TouchSpecialThing, for every thing it lets the player pick up: the boxes
+// of the player and the thing overlap, and the thing is within reach of the feet.
 void World::pick_up(Player& p) {
   for (size_t i = 0; i < level_.things.size(); ++i) {
+    if (!state_.things[i]) continue;
     const level::Thing& t = level_.things[i];
-    const KeyThing* key = key_thing(t.type);
-    if (!key || !state_.things[i]) continue;
-    const double reach = kPlayerRadius + kKeyRadius;
+    const play::ThingType type = play::thing_type_for_editor_number(t.type);
+    if (type == play::ThingType::kCount || !(play::thing_info(type).flags & play::kSpecial)) continue;
+    const double reach = kPlayerRadius + play::to_double(play::thing_info(type).radius);
     if (std::fabs(t.pos.x - p.pos.x) >= reach || std::fabs(t.pos.y - p.pos.y) >= reach) continue;
     const double dz = state_.sectors[size_t(t.sector)].floor - p.z;
     if (dz < -kPickupBelow || dz > kPlayerHeight) continue;
-    if (!(p.keys & key->bit)) say(Event::Kind::kKey, key->message);
-    sounds_.push_back({play::Sound::kItemup});
-    p.keys |= key->bit;
+    const play::Pickup got = play::touch(p.inventory, p.keys, type, false, skill_);
+    if (!got.taken) continue;
     state_.things[i] = 0;
+    const bool key = t.type == doom::kBlueCardThing || t.type == doom::kYellowCardThing || t.type == doom::kRedCardThing ||
+                     t.type == doom::kBlueSkullThing || t.type == doom::kYellowSkullThing || t.type == doom::kRedSkullThing;
+    if (!got.message.empty()) say(key ? Event::Kind::kKey : Event::Kind::kPickup, got.message);
+    sounds_.push_back({got.sound});
   }
 }
 

@@ -85,7 +85,8 @@ World::World(const level::Level& level, int skill)
       blockmap_(level),
       state_(level::start_state(level, skill)),
       things_(level, state_, random_),
-      movers_(level, state_, random_) {
+      movers_(level, state_, random_),
+      skill_(skill) {
   // Pieces of one LINEDEF share its special: used once, it is used up on all of them.
   std::unordered_map<int32_t, std::vector<uint32_t>> by_source;
   for (uint32_t w = 0; w < level.walls.size(); ++w) by_source[level.walls[w].source].push_back(w);
@@ -283,6 +284,7 @@ void World::tick(Player& p, const TicCommand& cmd) {
       p.momentum += forward * (cmd.forward * kThrustPerUnit) + right * (cmd.side * kThrustPerUnit);
     }
   }
+  p.inventory.tic();
   find_secret(p);
   const bool use = cmd.buttons & kUse;
   if (use && !p.use_held) use_lines(p);

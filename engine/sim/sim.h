@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "engine/level/level.h"
+#include "engine/play/inventory.h"
 #include "engine/play/random.h"
 #include "engine/play/things.h"
 #include "engine/sim/movers.h"
@@ -67,12 +68,13 @@ struct Player {
   bool noclip = false;
   bool use_held = false;   // use was down last tic
   int frozen = 0;          // tics left without control (after a teleport, as Doom's)
+  play::Inventory inventory;  // health, armor, ammo, weapons, powers (Doom's player_t)
   double view_z() const { return z + kViewHeight + view_offset; }
 };
 
 // What happened during a tic, for messages and tests.
 struct Event {
-  enum class Kind : uint8_t { kKey, kLocked, kSecret, kTeleport, kSwitch, kExit, kCheat };
+  enum class Kind : uint8_t { kKey, kPickup, kLocked, kSecret, kTeleport, kSwitch, kExit, kCheat };
   Kind kind;
   std::string message;  // Doom's words where Doom has them; empty when nothing is said
 };
@@ -191,6 +193,7 @@ class World {
   double player_floor_ = 0;  // the floor the player last stood on or over (Doom's floorz)
   int secrets_found_ = 0, secrets_total_ = 0;
   uint64_t level_time_ = 0;  // tics played (Doom's leveltime)
+  int skill_;
   std::vector<uint32_t> scrolling_;  // walls of Doom's special 48
   void scroll_walls();
 };

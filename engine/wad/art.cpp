@@ -56,9 +56,13 @@ Art::Art(const Stack& stack) : stack_(stack) {
   if (playpal.bytes.size() < kPaletteBytes)
     throw Error(lump_what(stack, playpal) + ": " + std::to_string(playpal.bytes.size()) + " bytes, a palette needs " +
                 std::to_string(kPaletteBytes));
-  for (int i = 0; i < kPaletteColors; ++i)
-    palette_.push_back(uint32_t(playpal.bytes[3 * i]) | uint32_t(playpal.bytes[3 * i + 1]) << 8 |
-                       uint32_t(playpal.bytes[3 * i + 2]) << 16 | 0xFF000000u);
+  for (size_t p = 0; (p + 1) * kPaletteBytes <= playpal.bytes.size(); ++p) {
+    std::vector<uint32_t>& palette = palettes_.emplace_back();
+    const uint8_t* rgb = playpal.bytes.data() + p * kPaletteBytes;
+    for (int i = 0; i < kPaletteColors; ++i)
+      palette.push_back(uint32_t(rgb[3 * i]) | uint32_t(rgb[3 * i + 1]) << 8 | uint32_t(rgb[3 * i + 2]) << 16 | 0xFF000000u);
+  }
+  palette_ = palettes_.front();
 
   const Lump& colormap = require(stack, "COLORMAP");
   if (colormap.bytes.size() < size_t(limits::kLightMaps) * kPaletteColors)

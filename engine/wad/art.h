@@ -41,6 +41,9 @@ class Art {
 
   // PLAYPAL's first palette as RGBA8 (alpha 255).
   const std::vector<uint32_t>& palette() const { return palette_; }
+  // Every whole palette of PLAYPAL (Doom's has 14: the normal one, 8 reds for damage
+  // and berserk, 4 golds for pickups, the radiation suit's green).
+  const std::vector<std::vector<uint32_t>>& palettes() const { return palettes_; }
   // kColormaps x 256 palette indices (COLORMAP).
   const std::vector<uint8_t>& colormap() const { return colormap_; }
 
@@ -75,6 +78,7 @@ class Art {
 
   const Stack& stack_;
   std::vector<uint32_t> palette_;
+  std::vector<std::vector<uint32_t>> palettes_;
   std::vector<uint8_t> colormap_;
   std::map<std::string, TextureDef> textures_;  // TEXTURE1, then TEXTURE2: the first definition of a name wins
   std::vector<std::string> texture_numbers_;     // every definition's name in order: Doom's texture numbers

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <set>
 
 #include "engine/map/generate.h"
+#include "engine/wad/art.h"
 #include "engine/util/file.h"
 #include "game/autopilot.h"
 #include "game/headless.h"
@@ -406,6 +408,37 @@ TEST(Session, WadLevelsShowDoomsStatusBarBelowAShorterView) {
   EXPECT_EQ(s.status_bar_rows(big), 64) << "scaled by 2";
   EXPECT_EQ(s.status_bar_rows(tiny), 0) << "no room for it";
   EXPECT_EQ(Session(test::source_dir() / "maps/outpost.map").status_bar_rows(doom), 0) << "our own levels have none";
+}
+
+// A pickup flashes the screen gold for a few tics, through the WAD's own palettes:
+// every pixel of the frame (view and bar) is a colour of the gold palette.
+TEST(Session, APickupFlashesTheScreenGold) {
+  Session s(bsp::LevelSource{{}, {test::freedoom_path("freedoom2.wad")}, "MAP01"});
+  std::optional<geom::Vec2> at;
+  for (size_t i = 0; i < s.level().things.size() && !at; ++i)
+    for (int type : {2014, 2015, 2007, 2008})  // bonuses, a clip, shells: taken at the start
+      if (s.level().things[i].type == type && s.state().things[i]) at = s.level().things[i].pos;
+  ASSERT_TRUE(at);
+  EXPECT_EQ(s.flash_palette(), 0);
+  s.spawn(*at, 90);
+  s.tic({});
+  EXPECT_EQ(s.player().inventory.bonus_count, play::kBonusAdd) << "it was picked up";
+  ASSERT_EQ(s.flash_palette(), 10) << "Doom's second gold palette";
+  render::Frame frame(320, 200);
+  s.render(frame, 1);
+  const wad::Stack wads = bsp::read_wads({test::freedoom_path("freedoom2.wad")});
+  const std::vector<uint32_t> gold = wad::Art(wads).palettes()[10];
+  const std::set<uint32_t> colours(gold.begin(), gold.end()), normal(s.level().palette.begin(), s.level().palette.end());
+  size_t not_normal = 0, off_view = 0, off_bar = 0;
+  for (size_t i = 0; i < frame.pixels.size(); ++i) {
+    (i < 320 * 168 ? off_view : off_bar) += !colours.count(frame.pixels[i]);
+    not_normal += !normal.count(frame.pixels[i]);
+  }
+  EXPECT_EQ(off_view, 0u) << "every pixel of the view through the gold palette";
+  EXPECT_EQ(off_bar, 0u) << "and of the bar";
+  EXPECT_GT(not_normal, frame.pixels.size() / 2) << "most of them unlike any normal colour";
+  for (int t = 0; t < 12; ++t) s.tic({});
+  EXPECT_EQ(s.flash_palette(), 0) << "gone after 6 tics";
 }
 
 TEST(Headless, ReplayIsByteForByteReproducible) {

@@ -433,6 +433,33 @@ TEST(Scrolling, SpecialFortyEightScrollsTheFrontTexture) {
   EXPECT_NE(after.pixels, before.pixels);
 }
 
+// Walking over things picks them up by Doom's rules: a clip and a shotgun are taken
+// (ammo, the weapon in hand, messages, sounds), a stimpack at full health stays.
+TEST(Pickups, WalkingOverThingsTakesWhatDoomWouldGive) {
+  TestMap m;
+  m.add_room(rect(0, 0, 512, 256), {0, 128});
+  m.things.push_back({64, 128, 0, 1});
+  m.things.push_back({160, 128, 0, 2007});  // a clip
+  m.things.push_back({240, 128, 0, 2011});  // a stimpack
+  m.things.push_back({320, 128, 0, 2001});  // a shotgun
+  Play play(m);
+  play.run(60, kWalk);
+  ASSERT_GT(play.player.pos.x, 340);
+  const play::Inventory& inv = play.player.inventory;
+  EXPECT_EQ(inv.ammo[0], 60);
+  EXPECT_EQ(inv.ammo[1], 8);
+  EXPECT_EQ(inv.ready, play::Weapon::kShotgun);
+  EXPECT_EQ(inv.health, 100);
+  const auto& present = play.world.state().things;
+  EXPECT_EQ(std::vector<uint8_t>(present.begin(), present.end()), (std::vector<uint8_t>{1, 0, 1, 0}))
+      << "the clip and the shotgun are gone, the stimpack stays";
+  EXPECT_TRUE(play.said(Event::Kind::kPickup, "Picked up a clip."));
+  EXPECT_TRUE(play.said(Event::Kind::kPickup, "You got the shotgun!"));
+  std::vector<play::Sound> heard;
+  for (const auto& [tic, e] : play.sounds) heard.push_back(e.sound);
+  EXPECT_EQ(heard, (std::vector<play::Sound>{play::Sound::kItemup, play::Sound::kWpnup}));
+}
+
 TEST(Lights, SectorSpecialsFlickerDeterministically) {
   TestMap m;
   m.add_room(rect(0, 0, 256, 256), {0, 128, "FLOOR", "CEIL", 200, 1});    // flickers
