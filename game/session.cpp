@@ -30,10 +30,12 @@ void Session::load() {
   automap_view_.set_level(*level_);
   sound_origins_ = play::sector_sound_origins(*level_);
   status_art_.reset();
+  hud_font_.reset();
   palettes_.clear();
   if (source_.is_wad()) {
     const wad::Stack wads = bsp::read_wads(source_.wads);
     status_art_ = play::StatusBarArt::load(wads);
+    hud_font_ = play::HudFont::load(wads);
     palettes_ = wad::Art(wads).palettes();
   }
 }
@@ -174,7 +176,13 @@ void Session::draw_overlays(render::Frame& frame, const FrameTimes& times, doubl
     }
     y += draw_panel(frame, margin, y, lines, scale) + margin;
   }
-  if (message_tics_ > 0) draw_panel(frame, margin, y, {message_}, scale);  // Doom's messages, top left
+  if (message_tics_ > 0) {  // Doom's messages, top left: in Doom's own font where the WADs have it
+    const int doom_scale = std::max(1, std::min(frame.width / 320, frame.height / 200));
+    if (hud_font_ && frame.width >= 320 && !palettes_.empty())
+      hud_font_->draw(frame, message_, 0, 0, doom_scale, 0, y == margin ? 0 : y, palettes_[size_t(flash_palette())]);
+    else
+      draw_panel(frame, margin, y, {message_}, scale);
+  }
   if (show_help) {
     const auto lines = help_lines();
     draw_panel(frame, margin, std::max(margin, frame.height / 2 - int(lines.size()) * 4 * scale), lines, scale);
@@ -214,7 +222,7 @@ play::Listener Session::listener() const { return listener_at(player_.pos, playe
 
 void Session::say(const std::string& text) {
   message_ = text;
-  message_tics_ = 3 * sim::kTicRate;
+  message_tics_ = 4 * sim::kTicRate;  // Doom's HU_MSGTIMEOUT
 }
 
 void Session::advance_message() {

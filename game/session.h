@@ -14,6 +14,7 @@
 
 #include "engine/bsp/load.h"
 #include "engine/level/level.h"
+#include "engine/play/hud_font.h"
 #include "engine/play/sound.h"
 #include "engine/play/status_bar.h"
 #include "engine/wad/art.h"
@@ -145,6 +146,7 @@ class Session {
   std::string message_;
   int message_tics_ = 0;
   std::optional<play::StatusBarArt> status_art_;
+  std::optional<play::HudFont> hud_font_;
   std::vector<std::vector<uint32_t>> palettes_;  // PLAYPAL's, for the flashes
   play::Face face_;
   play::Random other_random_;  // Doom's M_Random: the face's glances, never the play

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "engine/bsp/load.h"
+#include "engine/play/hud_font.h"
 #include "engine/play/status_bar.h"
 #include "engine/wad/art.h"
 #include "tests/support/support.h"
@@ -88,6 +89,22 @@ TEST(StatusBar, TheFaceGlancesEveryHalfSecondAndShowsPain) {
   Face hurt;
   for (int tic = 0; tic < 20; ++tic) hurt.tic(random, 10);
   EXPECT_GE(hurt.index(), 4 * 8) << "10% health: the last face of pain";
+}
+
+// Doom's message font: capitals from STCFN, other characters a 4-pixel space.
+TEST(HudFont, DrawsDoomsLettersInCapitals) {
+  Fixture f;
+  const HudFont font = *HudFont::load(f.wads);
+  image::Image frame(320, 200), upper(320, 200);
+  font.draw(frame, "a b", 0, 0, 1, 0, 0, f.palette);
+  font.draw(upper, "A B", 0, 0, 1, 0, 0, f.palette);
+  EXPECT_EQ(frame.pixels, upper.pixels) << "in capitals";
+  EXPECT_TRUE(f.shows(frame, "STCFN065", 0, 0));
+  const int a = wad::decode_picture(f.wads.find("STCFN065")->bytes, "A").width;
+  EXPECT_TRUE(f.shows(frame, "STCFN066", a + 4, 0)) << "a space is 4 pixels";
+  image::Image big(640, 400);
+  EXPECT_EQ(font.draw(big, "A", 0, 0, 2, 0, 0, f.palette), (font.height() + 1) * 2);
+  EXPECT_EQ(big.at(1, 1), big.at(0, 0)) << "each texel a 2x2 square";
 }
 
 }  // namespace

@@ -1,0 +1,58 @@
+#include "engine/play/hud_font.h"
+
+#include <cctype>
+#include <cstdio>
+
+namespace p3d::play {
+
+namespace {
+constexpr int kSpaceWidth = 4;  // Doom's HU_TextLine: an unknown character advances 4
+}  // namespace
+
+std::optional<HudFont> HudFont::load(const wad::Stack& wads) {
+  HudFont font;
+  bool any = false;
+  for (char c = kFirst; c <= kLast; ++c) {
+    char name[9];
+    std::snprintf(name, sizeof name, "STCFN%03d", int(c));
+    const wad::Lump* lump = wads.find(name);
+    if (!lump) continue;
+    try {
+      font.glyphs_[size_t(c - kFirst)] = wad::decode_picture(lump->bytes, name);
+      any = true;
+    } catch (const std::exception&) {
+      // a broken letter is drawn as a space, as a missing one
+    }
+  }
+  if (!any) return std::nullopt;
+  if (const auto& a = font.glyphs_[size_t('A' - kFirst)]) font.height_ = a->height;
+  return font;
+}
+
+int HudFont::draw(image::Image& frame, const std::string& text, int x, int y, int scale, int left, int top,
+                  const std::vector<uint32_t>& palette) const {
+  for (char raw : text) {
+    const char c = char(std::toupper(static_cast<unsigned char>(raw)));
+    const std::optional<wad::IndexedImage>* glyph = c >= kFirst && c <= kLast ? &glyphs_[size_t(c - kFirst)] : nullptr;
+    if (!glyph || !*glyph) {
+      x += kSpaceWidth;
+      continue;
+    }
+    const wad::IndexedImage& g = **glyph;
+    if (x + g.width > 320) break;  // Doom stops at the screen's edge
+    for (int col = 0; col < g.width; ++col)
+      for (int row = 0; row < g.height; ++row) {
+        if (!g.opaque[g.at(col, row)]) continue;
+        const uint32_t colour = palette[g.indices[g.at(col, row)]];
+        for (int dy = 0; dy < scale; ++dy)
+          for (int dx = 0; dx < scale; ++dx) {
+            const int px = left + (x - g.left_offset + col) * scale + dx, py = top + (y - g.top_offset + row) * scale + dy;
+            if (px >= 0 && py >= 0 && px < frame.width && py < frame.height) frame.at(px, py) = colour;
+          }
+      }
+    x += g.width;
+  }
+  return (height_ + 1) * scale;
+}
+
+}  // namespace p3d::play
