@@ -305,10 +305,16 @@ class Window {
       turn_held_ = c.turn_left || c.turn_right ? turn_held_ + 1 : 0;
       cmd = make_command(c, turn_held_, o_.input);
     }
+    if (session_.in_intermission()) {  // the tally waits for use (Space, E) to go on
+      if ((cmd.buttons & sim::kUse) && !use_held_) session_.enter_next_map();
+      use_held_ = cmd.buttons & sim::kUse;
+      return;
+    }
+    use_held_ = cmd.buttons & sim::kUse;
     session_.tic(cmd);
     if (session_.exited() != sim::Exit::kNone) {
       if (o_.play || autopilot_) running_ = false;  // a demo or a route holds one level
-      else session_.enter_next_map();
+      else if (!session_.start_intermission()) session_.enter_next_map();
     }
     if (o_.quit_after_tics && session_.tics() >= o_.quit_after_tics) running_ = false;
   }
@@ -329,6 +335,7 @@ class Window {
   size_t played_ = 0;
   std::optional<Autopilot> autopilot_;
   std::optional<SoundMixer> mixer_;
+  bool use_held_ = false;
   SDL_AudioDeviceID audio_ = 0;
 };
 

@@ -86,6 +86,7 @@ bool Session::enter_next_map() {
     why = "a hand-made level has no next map";
   }
   if (!next.empty()) source_.map = next;
+  intermission_.reset();
   load();
   spawn(level_->player_start, level_->player_angle);
   if (!select_renderer(renderer_name_)) select_renderer("bsp");
@@ -121,6 +122,11 @@ bool Session::select_renderer(const std::string& name) {
 }
 
 const render::RenderStats& Session::render(render::Frame& frame, double alpha) {
+  if (intermission_) {  // the tally in place of the view
+    intermission_->draw(tally(), frame, palettes_.front());
+    stats_ = {};
+    return stats_;
+  }
   probe_.want_order = show_automap;
   const int bar = status_bar_rows(frame);
   if (bar > 0 && (view_frame_.width != frame.width || view_frame_.height != frame.height - bar))
@@ -229,15 +235,45 @@ void Session::advance_message() {
   if (message_tics_ > 0) --message_tics_;
 }
 
+// The episode (0 for Doom II's MAPxx) and map number of the WAD map played; false
+// for levels that are not a Doom map.
+bool Session::doom_map_numbers(int& episode, int& number) const {
+  if (!source_.is_wad()) return false;
+  const std::string map = bsp::resolve_map_name(bsp::read_wads(source_.wads), source_.map);
+  episode = 0;
+  return std::sscanf(map.c_str(), "MAP%d", &number) == 1 || std::sscanf(map.c_str(), "E%dM%d", &episode, &number) == 2;
+}
+
 std::vector<uint8_t> Session::encode_recording(const std::filesystem::path& path) const {
   if (path.extension() != ".lmp") return sim::encode_demo(recording_);
-  const std::string map = source_.is_wad() ? bsp::resolve_map_name(bsp::read_wads(source_.wads), source_.map) : "";
   int episode = 0, number = 0;
-  if (std::sscanf(map.c_str(), "MAP%d", &number) == 1)
-    episode = 1;
-  else if (std::sscanf(map.c_str(), "E%dM%d", &episode, &number) != 2)
+  if (!doom_map_numbers(episode, number))
     throw Error(path.string() + ": a Doom demo (.lmp) records a WAD's MAPxx or ExMy map, not " + name_);
-  return play::encode_doom_demo(sim::doom_from_demo(recording_, episode, number));
+  return play::encode_doom_demo(sim::doom_from_demo(recording_, std::max(episode, 1), number));
+}
+
+bool Session::start_intermission() {
+  int episode = 0, number = 0;
+  if (!doom_map_numbers(episode, number) || palettes_.empty()) return false;
+  intermission_ = play::IntermissionArt::load(bsp::read_wads(source_.wads), episode, number);
+  return intermission_.has_value();
+}
+
+play::Tally Session::tally() const {
+  play::Tally t;
+  const level::State start = level::start_state(*level_, skill_);  // what the level held: the totals
+  for (size_t i = 0; i < level_->things.size(); ++i) {
+    if (!start.things[i]) continue;
+    const play::ThingType type = play::thing_type_for_editor_number(level_->things[i].type);
+    if (type == play::ThingType::kCount) continue;
+    t.total_kills += (play::thing_info(type).flags & play::kCountkill) != 0;
+    t.total_items += (play::thing_info(type).flags & play::kCountitem) != 0;
+  }
+  t.items = player_.inventory.items;
+  t.secrets = world_->secrets_found();
+  t.total_secrets = world_->secrets_total();
+  t.seconds = int(tics_ / sim::kTicRate);
+  return t;
 }
 
 void Session::start_recording(bool doom_turns) {

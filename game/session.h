@@ -15,6 +15,7 @@
 #include "engine/bsp/load.h"
 #include "engine/level/level.h"
 #include "engine/play/hud_font.h"
+#include "engine/play/intermission.h"
 #include "engine/play/sound.h"
 #include "engine/play/status_bar.h"
 #include "engine/wad/art.h"
@@ -56,6 +57,13 @@ class Session {
   // keys. When there is none (a hand-made level, the end of an episode or game, a map
   // missing from the WADs), starts this level again and returns false.
   bool enter_next_map();
+  // Doom's intermission after an exit: the tally of the level just finished, drawn by
+  // render() in place of the view until enter_next_map. False (nothing shown) where
+  // the WADs have no intermission art.
+  bool start_intermission();
+  bool in_intermission() const { return intermission_.has_value(); }
+  // Kills, items and secrets of the level so far, and its time.
+  play::Tally tally() const;
   // Every key at every start (--all-keys).
   void give_all_keys(bool all) {
     all_keys_ = all;
@@ -129,6 +137,7 @@ class Session {
  private:
   void load();
   void keep_sounds();  // the tic's, placed
+  bool doom_map_numbers(int& episode, int& number) const;
 
   bsp::LevelSource source_;
   std::string name_;
@@ -147,6 +156,7 @@ class Session {
   int message_tics_ = 0;
   std::optional<play::StatusBarArt> status_art_;
   std::optional<play::HudFont> hud_font_;
+  std::optional<play::IntermissionArt> intermission_;
   std::vector<std::vector<uint32_t>> palettes_;  // PLAYPAL's, for the flashes
   play::Face face_;
   play::Random other_random_;  // Doom's M_Random: the face's glances, never the play

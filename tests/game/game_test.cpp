@@ -441,6 +441,34 @@ TEST(Session, APickupFlashesTheScreenGold) {
   EXPECT_EQ(s.flash_palette(), 0) << "gone after 6 tics";
 }
 
+// After an exit the window shows Doom's tally: the level's counts and time over the
+// WAD's intermission picture, until the next map is entered.
+TEST(Session, TheIntermissionTalliesTheLevel) {
+  const auto wad = test::freedoom_path("freedoom2.wad");
+  Session s(bsp::LevelSource{{}, {wad}, "MAP01"});
+  for (int t = 0; t < 70; ++t) s.tic({});
+  const play::Tally t = s.tally();
+  EXPECT_EQ(t.seconds, 2);
+  EXPECT_EQ(t.total_secrets, s.world().secrets_total());
+  EXPECT_GT(t.total_items, 0);
+  EXPECT_GT(t.total_kills, 0);
+  EXPECT_EQ(t.kills, 0) << "no monster dies yet";
+  ASSERT_TRUE(s.start_intermission());
+  EXPECT_TRUE(s.in_intermission());
+  render::Frame frame(320, 200);
+  s.render(frame, 1);
+  const wad::Stack wads = bsp::read_wads({wad});
+  const wad::IndexedImage back = wad::decode_picture(wads.find("INTERPIC")->bytes, "INTERPIC");
+  const std::vector<uint32_t> palette = wad::Art(wads).palette();
+  EXPECT_EQ(frame.at(160, 120), palette[back.indices[back.at(160, 120)]]) << "the picture behind the tally";
+  EXPECT_EQ(play::par_seconds(0, 1), 30) << "Doom II's MAP01 par";
+  EXPECT_EQ(play::par_seconds(1, 1), 30) << "E1M1's";
+  EXPECT_EQ(play::par_seconds(4, 1), -1) << "no par in episode 4";
+  s.enter_next_map();
+  EXPECT_FALSE(s.in_intermission());
+  EXPECT_FALSE(Session(test::source_dir() / "maps/outpost.map").start_intermission()) << "our own levels have none";
+}
+
 TEST(Headless, ReplayIsByteForByteReproducible) {
   const auto dir = test::temp_dir("headless");
   Session recorder(test::source_dir() / "maps/outpost.map");

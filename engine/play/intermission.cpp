@@ -1,0 +1,144 @@
+#include "engine/play/intermission.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace p3d::play {
+
+namespace {
+
+constexpr int kScreenWidth = 320, kScreenHeight = 200;
+constexpr int kTitleY = 2, kStatsX = 50, kStatsY = 50, kTimeX = 16, kTimeY = kScreenHeight - 32;
+constexpr int kNoNumber = 1994;
+
+std::optional<wad::IndexedImage> picture(const wad::Stack& wads, const std::string& name) {
+  const wad::Lump* lump = wads.find(name);
+  if (!lump) return std::nullopt;
+  try {
+    return wad::decode_picture(lump->bytes, name);
+  } catch (const std::exception&) {
+    return std::nullopt;  // a broken piece is left out
+  }
+}
+
+// Doom's counts as percentages, of at least 1 (Doom's WI_initVariables).
+int percent(int n, int total) { return n * 100 / std::max(total, 1); }
+
+}  // namespace
+
+int par_seconds(int episode, int map) {
+  static constexpr int kDoom[3][9] = {{30, 75, 120, 90, 165, 180, 180, 30, 165},
+                                      {90, 90, 90, 120, 90, 360, 240, 30, 170},
+                                      {90, 45, 90, 150, 90, 90, 165, 30, 135}};
+  static constexpr int kDoom2[32] = {30,  90,  120, 120, 90,  150, 120, 120, 270, 90,  210, 150, 150, 150, 210, 150,
+                                     420, 150, 210, 150, 240, 150, 180, 150, 150, 300, 330, 420, 300, 180, 120, 30};
+  if (episode == 0) return map >= 1 && map <= 32 ? kDoom2[map - 1] : -1;
+  if (episode >= 1 && episode <= 3 && map >= 1 && map <= 9) return kDoom[episode - 1][map - 1];
+  return -1;
+}
+
+std::optional<IntermissionArt> IntermissionArt::load(const wad::Stack& wads, int episode, int map) {
+  IntermissionArt a;
+  char name[16];
+  if (episode == 0 || episode == 4)
+    a.background_ = picture(wads, "INTERPIC");
+  else
+    a.background_ = picture(wads, "WIMAP" + std::to_string(episode - 1));
+  if (episode == 0)
+    std::snprintf(name, sizeof name, "CWILV%02d", map - 1);
+  else
+    std::snprintf(name, sizeof name, "WILV%d%d", episode - 1, map - 1);
+  a.level_name_ = picture(wads, name);
+  a.finished_ = picture(wads, "WIF");
+  a.kills_ = picture(wads, "WIOSTK");
+  a.items_ = picture(wads, "WIOSTI");
+  a.secret_ = picture(wads, "WISCRT2");
+  a.time_ = picture(wads, "WITIME");
+  a.par_label_ = picture(wads, "WIPAR");
+  a.percent_ = picture(wads, "WIPCNT");
+  a.colon_ = picture(wads, "WICOLON");
+  a.minus_ = picture(wads, "WIMINUS");
+  a.sucks_ = picture(wads, "WISUCKS");
+  for (int i = 0; i < 10; ++i) a.digits_.push_back(picture(wads, "WINUM" + std::to_string(i)));
+  if (!a.background_ && !a.digits_[0]) return std::nullopt;
+  a.par_ = par_seconds(episode, map);
+  return a;
+}
+
+void IntermissionArt::draw(const Tally& t, image::Image& frame, const std::vector<uint32_t>& palette) const {
+  const int scale = std::max(1, std::min(frame.width / kScreenWidth, frame.height / kScreenHeight));
+  const int left = (frame.width - kScreenWidth * scale) / 2, top = (frame.height - kScreenHeight * scale) / 2;
+  std::fill(frame.pixels.begin(), frame.pixels.end(), palette[0]);
+  auto put = [&](const Picture& pic, int x, int y) {
+    if (!pic) return;
+    const int x0 = left + (x - pic->left_offset) * scale, y0 = top + (y - pic->top_offset) * scale;
+    for (int c = 0; c < pic->width; ++c)
+      for (int r = 0; r < pic->height; ++r) {
+        if (!pic->opaque[pic->at(c, r)]) continue;
+        const uint32_t colour = palette[pic->indices[pic->at(c, r)]];
+        for (int dy = 0; dy < scale; ++dy)
+          for (int dx = 0; dx < scale; ++dx) {
+            const int px = x0 + c * scale + dx, py = y0 + r * scale + dy;
+            if (px >= 0 && py >= 0 && px < frame.width && py < frame.height) frame.at(px, py) = colour;
+          }
+      }
+  };
+  const int digit_width = digits_[0] ? digits_[0]->width : 11;
+  // Doom's WI_drawNum: right-aligned ending at x, `digits` of them (-1: as many as needed).
+  auto number = [&](int x, int y, int n, int digits) {
+    if (n == kNoNumber) return x;
+    const bool negative = n < 0;
+    if (negative) n = -n;
+    if (digits < 0) {
+      digits = n == 0 ? 1 : 0;
+      for (int m = n; m; m /= 10) ++digits;
+    }
+    while (digits--) {
+      x -= digit_width;
+      put(digits_[size_t(n % 10)], x, y);
+      n /= 10;
+    }
+    if (negative) put(minus_, x -= 8, y);
+    return x;
+  };
+  auto percentage = [&](int x, int y, int p) {
+    if (p < 0) return;
+    put(percent_, x, y);
+    number(x, y, p, -1);
+  };
+  auto time = [&](int x, int y, int seconds) {  // Doom's WI_drawTime: minutes and seconds, hours if need be
+    if (seconds < 0) return;
+    if (seconds > 61 * 59) {
+      if (sucks_) put(sucks_, x - sucks_->width, y);
+      return;
+    }
+    for (int div = 1;;) {
+      x = number(x, y, (seconds / div) % 60, 2) - (colon_ ? colon_->width : 0);
+      div *= 60;
+      if (div == 60 || seconds / div) put(colon_, x, y);
+      if (!(seconds / div)) break;
+    }
+  };
+  put(background_, 0, 0);
+  int y = kTitleY;
+  if (level_name_) {
+    put(level_name_, (kScreenWidth - level_name_->width) / 2, y);
+    y += 5 * level_name_->height / 4;
+  }
+  if (finished_) put(finished_, (kScreenWidth - finished_->width) / 2, y);
+  const int line = digits_[0] ? 3 * digits_[0]->height / 2 : 18;
+  put(kills_, kStatsX, kStatsY);
+  percentage(kScreenWidth - kStatsX, kStatsY, percent(t.kills, t.total_kills));
+  put(items_, kStatsX, kStatsY + line);
+  percentage(kScreenWidth - kStatsX, kStatsY + line, percent(t.items, t.total_items));
+  put(secret_, kStatsX, kStatsY + 2 * line);
+  percentage(kScreenWidth - kStatsX, kStatsY + 2 * line, percent(t.secrets, t.total_secrets));
+  put(time_, kTimeX, kTimeY);
+  time(kScreenWidth / 2 - kTimeX, kTimeY, t.seconds);
+  if (par_ >= 0) {
+    put(par_label_, kScreenWidth / 2 + kTimeX, kTimeY);
+    time(kScreenWidth - kTimeX, kTimeY, par_);
+  }
+}
+
+}  // namespace p3d::play
