@@ -183,7 +183,7 @@ void Session::draw_overlays(render::Frame& frame, const FrameTimes& times, doubl
     y += draw_panel(frame, margin, y, lines, scale) + margin;
   }
   if (message_tics_ > 0) {  // Doom's messages, top left: in Doom's own font where the WADs have it
-    const int doom_scale = std::max(1, std::min(frame.width / 320, frame.height / 200));
+    const int doom_scale = play::ScreenPlace::scale_for(frame.width, frame.height);
     if (hud_font_ && frame.width >= 320 && !palettes_.empty())
       hud_font_->draw(frame, message_, 0, 0, doom_scale, 0, y == margin ? 0 : y, palettes_[size_t(flash_palette())]);
     else

@@ -39,17 +39,8 @@ int HudFont::draw(image::Image& frame, const std::string& text, int x, int y, in
       continue;
     }
     const wad::IndexedImage& g = **glyph;
-    if (x + g.width > 320) break;  // Doom stops at the screen's edge
-    for (int col = 0; col < g.width; ++col)
-      for (int row = 0; row < g.height; ++row) {
-        if (!g.opaque[g.at(col, row)]) continue;
-        const uint32_t colour = palette[g.indices[g.at(col, row)]];
-        for (int dy = 0; dy < scale; ++dy)
-          for (int dx = 0; dx < scale; ++dx) {
-            const int px = left + (x - g.left_offset + col) * scale + dx, py = top + (y - g.top_offset + row) * scale + dy;
-            if (px >= 0 && py >= 0 && px < frame.width && py < frame.height) frame.at(px, py) = colour;
-          }
-      }
+    if (x + g.width > kScreenWidth) break;  // Doom stops at the screen's edge
+    draw_picture(frame, g, x, y, {scale, left, top}, palette);
     x += g.width;
   }
   return (height_ + 1) * scale;

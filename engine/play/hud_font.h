@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine/image/image.h"
+#include "engine/play/screen.h"
 #include "engine/wad/picture.h"
 #include "engine/wad/wad.h"
 

@@ -7,7 +7,6 @@ namespace p3d::play {
 
 namespace {
 
-constexpr int kScreenWidth = 320, kScreenHeight = 200;
 constexpr int kTitleY = 2, kStatsX = 50, kStatsY = 50, kTimeX = 16, kTimeY = kScreenHeight - 32;
 constexpr int kNoNumber = 1994;
 
@@ -39,7 +38,7 @@ int par_seconds(int episode, int map) {
 
 std::optional<IntermissionArt> IntermissionArt::load(const wad::Stack& wads, int episode, int map) {
   IntermissionArt a;
-  char name[16];
+  char name[32];
   if (episode == 0 || episode == 4)
     a.background_ = picture(wads, "INTERPIC");
   else
@@ -66,22 +65,10 @@ std::optional<IntermissionArt> IntermissionArt::load(const wad::Stack& wads, int
 }
 
 void IntermissionArt::draw(const Tally& t, image::Image& frame, const std::vector<uint32_t>& palette) const {
-  const int scale = std::max(1, std::min(frame.width / kScreenWidth, frame.height / kScreenHeight));
-  const int left = (frame.width - kScreenWidth * scale) / 2, top = (frame.height - kScreenHeight * scale) / 2;
+  const ScreenPlace at = ScreenPlace::in(frame);
   std::fill(frame.pixels.begin(), frame.pixels.end(), palette[0]);
   auto put = [&](const Picture& pic, int x, int y) {
-    if (!pic) return;
-    const int x0 = left + (x - pic->left_offset) * scale, y0 = top + (y - pic->top_offset) * scale;
-    for (int c = 0; c < pic->width; ++c)
-      for (int r = 0; r < pic->height; ++r) {
-        if (!pic->opaque[pic->at(c, r)]) continue;
-        const uint32_t colour = palette[pic->indices[pic->at(c, r)]];
-        for (int dy = 0; dy < scale; ++dy)
-          for (int dx = 0; dx < scale; ++dx) {
-            const int px = x0 + c * scale + dx, py = y0 + r * scale + dy;
-            if (px >= 0 && py >= 0 && px < frame.width && py < frame.height) frame.at(px, py) = colour;
-          }
-      }
+    if (pic) draw_picture(frame, *pic, x, y, at, palette);
   };
   const int digit_width = digits_[0] ? digits_[0]->width : 11;
   // Doom's WI_drawNum: right-aligned ending at x, `digits` of them (-1: as many as needed).

@@ -7,7 +7,7 @@ namespace p3d::play {
 
 namespace {
 
-constexpr int kScreenWidth = 320, kScreenHeight = 200, kBarTop = kScreenHeight - kStatusBarHeight;
+constexpr int kBarTop = kScreenHeight - kStatusBarHeight;
 constexpr int kPainFaces = 5, kStraightFaces = 3, kFaceStride = 8, kStraightFaceTics = 35 / 2;
 
 // Doom's places on its 320x200 screen (st_stuff.c).
@@ -66,27 +66,13 @@ std::optional<StatusBarArt> StatusBarArt::load(const wad::Stack& wads) {
 }
 
 int StatusBarArt::height_in(int frame_width, int frame_height) {
-  const int scale = std::max(1, std::min(frame_width / kScreenWidth, frame_height / kScreenHeight));
-  return kStatusBarHeight * scale;
+  return kStatusBarHeight * ScreenPlace::scale_for(frame_width, frame_height);
 }
 
 void StatusBarArt::draw(const StatusValues& v, image::Image& frame, const std::vector<uint32_t>& palette) const {
-  const int scale = height_in(frame.width, frame.height) / kStatusBarHeight;
-  const int left = (frame.width - kScreenWidth * scale) / 2, top = frame.height - kStatusBarHeight * scale;
-  // A picture at Doom's screen place (x, y), its offsets applied, each texel a scale x scale square.
+  const ScreenPlace at = ScreenPlace::in(frame, kStatusBarHeight);  // the bar's rows at the frame's bottom
   auto put = [&](const std::optional<wad::IndexedImage>& pic, int x, int y) {
-    if (!pic) return;
-    const int x0 = left + (x - pic->left_offset) * scale, y0 = top + (y - kBarTop - pic->top_offset) * scale;
-    for (int c = 0; c < pic->width; ++c)
-      for (int r = 0; r < pic->height; ++r) {
-        if (!pic->opaque[pic->at(c, r)]) continue;
-        const uint32_t colour = palette[pic->indices[pic->at(c, r)]];
-        for (int dy = 0; dy < scale; ++dy)
-          for (int dx = 0; dx < scale; ++dx) {
-            const int px = x0 + c * scale + dx, py = y0 + r * scale + dy;
-            if (px >= 0 && py >= 0 && px < frame.width && py < frame.height) frame.at(px, py) = colour;
-          }
-      }
+    if (pic) draw_picture(frame, *pic, x, y, at, palette);
   };
   // Doom's numbers: right-aligned ending at x, at most `digits` of them, 0 drawn as 0.
   auto number = [&](const std::array<std::optional<wad::IndexedImage>, 10>& font, int n, int x, int y, int digits) {

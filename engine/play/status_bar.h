@@ -11,6 +11,7 @@
 
 #include "engine/image/image.h"
 #include "engine/play/random.h"
+#include "engine/play/screen.h"
 #include "engine/wad/picture.h"
 #include "engine/wad/wad.h"
 
