@@ -87,8 +87,15 @@ bool Session::enter_next_map() {
   }
   if (!next.empty()) source_.map = next;
   intermission_.reset();
+  // Doom's G_PlayerFinishLevel: health, armor, ammo and weapons go on to the next
+  // map; keys, powers and the flash stay behind.
+  play::Inventory carried = player_.inventory;
+  carried.powers = {};
+  carried.bonus_count = 0;
+  carried.items = 0;
   load();
   spawn(level_->player_start, level_->player_angle);
+  player_.inventory = previous_.inventory = carried;
   if (!select_renderer(renderer_name_)) select_renderer("bsp");
   say(next.empty() ? why + ": starting it again" : "entered " + next);
   return !next.empty();

@@ -505,6 +505,8 @@ void two_map_wad(const std::filesystem::path& dir) {
   one.add_room({{0, 0}, {0, 256}, {256, 256}, {256, 0}}, {});
   one.line_at({256, 256}, {256, 0}).special = 11;
   one.things.push_back({200, 128, 0, 1});
+  one.things.push_back({200, 128, 0, 2001});  // a shotgun where the player stands
+  one.things.push_back({200, 128, 0, 2025});  // and a radiation suit
   two.add_room({{1000, 0}, {1000, 512}, {1512, 512}, {1512, 0}}, {});
   two.things.push_back({1100, 100, 90, 1});
   test::WadWriter w(true);
@@ -532,6 +534,9 @@ TEST(Session, AnExitLoadsTheNextMapInDoomsOrder) {
   EXPECT_EQ(s.name(), "two.wad:MAP02");
   EXPECT_EQ(s.player().pos, geom::Vec2(1100, 100));
   EXPECT_EQ(s.player().keys, sim::kAllKeys) << "--all-keys holds on every map";
+  EXPECT_EQ(s.player().inventory.ready, play::Weapon::kShotgun) << "weapons and ammo go on to the next map";
+  EXPECT_EQ(s.player().inventory.ammo[1], 8);
+  EXPECT_EQ(s.player().inventory.powers[size_t(play::Power::kIronFeet)], 0) << "powers stay behind";
   EXPECT_EQ(s.exited(), sim::Exit::kNone);
   std::filesystem::remove_all(dir);
 }
