@@ -1,0 +1,26 @@
+// A Doom demo's bytes (.lmp): read, written back and read again the same, and its
+// console player's moves walked on a small level when accepted.
+#include <cstdlib>
+
+#include "engine/bsp/build.h"
+#include "engine/map/source.h"
+#include "engine/play/doom_demo.h"
+#include "engine/sim/demo.h"
+#include "tests/fuzz/harness.h"
+
+using namespace p3d;
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  static const level::Level level = bsp::build(map::load_map(fuzz::maps_dir() / "outpost.map"), {});
+  try {
+    const play::DoomDemo doom = play::decode_doom_demo(std::span(data, size), "fuzz.lmp");
+    const play::DoomDemo again = play::decode_doom_demo(play::encode_doom_demo(doom), "again.lmp");
+    if (again.commands != doom.commands || again.skill != doom.skill || again.map != doom.map) std::abort();
+    const sim::Demo demo = sim::demo_from_doom(doom, level);
+    sim::World world(level, demo.skill);
+    sim::Player p = world.spawn();
+    for (size_t t = 0; t < demo.tics.size() && t < 700; ++t) world.tick(p, demo.tics[t]);
+  } catch (const Error&) {
+  }
+  return 0;
+}
