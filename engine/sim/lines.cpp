@@ -227,8 +227,8 @@ void World::pick_up(Player& p) {
   for (size_t i = 0; i < level_.things.size(); ++i) {
     if (!state_.things[i]) continue;
     const level::Thing& t = level_.things[i];
-    const play::ThingType type = play::thing_type_for_editor_number(t.type);
-    if (type == play::ThingType::kCount || !(play::thing_info(type).flags & play::kSpecial)) continue;
+    const play::ThingType type = pickup_types_[i];
+    if (type == play::ThingType::kCount) continue;
     const double reach = kPlayerRadius + play::to_double(play::thing_info(type).radius);
     if (std::fabs(t.pos.x - p.pos.x) >= reach || std::fabs(t.pos.y - p.pos.y) >= reach) continue;
     const double dz = state_.sectors[size_t(t.sector)].floor - p.z;

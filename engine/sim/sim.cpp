@@ -101,6 +101,11 @@ World::World(const level::Level& level, int skill)
   for (const level::SectorState& s : state_.sectors) secrets_total_ += s.special == doom::kSecretSector;
   for (uint32_t w = 0; w < level.walls.size(); ++w)
     if (level.walls[w].special == doom::kScrollLeft) scrolling_.push_back(w);
+  for (const level::Thing& t : level.things) {
+    const play::ThingType type = play::thing_type_for_editor_number(t.type);
+    const bool pickup = type != play::ThingType::kCount && (play::thing_info(type).flags & play::kSpecial);
+    pickup_types_.push_back(pickup ? type : play::ThingType::kCount);
+  }
   if (!scrolling_.empty()) state_.scrolled.assign(level.walls.size(), 0);
 }
 

@@ -194,6 +194,7 @@ class World {
   int secrets_found_ = 0, secrets_total_ = 0;
   uint64_t level_time_ = 0;  // tics played (Doom's leveltime)
   int skill_;
+  std::vector<play::ThingType> pickup_types_;  // per thing: its type if the player can pick it up, else kCount
   std::vector<uint32_t> scrolling_;  // walls of Doom's special 48
   void scroll_walls();
 };
