@@ -125,13 +125,13 @@ class Movers {
 
   const level::Level& level_;
   level::State& state_;
+  play::Random& random_;
   std::vector<Mover> movers_;
   std::vector<Light> lights_;
   std::vector<uint8_t> busy_;
   std::vector<std::vector<uint32_t>> sector_walls_;  // two-sided walls touching each sector, in wall order
   std::unordered_map<int, std::vector<int>> tagged_;  // sectors by tag, in sector order
   const std::vector<int>& tagged(int tag) const;
-  play::Random& random_;
   std::vector<SoundEvent> sounds_;
   uint64_t time_ = 0;  // tics run (Doom's leveltime)
 };

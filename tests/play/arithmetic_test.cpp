@@ -73,7 +73,9 @@ TEST(Tables, TangentAndTheSlopeToAngleTable) {
   for (int i = 0; i <= kSlopeRange; ++i) {
     const double exact = std::atan(double(i) / kSlopeRange) / kTwoPi * 4294967296.0;
     EXPECT_LE(std::abs(double(kTanToAngle[i]) - exact), 32.0) << i;  // single precision: 2^29 * 2^-24
-    if (i) EXPECT_GT(kTanToAngle[i], kTanToAngle[i - 1]);
+    if (i) {
+      EXPECT_GT(kTanToAngle[i], kTanToAngle[i - 1]);
+    }
   }
   EXPECT_EQ(kTanToAngle[0], 0u);
   EXPECT_EQ(kTanToAngle[kSlopeRange], kAngle45);

@@ -32,8 +32,9 @@ TEST(Info, EveryReferenceLeadsToAStateTypeOrSoundThatExists) {
       EXPECT_LT(size_t(s), kStateCount);
     for (Sound s : {t.see_sound, t.attack_sound, t.pain_sound, t.death_sound, t.active_sound})
       EXPECT_LT(size_t(s), size_t(Sound::kCount));
-    if (t.spawn == StateId::kNull)  // only the invisible markers start nowhere
+    if (t.spawn == StateId::kNull) {  // only the invisible markers start nowhere
       EXPECT_TRUE(t.flags & kNosector) << t.editor_number;
+    }
     EXPECT_GT(t.radius, 0);
   }
   for (const SoundInfo& s : kSounds) EXPECT_LT(size_t(s.link), size_t(Sound::kCount));
@@ -53,7 +54,9 @@ TEST(Info, AgreesWithTheImportersTableOfPlacedThings) {
     EXPECT_EQ(spawn.bright, w.bright) << w.type;
     EXPECT_EQ(t.radius, to_fixed(w.radius)) << w.type;
     EXPECT_EQ((t.flags & kSpawnceiling) != 0, w.hanging) << w.type;
-    if (w.kind == wad::ThingKind::kMonster) EXPECT_TRUE(t.flags & kShootable) << w.type;
+    if (w.kind == wad::ThingKind::kMonster) {
+      EXPECT_TRUE(t.flags & kShootable) << w.type;
+    }
     ++compared;
   }
   EXPECT_GT(compared, 100);
