@@ -68,6 +68,11 @@ void Session::tic(const sim::TicCommand& cmd) {
   for (const sim::Event& e : world_->events())
     if (!e.message.empty()) say(e.message);
   if (listening_) keep_sounds();
+  if (world_->reborn()) {  // Doom's G_DoReborn in a single-player game: the level from its start
+    load();
+    spawn(level_->player_start, level_->player_angle);
+    return;
+  }
   if (world_->exit() != sim::Exit::kNone) {
     recording_on_ = false;  // a demo holds one level: it ends at its exit
     say(world_->exit() == sim::Exit::kSecret ? "secret exit" : "exit");
@@ -160,7 +165,7 @@ const render::RenderStats& Session::render(render::Frame& frame, double alpha) {
 }
 
 int Session::flash_palette() const {
-  const int p = play::flash_palette(player_.inventory);
+  const int p = play::flash_palette(player_.inventory);  // red while hurt, gold, the suit's green
   return size_t(p) < palettes_.size() ? p : 0;
 }
 

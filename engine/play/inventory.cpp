@@ -100,16 +100,35 @@ AmmoType ammo_of(Weapon weapon) {
   }
 }
 
+int damage(Inventory& inv, int amount, int skill) {
+  if (skill == 1) amount >>= 1;  // Doom's trainer skill takes half
+  if (inv.powers[size_t(Power::kInvulnerability)]) return 0;
+  if (inv.armor_type) {
+    int saved = inv.armor_type == 1 ? amount / 3 : amount / 2;
+    if (inv.armor <= saved) {  // the armor is used up
+      saved = inv.armor;
+      inv.armor_type = 0;
+    }
+    inv.armor -= saved;
+    amount -= saved;
+  }
+  const int before = inv.health;
+  inv.health = std::max(inv.health - amount, 0);
+  inv.damage_count = std::min(inv.damage_count + amount, 100);
+  return before - inv.health;
+}
+
 void Inventory::tic() {
   if (bonus_count) --bonus_count;
+  if (damage_count) --damage_count;
   for (Power p : {Power::kInvulnerability, Power::kInvisibility, Power::kInfrared, Power::kIronFeet})
     if (powers[size_t(p)]) --powers[size_t(p)];
   if (powers[size_t(Power::kStrength)]) ++powers[size_t(Power::kStrength)];  // counts up: the red fades
 }
 
-int flash_palette(const Inventory& inv, int damage) {
+int flash_palette(const Inventory& inv) {
   constexpr int kFirstRed = 1, kReds = 8, kFirstGold = 9, kGolds = 4, kRadiation = 13;
-  int red = damage;
+  int red = inv.damage_count;
   if (const int berserk = inv.powers[size_t(Power::kStrength)]) red = std::max(red, 12 - (berserk >> 6));
   if (red > 0) return kFirstRed + std::min((red + 7) >> 3, kReds - 1);
   if (inv.bonus_count) return kFirstGold + std::min((inv.bonus_count + 7) >> 3, kGolds - 1);

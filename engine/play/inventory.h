@@ -33,7 +33,8 @@ struct Inventory {
   std::array<bool, size_t(Weapon::kCount)> weapons{true, true};  // the fist and the pistol
   Weapon ready = Weapon::kPistol;
   std::array<int, size_t(Power::kCount)> powers{};  // tics left (strength: on once taken)
-  int bonus_count = 0;  // tics of gold flash left
+  int bonus_count = 0;   // tics of gold flash left
+  int damage_count = 0;  // the red flash: damage taken lately, fading a unit a tic (at most 100)
   int items = 0;        // items counted for the tally
 
   // One tic: the flash fades and timed powers run down (Doom's P_PlayerThink).
@@ -50,8 +51,13 @@ struct Pickup {
 
 // Which of PLAYPAL's palettes the screen shows (Doom's ST_doPaletteStuff): red while
 // hurt or berserk, gold after a pickup, green while the radiation suit is on (it
-// blinks when running out), else 0. `damage` is Doom's damagecount.
-int flash_palette(const Inventory& inventory, int damage = 0);
+// blinks when running out), else 0.
+int flash_palette(const Inventory& inventory);
+
+// Doom's P_DamageMobj for the player hurt by the world (no attacker): halved at skill
+// 1, nothing while invulnerable, armor taking its share (a third, or half for blue),
+// the red flash. Returns the health lost.
+int damage(Inventory& inventory, int amount, int skill);
 
 // Doom's rules for touching a thing of this type: what the player gains, or nothing
 // (taken false: the thing stays, as a medikit at full health). `keys` holds the six

@@ -31,6 +31,11 @@ std::optional<wad::IndexedImage> picture(const wad::Stack& wads, const std::stri
 }  // namespace
 
 void Face::tic(Random& random, int health) {
+  if (health <= 0) {  // Doom's dead face, after the 40 of pain and the god's
+    random.other();
+    index_ = kPainFaces * kFaceStride + 1;
+    return;
+  }
   const int shown = std::clamp(health, 0, 100);
   const int pain = kFaceStride * (((100 - shown) * kPainFaces) / 101);
   const int glance = random.other();  // Doom draws it every tic, whether used or not

@@ -244,14 +244,52 @@ void World::pick_up(Player& p) {
 }
 
 // Standing on the floor of a secret sector finds it (once).
-void World::find_secret(Player& p) {
+// And the floors that hurt, every 32 tics of level time, unless the radiation suit
+// is on (super slime gets through it now and then, by Doom's play stream).
+void World::in_special_sector(Player& p) {
   const int sector = level_.sector_at(p.pos);
   if (sector == level::kNone) return;
   level::SectorState& s = state_.sectors[size_t(sector)];
-  if (s.special != doom::kSecretSector || p.z != s.floor) return;
-  s.special = 0;
-  ++secrets_found_;
-  say(Event::Kind::kSecret, "A secret is revealed!");
+  if (p.z != s.floor) return;  // not all the way down yet
+  const bool suit = p.inventory.powers[size_t(play::Power::kIronFeet)] != 0;
+  const bool now = (level_time_ & 31) == 0;
+  switch (s.special) {
+    case doom::kSecretSector:
+      s.special = 0;
+      ++secrets_found_;
+      say(Event::Kind::kSecret, "A secret is revealed!");
+      break;
+    case doom::kSlimeHurt:
+      if (!suit && now) hurt(p, 10);
+      break;
+    case doom::kNukageHurt:
+      if (!suit && now) hurt(p, 5);
+      break;
+    case doom::kSuperSlimeHurt:
+    case doom::kStrobeHurt:
+      if ((!suit || random_.play() < 5) && now) hurt(p, 20);
+      break;
+    case doom::kExitHurt:
+      if (now) hurt(p, std::min(20, p.inventory.health - 1));  // Doom's hack: the end of E1M8 never kills
+      if (p.inventory.health <= 10) exit_ = Exit::kNormal;
+      break;
+    default:
+      break;
+  }
+}
+
+// Doom's P_DamageMobj on the player from the world: the inventory's rules, then death,
+// or pain by Doom's play stream (the player's pain chance is 255 of 256).
+void World::hurt(Player& p, int amount) {
+  if (p.inventory.powers[size_t(play::Power::kInvulnerability)]) return;
+  play::damage(p.inventory, amount, skill_);
+  if (p.inventory.health <= 0) {
+    p.dead = true;
+    p.momentum = {0, 0};
+    sounds_.push_back({play::Sound::kPldeth});
+    return;
+  }
+  if (random_.play() < play::thing_info(play::ThingType::kPlayer).pain_chance) sounds_.push_back({play::Sound::kPlpain});
 }
 
 }  // namespace p3d::sim

@@ -274,6 +274,26 @@ void World::tick(Player& p, const TicCommand& cmd) {
   events_.clear();
   sounds_.clear();
   movers_.clear_sounds();
+  if (p.dead)
+    dead_tic(p, cmd);
+  else
+    player_tic(p, cmd);
+  movers_.tick([&](int sector) { return fits_after_move(p, sector); });
+  tick_buttons();
+  sounds_.insert(sounds_.end(), movers_.sounds().begin(), movers_.sounds().end());
+  things_.tick(state_);                                    // Doom's thinkers, then
+  level::animate_textures(level_, state_, level_time_++);  // its P_UpdateSpecials
+  scroll_walls();
+}
+
+// Doom's P_DeathThink: the view sinks to 6 units above the floor; use asks for the level again.
+void World::dead_tic(Player& p, const TicCommand& cmd) {
+  p.inventory.tic();
+  p.view_offset = std::max(p.view_offset - 1, 6 - kViewHeight);
+  if (cmd.buttons & kUse) reborn_ = true;
+}
+
+void World::player_tic(Player& p, const TicCommand& cmd) {
   if (cmd.buttons & kNoclip) {
     p.noclip = !p.noclip;
     say(Event::Kind::kCheat, p.noclip ? "No Clipping Mode ON" : "No Clipping Mode OFF");
@@ -290,7 +310,7 @@ void World::tick(Player& p, const TicCommand& cmd) {
     }
   }
   p.inventory.tic();
-  find_secret(p);
+  in_special_sector(p);
   const bool use = cmd.buttons & kUse;
   if (use && !p.use_held) use_lines(p);
   p.use_held = use;
@@ -301,12 +321,6 @@ void World::tick(Player& p, const TicCommand& cmd) {
   }
   fall(p);
   pick_up(p);
-  movers_.tick([&](int sector) { return fits_after_move(p, sector); });
-  tick_buttons();
-  sounds_.insert(sounds_.end(), movers_.sounds().begin(), movers_.sounds().end());
-  things_.tick(state_);                                    // Doom's thinkers, then
-  level::animate_textures(level_, state_, level_time_++);  // its P_UpdateSpecials
-  scroll_walls();
 }
 
 }  // namespace p3d::sim

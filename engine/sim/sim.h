@@ -67,6 +67,7 @@ struct Player {
   uint8_t keys = 0;      // KeyBits
   bool noclip = false;
   bool use_held = false;   // use was down last tic
+  bool dead = false;       // its view sinks; use starts the level again (World::reborn)
   int frozen = 0;          // tics left without control (after a teleport, as Doom's)
   play::Inventory inventory;  // health, armor, ammo, weapons, powers (Doom's player_t)
   double view_z() const { return z + kViewHeight + view_offset; }
@@ -123,6 +124,8 @@ class World {
   const std::vector<SoundEvent>& sounds() const { return sounds_; }
   // Set once the player takes an exit; the level keeps running.
   Exit exit() const { return exit_; }
+  // Set once a dead player presses use: the level is to start again (Doom's PST_REBORN).
+  bool reborn() const { return reborn_; }
   int secrets_found() const { return secrets_found_; }
   int secrets_total() const { return secrets_total_; }
   const Movers& movers() const { return movers_; }
@@ -167,7 +170,10 @@ class World {
   void clear_special(uint32_t wall);
   bool teleport(Player& p, uint32_t wall);
   void pick_up(Player& p);
-  void find_secret(Player& p);
+  void dead_tic(Player& p, const TicCommand& cmd);
+  void player_tic(Player& p, const TicCommand& cmd);
+  void in_special_sector(Player& p);  // secrets and damaging floors (Doom's P_PlayerInSpecialSector)
+  void hurt(Player& p, int amount);
   void tick_buttons();
   void say(Event::Kind kind, std::string message = {});
 
@@ -190,6 +196,7 @@ class World {
   std::vector<SoundEvent> sounds_;
   Exit exit_ = Exit::kNone;
   bool teleported_ = false;  // during a move
+  bool reborn_ = false;
   double player_floor_ = 0;  // the floor the player last stood on or over (Doom's floorz)
   int secrets_found_ = 0, secrets_total_ = 0;
   uint64_t level_time_ = 0;  // tics played (Doom's leveltime)

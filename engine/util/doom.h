@@ -42,13 +42,17 @@ enum SectorSpecial : int {
   kLightFlicker = 1,
   kStrobeFast = 2,
   kStrobeSlow = 3,
-  kStrobeHurt = 4,     // strobes (and hurts, in Doom)
+  kStrobeHurt = 4,     // strobes, and hurts 20% as super slime does
+  kSlimeHurt = 5,      // 10% every 32 tics without the radiation suit
+  kNukageHurt = 7,     // 5%
+  kExitHurt = 11,      // E1M8's end: 20%, never to death, and the level ends at 10% health
   kGlow = 8,
   kSecretSector = 9,   // counts as found when the player stands on its floor
   kDoorCloseIn30 = 10,
   kStrobeSlowSync = 12,
   kStrobeFastSync = 13,
   kDoorRaiseIn5Min = 14,
+  kSuperSlimeHurt = 16,  // 20%, even through the suit now and then
   kFireFlicker = 17,
 };
 

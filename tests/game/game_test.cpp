@@ -469,6 +469,30 @@ TEST(Session, TheIntermissionTalliesTheLevel) {
   EXPECT_FALSE(Session(test::source_dir() / "maps/outpost.map").start_intermission()) << "our own levels have none";
 }
 
+// Death on a slime floor, then use: the level starts again with a fresh player, as
+// Doom's single-player reborn.
+TEST(Session, UseAfterDeathStartsTheLevelAgain) {
+  const auto dir = test::temp_dir("reborn");
+  test::WadWriter wad(true);
+  test::add_test_art(wad);
+  test::TestMap m;
+  m.add_room({{0, 0}, {0, 256}, {256, 256}, {256, 0}}, {0, 128, "FLOOR", "CEIL", 160, 5});  // 10% slime
+  m.things.push_back({64, 64, 0, 1});
+  m.add_to(wad, "MAP01");
+  write_file_atomically(dir / "doom.wad", wad.bytes());
+  Session s(bsp::LevelSource{{}, {dir / "doom.wad"}, "MAP01"});
+  for (int t = 0; t < 32 * 10 + 5; ++t) s.tic({25, 0, 0, 0});
+  ASSERT_TRUE(s.player().dead);
+  const geom::Vec2 fell = s.player().pos;
+  s.tic({25, 0, 0, 0});
+  EXPECT_EQ(s.player().pos, fell) << "the dead do not walk";
+  s.tic({0, 0, 0, sim::kUse});
+  EXPECT_FALSE(s.player().dead);
+  EXPECT_EQ(s.player().inventory.health, 100);
+  EXPECT_EQ(s.player().pos, geom::Vec2(64, 64)) << "back at the start";
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Headless, ReplayIsByteForByteReproducible) {
   const auto dir = test::temp_dir("headless");
   Session recorder(test::source_dir() / "maps/outpost.map");

@@ -119,7 +119,9 @@ TEST(Inventory, PaletteFlashesAsDoomsStatusBarPicksThem) {
   EXPECT_EQ(flash_palette(inv), 13);
   inv.bonus_count = 3;
   EXPECT_EQ(flash_palette(inv), 9 + 1) << "gold before green";
-  EXPECT_EQ(flash_palette(inv, 20), 1 + 3) << "red before gold: damage 20";
+  inv.damage_count = 20;
+  EXPECT_EQ(flash_palette(inv), 1 + 3) << "red before gold: damage 20";
+  inv.damage_count = 0;
   Inventory berserk;
   take(berserk, 2023);
   EXPECT_EQ(flash_palette(berserk), 1 + 2) << "berserk's red, fading over 12 x 64 tics";

@@ -89,6 +89,8 @@ TEST(StatusBar, TheFaceGlancesEveryHalfSecondAndShowsPain) {
   Face hurt;
   for (int tic = 0; tic < 20; ++tic) hurt.tic(random, 10);
   EXPECT_GE(hurt.index(), 4 * 8) << "10% health: the last face of pain";
+  hurt.tic(random, 0);
+  EXPECT_EQ(hurt.index(), 5 * 8 + 1) << "the dead face (STFDEAD0), after the god's";
 }
 
 // Doom's message font: capitals from STCFN, other characters a 4-pixel space.

@@ -460,6 +460,53 @@ TEST(Pickups, WalkingOverThingsTakesWhatDoomWouldGive) {
   EXPECT_EQ(heard, (std::vector<play::Sound>{play::Sound::kItemup, play::Sound::kWpnup}));
 }
 
+// Doom's damaging floors: 5% or 10% or 20% every 32 tics of level time while standing on
+// them, nothing through the radiation suit (but super slime's 2% chance a tic), armor
+// taking its share, the red flash, death at 0 and the level again on use.
+TEST(Damage, FloorsHurtEveryThirtyTwoTicsAsDoomsDo) {
+  auto floor_map = [](int special) {
+    TestMap m;
+    m.add_room(rect(0, 0, 256, 256), {0, 128, "FLOOR", "CEIL", 160, special});
+    m.things.push_back({128, 128, 0, 1});
+    return m;
+  };
+  Play nukage(floor_map(7));
+  nukage.run(33, kStand);
+  EXPECT_GT(play::flash_palette(nukage.player.inventory), 0) << "red, fading";
+  nukage.run(31, kStand);
+  EXPECT_EQ(nukage.player.inventory.health, 90) << "5% at tics 0 and 32";
+  EXPECT_EQ(play::flash_palette(nukage.player.inventory), 0) << "faded";
+  int pains = 0;
+  for (const auto& [tic, e] : nukage.sounds) pains += e.sound == play::Sound::kPlpain;
+  EXPECT_EQ(pains, 2);
+
+  Play suited(floor_map(5));
+  suited.player.inventory.powers[size_t(play::Power::kIronFeet)] = 60 * 35;  // in the radiation suit
+  suited.run(64, kStand);
+  EXPECT_EQ(suited.player.inventory.health, 100) << "the suit keeps the slime out";
+
+  Play armored(floor_map(16));  // super slime, in green armor
+  armored.player.inventory.armor = 100;
+  armored.player.inventory.armor_type = 1;
+  armored.run(2, kStand);
+  EXPECT_EQ(armored.player.inventory.health, 100 - 14) << "20 less a third to the armor";
+  EXPECT_EQ(armored.player.inventory.armor, 100 - 6);
+
+  Play dying(floor_map(5));
+  dying.run(32 * 10, kStand);
+  EXPECT_TRUE(dying.player.dead);
+  EXPECT_EQ(dying.player.inventory.health, 0);
+  EXPECT_LT(dying.player.view_offset, -30) << "the view sinks";
+  EXPECT_FALSE(dying.world.reborn());
+  dying.run(1, kUseCmd);
+  EXPECT_TRUE(dying.world.reborn()) << "use asks for the level again";
+
+  Play end(floor_map(11));  // E1M8's end
+  end.run(32 * 6, kStand);
+  EXPECT_GT(end.player.inventory.health, 0) << "never to death";
+  EXPECT_EQ(end.world.exit(), Exit::kNormal) << "the level ends at 10%";
+}
+
 TEST(Lights, SectorSpecialsFlickerDeterministically) {
   TestMap m;
   m.add_room(rect(0, 0, 256, 256), {0, 128, "FLOOR", "CEIL", 200, 1});    // flickers
