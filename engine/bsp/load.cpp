@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "engine/level/io.h"
+#include "engine/play/things.h"
 #include "engine/util/error.h"
 #include "engine/util/file.h"
 
@@ -104,7 +105,9 @@ std::string map_title(const wad::Stack& wads, const std::string& map) {
 
 level::Level build_wad_map(const wad::Stack& wads, const std::string& map, const Options& options,
                            std::vector<std::string>* warnings, Stats* stats, const wad::ImportOptions& import) {
-  wad::ImportResult imported = wad::import_map(wads, map, import);
+  wad::ImportOptions with_frames = import;
+  if (!with_frames.thing_frames) with_frames.thing_frames = play::idle_frames;  // things animate in their idle loops
+  wad::ImportResult imported = wad::import_map(wads, map, with_frames);
   imported.source.title = map_title(wads, wad::normalize_name(map));
   Options o = options;
   o.player_must_be_inside = false;

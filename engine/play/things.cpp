@@ -19,6 +19,20 @@ std::string drop_key(const level::SpriteFrame& f) {
 
 }  // namespace
 
+std::vector<wad::FrameName> idle_frames(int editor_number) {
+  std::vector<wad::FrameName> out;
+  const ThingType type = thing_type_for_editor_number(editor_number);
+  if (type == ThingType::kCount) return out;
+  std::vector<bool> seen(size_t(StateId::kCount), false);
+  for (StateId s = thing_info(type).spawn; s != StateId::kNull && !seen[size_t(s)];) {
+    seen[size_t(s)] = true;
+    const StateInfo& info = state_info(s);
+    if (info.tics != 0) out.push_back({kSpriteNames[size_t(info.sprite)], char('A' + info.frame), info.bright});
+    s = info.next;
+  }
+  return out;
+}
+
 ThingClocks::ThingClocks(const level::Level& level, const level::State& state, Random& random) : level_(level) {
   for (size_t i = 0; i < level.sprite_frames.size(); ++i) {
     const level::SpriteFrame& f = level.sprite_frames[i];

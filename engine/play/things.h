@@ -11,8 +11,14 @@
 #include "engine/level/level.h"
 #include "engine/play/random.h"
 #include "engine/play/state_machine.h"
+#include "engine/wad/import.h"
 
 namespace p3d::play {
+
+// The frames a thing of this editor number shows from its first state on, following
+// each state's next (Doom's idle loops: torches flicker, monsters breathe, pickups
+// blink): what the importer embeds for ThingClocks to show.
+std::vector<wad::FrameName> idle_frames(int editor_number);
 
 class ThingClocks {
  public:

@@ -6,10 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <tuple>
 #include <unordered_map>
 
-#include "engine/play/info.h"
 #include "engine/util/error.h"
 #include "engine/wad/art.h"
 #include "engine/wad/nodes.h"
@@ -448,25 +446,9 @@ class Importer {
       return map::kNone;
     }
     const int first = sprite_frame(*info, info->sprite, info->frame, info->bright, record);
-    if (first != map::kNone)
-      for (const auto& [sprite, frame, bright] : idle_frames(type)) sprite_frame(*info, sprite, frame, bright, record);
+    if (first != map::kNone && options_.thing_frames)
+      for (const FrameName& f : options_.thing_frames(type)) sprite_frame(*info, f.sprite, f.frame, f.bright, record);
     return first;
-  }
-
-  // The frames a thing type shows from its first state on, following each state's
-  // next (Doom's idle loops: torches flicker, monsters breathe, pickups blink).
-  static std::vector<std::tuple<std::string, char, bool>> idle_frames(int type) {
-    std::vector<std::tuple<std::string, char, bool>> out;
-    const play::ThingType t = play::thing_type_for_editor_number(type);
-    if (t == play::ThingType::kCount) return out;
-    std::vector<bool> seen(size_t(play::StateId::kCount), false);
-    for (play::StateId s = play::thing_info(t).spawn; s != play::StateId::kNull && !seen[size_t(s)];) {
-      seen[size_t(s)] = true;
-      const play::StateInfo& info = play::state_info(s);
-      if (info.tics != 0) out.emplace_back(play::kSpriteNames[size_t(info.sprite)], char('A' + info.frame), info.bright);
-      s = info.next;
-    }
-    return out;
   }
 
   // A sprite frame of a thing type, built once for each way of showing it (a frame

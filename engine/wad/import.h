@@ -14,6 +14,7 @@
 // lines, sectors that do not close, lines with the same sector on both sides.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,8 +25,19 @@
 
 namespace p3d::wad {
 
+// A sprite frame a thing may show: its four-letter name, frame letter and full bright.
+struct FrameName {
+  std::string sprite;
+  char frame;
+  bool bright;
+};
+
 struct ImportOptions {
   size_t max_warnings_per_kind = SIZE_MAX;  // further warnings of a kind are counted, not listed
+  // The frames a thing type shows as it walks its states (the rules above the importer
+  // know them: bsp::build_wad_map asks engine/play), embedded beside its first; none
+  // when unset.
+  std::function<std::vector<FrameName>(int editor_number)> thing_frames;
 };
 
 struct ImportResult {
