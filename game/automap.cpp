@@ -126,15 +126,14 @@ void Automap::draw(render::Frame& frame, const level::Level& level, const level:
                        order_colour(k, draw_order.size()));
   }
   if (settings.things)
-    for (size_t i = 0; i < level.things.size(); ++i) {
-      const level::Thing& t = level.things[i];
-      if (!state.things[i] || !visible(t.pos, t.pos)) continue;
+    for (const level::ShownThing& t : state.things) {
+      if (!visible(t.pos, t.pos)) continue;
       const geom::Vec2 c = screen(t.pos);
       const double a = t.angle * M_PI / 180, r = std::max(2.0, 10 * scale);
       const geom::Vec2 tip = c + geom::Vec2(std::cos(a), -std::sin(a)) * r;  // a triangle facing its way
       const geom::Vec2 left = c + geom::Vec2(std::cos(a + 2.4), -std::sin(a + 2.4)) * r;
       const geom::Vec2 right = c + geom::Vec2(std::cos(a - 2.4), -std::sin(a - 2.4)) * r;
-      const uint32_t colour = thing_colour(t.type);
+      const uint32_t colour = thing_colour(t.placed != level::kNone ? level.things[size_t(t.placed)].type : 0);
       image::draw_line(frame, tip, left, colour);
       image::draw_line(frame, left, right, colour);
       image::draw_line(frame, right, tip, colour);

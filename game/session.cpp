@@ -64,7 +64,7 @@ void Session::tic(const sim::TicCommand& cmd) {
   ++tics_;
   if (recording_on_) recording_.tics.push_back(played);
   advance_message();
-  face_.tic(other_random_, player_.inventory.health);
+  face_.tic(other_random_, play::FaceInput{.health = player_.inventory.health});
   for (const sim::Event& e : world_->events())
     if (!e.message.empty()) say(e.message);
   if (listening_) keep_sounds();
@@ -274,9 +274,9 @@ bool Session::start_intermission() {
 play::Tally Session::tally() const {
   play::Tally t;
   const level::State start = level::start_state(*level_, skill_);  // what the level held: the totals
-  for (size_t i = 0; i < level_->things.size(); ++i) {
-    if (!start.things[i]) continue;
-    const play::ThingType type = play::thing_type_for_editor_number(level_->things[i].type);
+  for (const level::ShownThing& shown : start.things) {
+    if (shown.placed == level::kNone) continue;
+    const play::ThingType type = play::thing_type_for_editor_number(level_->things[size_t(shown.placed)].type);
     if (type == play::ThingType::kCount) continue;
     t.total_kills += (play::thing_info(type).flags & play::kCountkill) != 0;
     t.total_items += (play::thing_info(type).flags & play::kCountitem) != 0;

@@ -512,7 +512,7 @@ SpriteCost time_sprites(const level::Level& level, const std::vector<render::Cam
                         const Settings& s) {
   const level::State with = level::start_state(level, skill);
   level::State without = with;
-  std::fill(without.things.begin(), without.things.end(), 0);
+  without.things.clear();
   auto r = render::make_renderer("bsp");
   render::Frame frame(s.width, s.height);
   std::vector<double> a, b;

@@ -106,7 +106,10 @@ std::string map_title(const wad::Stack& wads, const std::string& map) {
 level::Level build_wad_map(const wad::Stack& wads, const std::string& map, const Options& options,
                            std::vector<std::string>* warnings, Stats* stats, const wad::ImportOptions& import) {
   wad::ImportOptions with_frames = import;
-  if (!with_frames.thing_frames) with_frames.thing_frames = play::idle_frames;  // things animate in their idle loops
+  if (!with_frames.thing_frames) {  // every frame Doom's rules may show on the map
+    with_frames.thing_frames = play::reachable_frames;
+    with_frames.always_frames = play::always_frames();
+  }
   wad::ImportResult imported = wad::import_map(wads, map, with_frames);
   imported.source.title = map_title(wads, wad::normalize_name(map));
   Options o = options;

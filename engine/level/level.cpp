@@ -9,7 +9,6 @@
 #include <cmath>
 #include <limits>
 #include <string>
-#include <unordered_map>
 
 #include "engine/geom/polygon.h"
 #include "engine/util/doom.h"
@@ -82,7 +81,7 @@ Texture make_texture_from_columns(std::string name, int width, int height, std::
 
 namespace {
 
-// Each sprite's reach: the farthest any of its pictures extends sideways from its thing.
+// Each sprite frame's reach: the farthest any of its pictures extends sideways from its thing.
 void measure_sprites(Level& level) {
   for (SpriteFrame& f : level.sprite_frames) {
     f.reach = 0;
@@ -90,69 +89,6 @@ void measure_sprites(Level& level) {
       const SpriteImage& img = level.sprite_images[size_t(f.image[r])];
       const int width = level.textures[size_t(img.texture)].width;
       f.reach = std::max({f.reach, double(std::abs(img.left)), double(std::abs(width - img.left))});
-    }
-  }
-  std::unordered_map<std::string, double> by_sprite;  // the largest reach of each four-letter sprite name
-  for (const SpriteFrame& f : level.sprite_frames) {
-    double& r = by_sprite[f.name.substr(0, 4)];
-    r = std::max(r, f.reach);
-  }
-  for (Thing& t : level.things)
-    t.reach = t.sprite == kNone ? 0 : by_sprite[level.sprite_frames[size_t(t.sprite)].name.substr(0, 4)];
-}
-
-// Attaches each drawn thing to the deepest node whose cell holds its sprite's disc,
-// or to a leaf; then culling boxes grow to cover the discs (see finalize in level.h).
-void attach_things(Level& level) {
-  for (Node& n : level.nodes) n.things = {}, n.cull_box = n.bbox;
-  for (Leaf& l : level.leaves) l.things = {};
-  std::vector<int32_t> owner(level.things.size(), 0);  // node index, or leaf_child(leaf)
-  std::vector<uint32_t> node_count(level.nodes.size(), 0), leaf_count(level.leaves.size(), 0);
-  for (size_t i = 0; i < level.things.size(); ++i) {
-    const Thing& t = level.things[i];
-    if (t.sprite == kNone) continue;
-    const double reach = t.reach;
-    int32_t c = 0;
-    for (;;) {
-      if (is_leaf(c)) {
-        ++leaf_count[size_t(leaf_index(c))];
-        break;
-      }
-      const Node& n = level.nodes[size_t(c)];
-      const double side = splitter_side(n, t.pos) / glm::length(n.direction);  // signed distance, > 0 back
-      if (std::fabs(side) <= reach) {
-        ++node_count[size_t(c)];
-        break;
-      }
-      c = n.child[side > 0 ? 1 : 0];
-    }
-    owner[i] = c;
-  }
-  // Ranges: nodes first, then leaves, in index order; things in index order within each.
-  uint32_t next = 0;
-  for (size_t n = 0; n < level.nodes.size(); ++n) level.nodes[n].things = {next, 0}, next += node_count[n];
-  for (size_t l = 0; l < level.leaves.size(); ++l) level.leaves[l].things = {next, 0}, next += leaf_count[l];
-  level.attached_things.assign(next, 0);
-  for (size_t i = 0; i < level.things.size(); ++i) {
-    if (level.things[i].sprite == kNone) continue;
-    ThingRange& r = is_leaf(owner[i]) ? level.leaves[size_t(leaf_index(owner[i]))].things : level.nodes[size_t(owner[i])].things;
-    level.attached_things[r.first + r.count++] = uint32_t(i);
-  }
-  auto disc_box = [&](const ThingRange& r, BBox& box) {
-    for (uint32_t k = r.first; k < r.first + r.count; ++k) {
-      const Thing& t = level.things[level.attached_things[k]];
-      box.add(t.pos - Vec2(t.reach));
-      box.add(t.pos + Vec2(t.reach));
-    }
-  };
-  for (size_t i = level.nodes.size(); i-- > 0;) {  // children come after their parent
-    Node& n = level.nodes[i];
-    disc_box(n.things, n.cull_box);
-    for (int32_t c : n.child) {
-      if (is_leaf(c))
-        disc_box(level.leaves[size_t(leaf_index(c))].things, n.cull_box);
-      else
-        n.cull_box.add(level.nodes[size_t(c)].cull_box);
     }
   }
 }
@@ -251,7 +187,6 @@ void place_in_sectors(Level& level) {
     if (w.segment()) w.segment_sector = one_sector ? level.leaves[0].sector : level.sector_at((w.a + w.b) * 0.5);
   for (Thing& t : level.things)
     if (t.sector == kNone) t.sector = level.sector_at(t.pos);
-  attach_things(level);
 }
 
 State start_state(const Level& level, int skill) {
@@ -262,13 +197,37 @@ State start_state(const Level& level, int skill) {
   for (const Wall& w : level.walls)
     for (const Side& side : w.sides) s.textures.insert(s.textures.end(), {side.upper, side.middle, side.lower});
   for (const Wall& w : level.walls) s.specials.push_back(w.special);
-  s.things.resize(level.things.size());
   for (size_t i = 0; i < level.things.size(); ++i) {
     const Thing& t = level.things[i];
-    s.things[i] = t.sector != kNone && (t.flags & doom::skill_bit(skill)) &&
-                  !(t.flags & doom::kThingNotSingle);
+    if (t.sector == kNone || !(t.flags & doom::skill_bit(skill)) || (t.flags & doom::kThingNotSingle)) continue;
+    ShownThing shown;
+    shown.pos = t.pos;
+    shown.angle = t.angle;
+    shown.frame = t.sprite;
+    shown.sector = t.sector;
+    shown.placed = int32_t(i);
+    shown.z = resting_z(level, s, shown.frame, shown.sector);
+    s.things.push_back(shown);
   }
   return s;
+}
+
+double resting_z(const Level& level, const State& state, int32_t frame, int32_t sector) {
+  const SectorState& s = state.sectors[size_t(sector)];
+  if (frame == kNone) return s.floor;
+  const SpriteFrame& f = level.sprite_frames[size_t(frame)];
+  return f.hanging ? s.ceiling - f.drop : s.floor;
+}
+
+void rest_things(const Level& level, State& state) {
+  for (ShownThing& t : state.things)
+    if (t.sector != kNone) t.z = resting_z(level, state, t.frame, t.sector);
+}
+
+int32_t find_placed(const State& state, int32_t thing) {
+  for (size_t k = 0; k < state.things.size(); ++k)
+    if (state.things[k].placed == thing) return int32_t(k);
+  return kNone;
 }
 
 void animate_textures(const Level& level, State& state, uint64_t tic) {

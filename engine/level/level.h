@@ -123,11 +123,6 @@ struct Fragment {
   bool same_direction = true;  // the wall runs the same way as its node's splitter
 };
 
-// Things attached to a node or leaf: a range of Level::attached_things.
-struct ThingRange {
-  uint32_t first = 0, count = 0;
-};
-
 // Children: index >= 0 is a node, index < 0 is leaf ~index.
 struct Node {
   uint32_t splitter = 0;  // the wall whose line splits this node
@@ -136,8 +131,6 @@ struct Node {
   BBox bbox;  // of every fragment in this subtree
   // Derived on load:
   Vec2 origin, direction;  // the splitter line in map units
-  ThingRange things;       // things whose sprite reaches across this node's splitter
-  BBox cull_box;           // bbox and the reach of every sprite in the subtree: what culling tests
 };
 
 inline bool is_leaf(int32_t child) { return child < 0; }
@@ -146,8 +139,6 @@ inline int32_t leaf_child(int32_t leaf) { return ~leaf; }
 
 struct Leaf {
   int32_t sector = kNone;  // the sector filling this convex cell, or kNone outside the map
-  // Derived on load:
-  ThingRange things;       // things whose sprite lies within this cell
 };
 
 // A picture shown for a thing: a texture and Doom's picture offsets. The thing's
@@ -182,9 +173,6 @@ struct Thing {
   uint32_t flags = 0;  // doom::ThingFlags
   int32_t sprite = kNone;  // its first frame in Level::sprite_frames, or kNone: never drawn (player starts...)
   int32_t sector = kNone;  // the sector it stands in (finalize finds it by point location when kNone)
-  // Derived on load: the farthest any frame of its sprite (Doom's four-letter name)
-  // extends sideways, whichever of them the world shows.
-  double reach = 0;
 };
 
 // The tile grid of a level compiled from a .grid map, for the grid ray caster.
@@ -236,7 +224,6 @@ struct Level {
   // Derived on load:
   BBox bounds;              // of all walls
   uint64_t generation = 0;  // unique per finalize(): renderers key per-level caches on it
-  std::vector<uint32_t> attached_things;  // thing indices, by node and leaf (see ThingRange)
 
   // Point location: descend the BSP. A point on a splitter goes to the front.
   int leaf_at(Vec2 p) const;
@@ -250,32 +237,38 @@ void derive_shading(Level& level);
 // The fields geometry alone decides: wall and fragment points, node lines, bounds,
 // sprite reaches.
 void derive_geometry(Level& level);
-// The sectors plain segments and things stand in (by point location) and where each
-// thing's sprite attaches to the tree. Needs derive_geometry and the leaves' sectors:
-// call again after changing them.
-//
-// A sprite is a picture facing the viewer, so it may reach up to SpriteFrame::reach
-// sideways from its thing, across splitters. It attaches to the deepest node whose
-// cell holds that whole disc (or to the leaf, if one does), and culling boxes cover
-// these discs: a subtree is skipped only when every column it could touch was closed
-// by walls visited earlier, which lie in front of every point of the subtree's cell.
-// So culling never hides a visible sprite pixel.
+// The sectors plain segments and things stand in (by point location). Needs
+// derive_geometry and the leaves' sectors: call again after changing them.
 void place_in_sectors(Level& level);
 
 // What changes while a level is played, beside the immutable level: sector heights,
 // flats, light and special (doors and lifts move, floors change their flat), wall
-// textures (switches flip) and specials (used up), and which things are present
-// (the skill played, keys picked up). Renderers and the simulation read the level
-// through a state.
+// textures (switches flip) and specials (used up), and the things in the world (the
+// skill played, pickups taken, monsters walking, missiles flying). Renderers and the
+// simulation read the level through a state.
 struct SectorState {
   double floor = 0, ceiling = 0;
   int light = 0;
   int floor_texture = kNone, ceiling_texture = kNone;  // either may be kSky
   int special = 0;
 };
+// A thing as the world shows it now (Doom's mobj as the renderer sees it).
+struct ShownThing {
+  Vec2 pos;
+  double z = 0;            // feet (the sprite's origin) height, absolute
+  double angle = 0;        // degrees, counter-clockwise from east: picks the rotation
+  int32_t frame = kNone;   // index into Level::sprite_frames; kNone: not drawn
+  int32_t sector = kNone;  // the sector whose light it takes (Doom: its subsector's sector)
+  uint8_t flags = 0;       // ShownFlag bits
+  int32_t placed = kNone;  // its index in Level::things when placed on the map (Doom's spawnpoint), else kNone
+};
+enum ShownFlag : uint8_t { kShownShadow = 1 };  // Doom's partial invisibility (MF_SHADOW): drawn as Doom's fuzz
+
 struct State {
   std::vector<SectorState> sectors;
-  std::vector<uint8_t> things;    // per thing: 1 when present
+  // The things in the world, drawn whatever their order (equal depths: the lower index
+  // first). A sprite may reach SpriteFrame::reach sideways from its thing.
+  std::vector<ShownThing> things;
   std::vector<int32_t> textures;  // per wall, side and Part: [(wall * 2 + side) * 3 + part]
   std::vector<int32_t> specials;  // per wall: its line special, 0 once used up
   // Per texture, the one drawn in its place (animations); empty: each draws itself.
@@ -283,13 +276,9 @@ struct State {
   // Per wall, how far its front side's texture has scrolled left (Doom's special 48,
   // one unit a tic); empty: no wall scrolls.
   std::vector<double> scrolled;
-  // Per thing, the sprite frame it shows now (things animate); empty: their first.
-  // A frame shown must share the first one's sprite name (Thing::reach covers those).
-  std::vector<int32_t> thing_sprites;
 
   // The texture drawn for `texture` (kNone and kSky stay as they are).
   int shown(int texture) const { return texture < 0 || shown_textures.empty() ? texture : shown_textures[size_t(texture)]; }
-  int32_t thing_sprite(uint32_t thing, int32_t first) const { return thing_sprites.empty() ? first : thing_sprites[thing]; }
   double scroll(uint32_t wall, int side) const { return side != 0 || scrolled.empty() ? 0 : scrolled[wall]; }
 
   int texture(uint32_t wall, int side, int part) const { return textures[(size_t(wall) * 2 + size_t(side)) * 3 + size_t(part)]; }
@@ -297,10 +286,19 @@ struct State {
 };
 
 constexpr int kDefaultSkill = 3;  // Doom's "Hurt me plenty"
-// The level as it starts at a skill (1..5, as Doom's -skill): things absent at that
-// skill and things only in multiplayer games are left out (things without a sprite
-// are present but never drawn).
+// The level as it starts at a skill (1..5, as Doom's -skill): its things in THINGS
+// order, each showing its first frame where it rests (resting_z); things absent at
+// that skill and things only in multiplayer games are left out (things without a
+// sprite are in, with frame kNone: player starts, teleport destinations).
 State start_state(const Level& level, int skill = kDefaultSkill);
+// Where a thing showing `frame` rests in `sector` now: on its floor, or for a hanging
+// frame (SpriteFrame::hanging) its drop below the ceiling.
+double resting_z(const Level& level, const State& state, int32_t frame, int32_t sector);
+// Every thing back to rest (resting_z): how a simulation without heights of its own
+// keeps things on floors that move.
+void rest_things(const Level& level, State& state);
+// The entry of placed thing `thing` (an index in Level::things) in state.things, or kNone.
+int32_t find_placed(const State& state, int32_t thing);
 // Shows each animation's frames as Doom does after the tic at level time `tic`
 // (the first tic is 0); before the first tic every texture shows itself.
 void animate_textures(const Level& level, State& state, uint64_t tic);

@@ -6,11 +6,44 @@ namespace p3d::play {
 
 namespace {
 
-constexpr std::array<int, 4> kClipAmmo = {10, 4, 20, 1};
+constexpr std::array<int, 4> kClipAmmo = {10, 4, 20, 1};  // a clip's worth of each ammo
 constexpr int kInvulnerableTics = 30 * 35, kInvisibleTics = 60 * 35, kInfraredTics = 120 * 35, kIronFeetTics = 60 * 35;
+constexpr int kMaxArmor = 200;
 
-// P_GiveAmmo: `clips` clips' worth (0: half a clip, as dropped clips give), none when
-// full; an empty weapon in hand may give way to a better one that uses this ammo.
+bool owns(const Inventory& inv, Weapon weapon) { return inv.weapons[size_t(weapon)]; }
+
+// The weapon P_GiveAmmo raises when ammo comes after none: Doom's fixed preferences,
+// only over the fist or pistol (the player chose anything else on purpose).
+Weapon preferred_for(const Inventory& inv, AmmoType ammo) {
+  const Weapon r = inv.ready;
+  const bool bare = r == Weapon::kFist, light = r == Weapon::kFist || r == Weapon::kPistol;
+  switch (ammo) {
+    case AmmoType::kClip:
+      if (bare) return owns(inv, Weapon::kChaingun) ? Weapon::kChaingun : Weapon::kPistol;
+      break;
+    case AmmoType::kShell:
+      if (light && owns(inv, Weapon::kShotgun)) return Weapon::kShotgun;
+      break;
+    case AmmoType::kCell:
+      if (light && owns(inv, Weapon::kPlasma)) return Weapon::kPlasma;
+      break;
+    case AmmoType::kMissile:
+      if (bare && owns(inv, Weapon::kMissile)) return Weapon::kMissile;
+      break;
+    default:
+      break;
+  }
+  return inv.pending;
+}
+
+// A key's bit and its message.
+struct Key {
+  int card;
+  const char* message;
+};
+
+}  // namespace
+
 bool give_ammo(Inventory& inv, AmmoType ammo, int clips, int skill) {
   if (ammo == AmmoType::kNone) return false;
   const size_t a = size_t(ammo);
@@ -19,41 +52,21 @@ bool give_ammo(Inventory& inv, AmmoType ammo, int clips, int skill) {
   if (skill == 1 || skill == 5) n <<= 1;  // Doom's trainer and nightmare skills
   const int before = inv.ammo[a];
   inv.ammo[a] = std::min(inv.ammo[a] + n, inv.max_ammo[a]);
-  if (before) return true;
-  auto owned = [&](Weapon w) { return inv.weapons[size_t(w)]; };
-  const Weapon r = inv.ready;
-  switch (ammo) {  // Doom's fixed preferences
-    case AmmoType::kClip:
-      if (r == Weapon::kFist) inv.ready = owned(Weapon::kChaingun) ? Weapon::kChaingun : Weapon::kPistol;
-      break;
-    case AmmoType::kShell:
-      if ((r == Weapon::kFist || r == Weapon::kPistol) && owned(Weapon::kShotgun)) inv.ready = Weapon::kShotgun;
-      break;
-    case AmmoType::kCell:
-      if ((r == Weapon::kFist || r == Weapon::kPistol) && owned(Weapon::kPlasma)) inv.ready = Weapon::kPlasma;
-      break;
-    case AmmoType::kMissile:
-      if (r == Weapon::kFist && owned(Weapon::kMissile)) inv.ready = Weapon::kMissile;
-      break;
-    default:
-      break;
-  }
+  if (!before) inv.pending = preferred_for(inv, ammo);
   return true;
 }
 
-// P_GiveWeapon in a single-player game: its ammo (two clips, one if dropped), and the
-// weapon taken in hand if new.
 bool give_weapon(Inventory& inv, Weapon weapon, bool dropped, int skill) {
-  const bool ammo = give_ammo(inv, ammo_of(weapon), dropped ? 1 : 2, skill);
-  if (inv.weapons[size_t(weapon)]) return ammo;
+  const bool gave_ammo = give_ammo(inv, ammo_of(weapon), dropped ? 1 : 2, skill);
+  if (owns(inv, weapon)) return gave_ammo;
   inv.weapons[size_t(weapon)] = true;
-  inv.ready = weapon;  // Doom lowers the old one and raises this one; weapons do not act yet
+  inv.pending = weapon;
   return true;
 }
 
-bool give_body(Inventory& inv, int n) {
+bool give_body(Inventory& inv, int amount) {
   if (inv.health >= kMaxHealth) return false;
-  inv.health = std::min(inv.health + n, kMaxHealth);
+  inv.health = std::min(inv.health + amount, kMaxHealth);
   return true;
 }
 
@@ -64,9 +77,15 @@ bool give_armor(Inventory& inv, int type) {
   return true;
 }
 
-bool give_power(Inventory& inv, Power p) {
-  int& left = inv.powers[size_t(p)];
-  switch (p) {
+void give_card(Inventory& inv, uint8_t& keys, int card) {
+  if (keys & (1 << card)) return;
+  inv.bonus_count = kBonusAdd;  // set, not added: the pickup adds its own on top
+  keys |= uint8_t(1 << card);
+}
+
+bool give_power(Inventory& inv, Power power) {
+  int& left = inv.powers[size_t(power)];
+  switch (power) {
     case Power::kInvulnerability: left = kInvulnerableTics; return true;
     case Power::kInvisibility: left = kInvisibleTics; return true;
     case Power::kInfrared: left = kInfraredTics; return true;
@@ -76,19 +95,26 @@ bool give_power(Inventory& inv, Power p) {
       left = 1;
       return true;
     default:
-      if (left) return false;
+      if (left) return false;  // the map, once
       left = 1;
       return true;
   }
 }
 
-std::string key_pickup(uint8_t& keys, int bit, const char* message) {
-  const bool had = keys & (1 << bit);
-  keys |= uint8_t(1 << bit);
-  return had ? "" : message;
+int absorb_damage(Inventory& inv, int damage) {
+  if (inv.armor_type) {
+    int saved = inv.armor_type == 1 ? damage / 3 : damage / 2;
+    if (inv.armor <= saved) {  // the armor is used up
+      saved = inv.armor;
+      inv.armor_type = 0;
+    }
+    inv.armor -= saved;
+    damage -= saved;
+  }
+  inv.health = std::max(inv.health - damage, 0);
+  inv.damage_count = std::min(inv.damage_count + damage, 100);  // a telefrag's 10000 stops at 100
+  return damage;
 }
-
-}  // namespace
 
 AmmoType ammo_of(Weapon weapon) {
   switch (weapon) {
@@ -101,20 +127,10 @@ AmmoType ammo_of(Weapon weapon) {
 }
 
 int damage(Inventory& inv, int amount, int skill) {
-  if (skill == 1) amount >>= 1;  // Doom's trainer skill takes half
-  if (inv.powers[size_t(Power::kInvulnerability)]) return 0;
-  if (inv.armor_type) {
-    int saved = inv.armor_type == 1 ? amount / 3 : amount / 2;
-    if (inv.armor <= saved) {  // the armor is used up
-      saved = inv.armor;
-      inv.armor_type = 0;
-    }
-    inv.armor -= saved;
-    amount -= saved;
-  }
+  amount = damage_at_skill(amount, skill);
+  if (amount < 1000 && inv.powers[size_t(Power::kInvulnerability)]) return 0;
   const int before = inv.health;
-  inv.health = std::max(inv.health - amount, 0);
-  inv.damage_count = std::min(inv.damage_count + amount, 100);
+  absorb_damage(inv, amount);
   return before - inv.health;
 }
 
@@ -152,20 +168,14 @@ StatusValues Inventory::status(uint8_t keys, int face) const {
   return v;
 }
 
-Pickup touch(Inventory& inv, uint8_t& keys, ThingType type, bool dropped, int skill, bool commercial) {
+Pickup touch(Inventory& inv, uint8_t& keys, Sprite sprite, bool dropped, bool counted, int skill, bool commercial) {
   Pickup p;
   std::string& m = p.message;
-  const Sprite sprite = state_info(thing_info(type).spawn).sprite;
-  auto weapon = [&](Weapon w, bool drop, const char* message) {
-    if (!give_weapon(inv, w, drop, skill)) return false;
-    m = message;
-    p.sound = Sound::kWpnup;
-    return true;
-  };
+  // Each returns whether the thing is taken, its message said.
+  auto armor = [&](int type, const char* message) { return give_armor(inv, type) && (m = message, true); };
+  auto body = [&](int amount, const char* message) { return give_body(inv, amount) && (m = message, true); };
   auto ammo = [&](AmmoType a, int clips, const char* message) {
-    if (!give_ammo(inv, a, clips, skill)) return false;
-    m = message;
-    return true;
+    return give_ammo(inv, a, clips, skill) && (m = message, true);
   };
   auto power = [&](Power w, const char* message) {
     if (!give_power(inv, w)) return false;
@@ -173,16 +183,27 @@ Pickup touch(Inventory& inv, uint8_t& keys, ThingType type, bool dropped, int sk
     p.sound = Sound::kGetpow;
     return true;
   };
+  auto weapon = [&](Weapon w, bool drop, const char* message) {
+    if (!give_weapon(inv, w, drop, skill)) return false;
+    m = message;
+    p.sound = Sound::kWpnup;
+    return true;
+  };
+  auto key = [&](const Key& k) {  // taken even when held, silently
+    if (!(keys & (1 << k.card))) m = k.message;
+    give_card(inv, keys, k.card);
+    return true;
+  };
   bool taken = true;
   switch (sprite) {
-    case Sprite::kArm1: taken = give_armor(inv, 1), m = "Picked up the armor."; break;
-    case Sprite::kArm2: taken = give_armor(inv, 2), m = "Picked up the MegaArmor!"; break;
+    case Sprite::kArm1: taken = armor(1, "Picked up the armor."); break;
+    case Sprite::kArm2: taken = armor(2, "Picked up the MegaArmor!"); break;
     case Sprite::kBon1:
       inv.health = std::min(inv.health + 1, kMaxBonusHealth);
       m = "Picked up a health bonus.";
       break;
     case Sprite::kBon2:
-      inv.armor = std::min(inv.armor + 1, 200);
+      inv.armor = std::min(inv.armor + 1, kMaxArmor);
       if (!inv.armor_type) inv.armor_type = 1;
       m = "Picked up an armor bonus.";
       break;
@@ -192,19 +213,19 @@ Pickup touch(Inventory& inv, uint8_t& keys, ThingType type, bool dropped, int sk
       p.sound = Sound::kGetpow;
       break;
     case Sprite::kMega:
-      if (!commercial) return p;
+      if (!commercial) return {};
       inv.health = 200;
       give_armor(inv, 2);
       m = "MegaSphere!";
       p.sound = Sound::kGetpow;
       break;
-    case Sprite::kBkey: m = key_pickup(keys, 0, "Picked up a blue keycard."); break;
-    case Sprite::kYkey: m = key_pickup(keys, 1, "Picked up a yellow keycard."); break;
-    case Sprite::kRkey: m = key_pickup(keys, 2, "Picked up a red keycard."); break;
-    case Sprite::kBsku: m = key_pickup(keys, 3, "Picked up a blue skull key."); break;
-    case Sprite::kYsku: m = key_pickup(keys, 4, "Picked up a yellow skull key."); break;
-    case Sprite::kRsku: m = key_pickup(keys, 5, "Picked up a red skull key."); break;
-    case Sprite::kStim: taken = give_body(inv, 10), m = "Picked up a stimpack."; break;
+    case Sprite::kBkey: taken = key({0, "Picked up a blue keycard."}); break;
+    case Sprite::kYkey: taken = key({1, "Picked up a yellow keycard."}); break;
+    case Sprite::kRkey: taken = key({2, "Picked up a red keycard."}); break;
+    case Sprite::kBsku: taken = key({3, "Picked up a blue skull key."}); break;
+    case Sprite::kYsku: taken = key({4, "Picked up a yellow skull key."}); break;
+    case Sprite::kRsku: taken = key({5, "Picked up a red skull key."}); break;
+    case Sprite::kStim: taken = body(10, "Picked up a stimpack."); break;
     case Sprite::kMedi:
       taken = give_body(inv, 25);
       m = inv.health < 25 ? "Picked up a medikit that you REALLY need!" : "Picked up a medikit.";
@@ -212,7 +233,7 @@ Pickup touch(Inventory& inv, uint8_t& keys, ThingType type, bool dropped, int sk
     case Sprite::kPinv: taken = power(Power::kInvulnerability, "Invulnerability!"); break;
     case Sprite::kPstr:
       taken = power(Power::kStrength, "Berserk!");
-      if (taken) inv.ready = Weapon::kFist;
+      if (taken && inv.ready != Weapon::kFist) inv.pending = Weapon::kFist;
       break;
     case Sprite::kPins: taken = power(Power::kInvisibility, "Partial Invisibility"); break;
     case Sprite::kSuit: taken = power(Power::kIronFeet, "Radiation Shielding Suit"); break;
@@ -231,7 +252,7 @@ Pickup touch(Inventory& inv, uint8_t& keys, ThingType type, bool dropped, int sk
         for (int& max : inv.max_ammo) max *= 2;
         inv.backpack = true;
       }
-      for (int a = 0; a < 4; ++a) give_ammo(inv, AmmoType(a), 1, skill);
+      for (int a = 0; a < int(AmmoType::kCount); ++a) give_ammo(inv, AmmoType(a), 1, skill);
       m = "Picked up a backpack full of ammo!";
       break;
     case Sprite::kBfug: taken = weapon(Weapon::kBfg, false, "You got the BFG9000!  Oh, yes."); break;
@@ -241,13 +262,18 @@ Pickup touch(Inventory& inv, uint8_t& keys, ThingType type, bool dropped, int sk
     case Sprite::kPlas: taken = weapon(Weapon::kPlasma, false, "You got the plasma gun!"); break;
     case Sprite::kShot: taken = weapon(Weapon::kShotgun, dropped, "You got the shotgun!"); break;
     case Sprite::kSgn2: taken = weapon(Weapon::kSuperShotgun, dropped, "You got the super shotgun!"); break;
-    default: return p;  // not a thing Doom lets the player pick up
+    default: return {};  // not a thing Doom lets the player pick up
   }
   if (!taken) return {};
   p.taken = true;
-  if (thing_info(type).flags & kCountitem) ++inv.items;
+  if (counted) ++inv.items;
   inv.bonus_count += kBonusAdd;
   return p;
+}
+
+Pickup touch(Inventory& inv, uint8_t& keys, ThingType type, bool dropped, int skill, bool commercial) {
+  const ThingInfo& info = thing_info(type);
+  return touch(inv, keys, state_info(info.spawn).sprite, dropped, (info.flags & kCountitem) != 0, skill, commercial);
 }
 
 }  // namespace p3d::play

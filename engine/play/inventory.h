@@ -1,7 +1,7 @@
 // What the player carries, and Doom's rules for picking things up (P_TouchSpecialThing
-// and the P_Give* functions of p_inter.c): health, armor, ammo, weapons, keys and
-// powers, with Doom's messages and sounds. Pure rules on a plain record; the
-// simulation decides when the player touches a thing.
+// and the P_Give* functions of p_inter.c) and for armor taking damage: health, armor,
+// ammo, weapons, keys and powers, with Doom's messages and sounds. Pure rules on a
+// plain record; the simulation decides when the player touches a thing.
 #pragma once
 
 #include <array>
@@ -32,6 +32,7 @@ struct Inventory {
   bool backpack = false;
   std::array<bool, size_t(Weapon::kCount)> weapons{true, true};  // the fist and the pistol
   Weapon ready = Weapon::kPistol;
+  Weapon pending = Weapon::kCount;  // the weapon to raise next; kCount: no change (Doom's wp_nochange)
   std::array<int, size_t(Power::kCount)> powers{};  // tics left (strength: on once taken)
   int bonus_count = 0;   // tics of gold flash left
   int damage_count = 0;  // the red flash: damage taken lately, fading a unit a tic (at most 100)
@@ -54,15 +55,47 @@ struct Pickup {
 // blinks when running out), else 0.
 int flash_palette(const Inventory& inventory);
 
+// ---- Doom's P_Give* (single player): each returns false when there is nothing to
+// give, so that the thing stays where it lies.
+
+// P_GiveAmmo: `clips` clips' worth (0: half a clip, as a dropped clip gives), doubled
+// at skill 1 and 5, up to the maximum. Ammo after none may make a better weapon pending.
+bool give_ammo(Inventory& inventory, AmmoType ammo, int clips, int skill);
+// P_GiveWeapon: its ammo (two clips, one if dropped); a new weapon becomes pending.
+bool give_weapon(Inventory& inventory, Weapon weapon, bool dropped, int skill);
+// P_GiveBody: health up to 100.
+bool give_body(Inventory& inventory, int amount);
+// P_GiveArmor: type 1 (100 points) or 2 (200), unless the player has as many.
+bool give_armor(Inventory& inventory, int type);
+// P_GiveCard: `card` is the key's bit (0..5); a new key flashes gold.
+void give_card(Inventory& inventory, uint8_t& keys, int card);
+// P_GivePower: the timed powers restart; berserk also heals; the others once.
+// (Invisibility also makes the player's thing a shadow: the World's part.)
+bool give_power(Inventory& inventory, Power power);
+
+// Doom's P_DamageMobj for a player, after the skill's halving and the god and
+// invulnerability checks: armor takes its share (a third, or half for blue), health
+// falls (not below 0) and the red flash grows (up to 100). Returns the damage left,
+// which the player's thing loses too.
+int absorb_damage(Inventory& inventory, int damage);
+// The damage a player takes at this skill: half at skill 1.
+constexpr int damage_at_skill(int damage, int skill) { return skill == 1 ? damage >> 1 : damage; }
+
 // Doom's P_DamageMobj for the player hurt by the world (no attacker): halved at skill
-// 1, nothing while invulnerable, armor taking its share (a third, or half for blue),
-// the red flash. Returns the health lost.
+// 1, nothing while invulnerable, then absorb_damage. Returns the health lost.
 int damage(Inventory& inventory, int amount, int skill);
 
-// Doom's rules for touching a thing of this type: what the player gains, or nothing
-// (taken false: the thing stays, as a medikit at full health). `keys` holds the six
-// key bits (blue, yellow, red card, then skulls). Skill 1 and 5 double the ammo.
-// `commercial`: Doom II's rules (the megasphere exists only there).
+// Doom's P_TouchSpecialThing, by the thing's sprite as Doom identifies it: what the
+// player gains, or nothing (taken false: the thing stays, as a medikit at full
+// health). `keys` holds the six key bits (blue, yellow, red card, then skulls);
+// `dropped` is a thing a monster dropped (half a clip; one clip with a weapon);
+// `counted` is a thing counted for the tally (Doom's MF_COUNTITEM). A pickup adds
+// to the gold flash. `commercial`: Doom II's rules (the megasphere exists only there).
+// New weapons, berserk and ammo after none set `pending`: the weapon's sprite lowers
+// the old one and raises it (set `ready` yourself where no weapon sprite runs).
+Pickup touch(Inventory& inventory, uint8_t& keys, Sprite sprite, bool dropped, bool counted, int skill,
+             bool commercial);
+// The same for a thing of this type, lying where the map put it or dropped.
 Pickup touch(Inventory& inventory, uint8_t& keys, ThingType type, bool dropped, int skill, bool commercial = true);
 
 }  // namespace p3d::play

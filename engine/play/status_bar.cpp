@@ -3,12 +3,40 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "engine/play/angle.h"
+#include "engine/play/inventory.h"
+#include "engine/play/world.h"
+
 namespace p3d::play {
 
 namespace {
 
 constexpr int kBarTop = kScreenHeight - kStatusBarHeight;
-constexpr int kPainFaces = 5, kStraightFaces = 3, kFaceStride = 8, kStraightFaceTics = 35 / 2;
+// Doom's faces (st_stuff.c): per pain, 3 straight, turned right and left, ouch, the
+// evil grin and the rampage; then the god's and the dead face. Times in tics.
+constexpr int kPainFaces = 5, kStraightFaces = 3, kFaceStride = 8;
+constexpr int kTurnOffset = kStraightFaces, kOuchOffset = kTurnOffset + 2, kEvilGrinOffset = kOuchOffset + 1,
+              kRampageOffset = kEvilGrinOffset + 1;
+constexpr int kGodFace = kPainFaces * kFaceStride, kDeadFace = kGodFace + 1;
+constexpr int kStraightFaceTics = 35 / 2, kTurnTics = 35, kEvilGrinTics = 2 * 35, kRampageDelay = 2 * 35;
+constexpr int kMuchPain = 20;
+static_assert(kFaceWeapons == int(Weapon::kCount));
+
+// The face toward the attacker: head-on (the rampage face) within 45 degrees either
+// way, else turned right or left, by Doom's comparisons of unsigned angles.
+int attacker_offset(Angle to_attacker, Angle facing) {
+  Angle off;
+  bool right;
+  if (to_attacker > facing) {
+    off = to_attacker - facing;
+    right = off > kAngle180;
+  } else {
+    off = facing - to_attacker;
+    right = off <= kAngle180;
+  }
+  if (off < kAngle45) return kRampageOffset;
+  return right ? kTurnOffset : kTurnOffset + 1;
+}
 
 // Doom's places on its 320x200 screen (st_stuff.c).
 constexpr int kAmmoX = 44, kAmmoY = 171, kHealthX = 90, kHealthY = 171, kArmorX = 221, kArmorY = 171;
@@ -30,18 +58,107 @@ std::optional<wad::IndexedImage> picture(const wad::Stack& wads, const std::stri
 
 }  // namespace
 
-void Face::tic(Random& random, int health) {
-  if (health <= 0) {  // Doom's dead face, after the 40 of pain and the god's
-    random.other();
-    index_ = kPainFaces * kFaceStride + 1;
-    return;
+FaceInput face_input(const Player& player) {
+  FaceInput in;
+  const Inventory& inv = player.inv;
+  in.health = inv.health;
+  in.bonus_count = inv.bonus_count;
+  in.damage_count = inv.damage_count;
+  const Mobj* mo = player.mo;
+  in.attacked = mo && player.attacker && player.attacker != mo;
+  if (in.attacked) {
+    in.angle_to_attacker = point_to_angle(mo->x, mo->y, player.attacker->x, player.attacker->y);
+    in.angle = mo->angle;
   }
-  const int shown = std::clamp(health, 0, 100);
-  const int pain = kFaceStride * (((100 - shown) * kPainFaces) / 101);
-  const int glance = random.other();  // Doom draws it every tic, whether used or not
-  if (count_ == 0) {
-    index_ = pain + glance % kStraightFaces;
+  in.attack_down = player.attack_down;
+  std::copy(inv.weapons.begin(), inv.weapons.end(), in.weapons.begin());
+  in.god_mode = (player.cheats & kCheatGodMode) != 0;
+  in.invulnerability = inv.powers[size_t(Power::kInvulnerability)];
+  return in;
+}
+
+void Face::start_level(const FaceInput& in) {
+  index_ = 0;
+  old_health_ = -1;
+  old_weapons_ = in.weapons;
+}
+
+void Face::tic(Random& random, const FaceInput& in) {
+  const int random_number = random.other();  // drawn every tic, whether used or not
+  update(random_number, in);
+  old_health_ = in.health;
+}
+
+int Face::pain_offset(int health) const {
+  const int shown = std::min(health, 100);
+  return kFaceStride * (((100 - shown) * kPainFaces) / 101);
+}
+
+void Face::update(int random_number, const FaceInput& in) {
+  // A new face takes over when it matters more than the one shown (higher priority).
+  // Doom's test is !health; a player's health never falls below 0.
+  if (priority_ < 10 && in.health <= 0) {
+    priority_ = 9;
+    index_ = kDeadFace;
+    count_ = 1;
+  }
+  if (priority_ < 9 && in.bonus_count) {
+    bool new_weapon = false;
+    for (size_t i = 0; i < old_weapons_.size(); ++i) {
+      if (old_weapons_[i] != in.weapons[i]) {
+        new_weapon = true;
+        old_weapons_[i] = in.weapons[i];
+      }
+    }
+    if (new_weapon) {
+      priority_ = 8;
+      count_ = kEvilGrinTics;
+      index_ = pain_offset(in.health) + kEvilGrinOffset;
+    }
+  }
+  // The health lost this tic, as Doom (inverted: a gain) or as meant decides "much pain".
+  const bool much_pain =
+      ouch_ == Ouch::kDoom ? in.health - old_health_ > kMuchPain : old_health_ - in.health > kMuchPain;
+  if (priority_ < 8 && in.damage_count && in.attacked) {
+    priority_ = 7;
+    count_ = kTurnTics;
+    if (much_pain) {
+      index_ = pain_offset(in.health) + kOuchOffset;
+    } else {
+      index_ = pain_offset(in.health) + attacker_offset(in.angle_to_attacker, in.angle);
+    }
+  }
+  if (priority_ < 7 && in.damage_count) {  // hurt by the world, or by the player's own blast
+    count_ = kTurnTics;
+    if (much_pain) {
+      priority_ = 7;
+      index_ = pain_offset(in.health) + kOuchOffset;
+    } else {
+      priority_ = 6;
+      index_ = pain_offset(in.health) + kRampageOffset;
+    }
+  }
+  if (priority_ < 6) {
+    if (!in.attack_down) {
+      attack_countdown_ = -1;
+    } else if (attack_countdown_ == -1) {
+      attack_countdown_ = kRampageDelay;
+    } else if (!--attack_countdown_) {
+      priority_ = 5;
+      index_ = pain_offset(in.health) + kRampageOffset;
+      count_ = 1;
+      attack_countdown_ = 1;  // held on: the rampage face again next tic
+    }
+  }
+  if (priority_ < 5 && (in.god_mode || in.invulnerability)) {
+    priority_ = 4;
+    index_ = kGodFace;
+    count_ = 1;
+  }
+  if (!count_) {  // the face shown has had its time: a glance
+    index_ = pain_offset(in.health) + random_number % kStraightFaces;
     count_ = kStraightFaceTics;
+    priority_ = 0;
   }
   --count_;
 }

@@ -31,16 +31,52 @@ struct StatusValues {
   int face = 0;                                 // Face::index()
 };
 
-// The face looking about as Doom's does when nothing happens to it: a new glance
-// (straight, left or right, by Doom's other random stream) every half second, its
-// pain shown by the health.
+// What Doom's face reads from the player each tic (ST_updateFaceWidget's plyr).
+constexpr int kFaceWeapons = 9;  // Doom's NUMWEAPONS
+struct FaceInput {
+  int health = 100;
+  int bonus_count = 0;    // a pickup's gold flash: only then is a new weapon grinned at
+  int damage_count = 0;   // the red flash: only then does the face show pain
+  bool attacked = false;  // hurt by a thing other than the player itself (Doom's attacker, not mo)
+  uint32_t angle_to_attacker = 0, angle = 0;  // binary angles: player to attacker, and the player's facing
+  bool attack_down = false;
+  std::array<bool, kFaceWeapons> weapons{true, true};  // owned, in Doom's order (the fist and the pistol)
+  bool god_mode = false;
+  int invulnerability = 0;  // tics of the power left
+};
+struct Player;
+// The face's input from the World's player.
+FaceInput face_input(const Player& player);
+
+// Doom's face (ST_updateFaceWidget): dead, then the grin at a new weapon, then pain
+// turned toward the attacker, then a rampage while firing, then the god's face;
+// otherwise a glance straight, left or right (Doom's other random stream, drawn every
+// tic) every half second, each face as pained as the health is low.
 class Face {
  public:
-  void tic(Random& random, int health);
+  // Vanilla Doom shows "ouch" when the health ROSE by more than 20 while hurt (its
+  // test is inverted, so it almost never shows); kBigDamage shows it as meant, after
+  // a fall of more than 20 in a tic.
+  enum class Ouch : uint8_t { kDoom, kBigDamage };
+  explicit Face(Ouch ouch = Ouch::kDoom) : ouch_(ouch) {}
+
+  // Doom's ST_initData at a level's start: straight ahead, no health seen yet, the
+  // weapons owned now not new. (The priority and the firing count carry on.)
+  void start_level(const FaceInput& in);
+  // Doom's ST_Ticker's part: one draw from `random` (M_Random), then the face.
+  void tic(Random& random, const FaceInput& in);
+  // Into Doom's faces: 5 pains x 8 (straight 0..2, right, left, ouch, grin, rampage), god, dead.
   int index() const { return index_; }
 
  private:
-  int index_ = 0, count_ = 0;
+  int pain_offset(int health) const;
+  void update(int random_number, const FaceInput& in);
+
+  Ouch ouch_;
+  int index_ = 0, count_ = 0, priority_ = 0;
+  int old_health_ = -1;        // Doom's st_oldhealth: the health the last tic ended with
+  int attack_countdown_ = -1;  // Doom's lastattackdown: tics of firing left before the rampage
+  std::array<bool, kFaceWeapons> old_weapons_{true, true};
 };
 
 class StatusBarArt {

@@ -5,12 +5,22 @@
 // the walk the moment every column is closed. Things met on the way (attached to the
 // nodes and leaves the walk reaches) are drawn as sprites at the end, farthest first.
 //
+// Things move, so they are attached to the tree anew for every frame (attach_things):
+// a sprite is a picture facing the viewer and may reach up to its frame's
+// SpriteFrame::reach sideways from its thing, across splitters. It attaches to the
+// deepest node whose cell holds that whole disc (or to the leaf, if one does), and
+// culling boxes grow to cover the discs of their subtree: a subtree is skipped only
+// when every column it could touch was closed by walls visited earlier, which lie in
+// front of every point of the subtree's cell. So culling never hides a sprite pixel.
+//
 // The screen is split into column strips, each walked alone with its own W-bit array
 // (the columns outside it closed from the start), canvas and sprites, so strips draw
 // on as many threads as given. What a column shows depends only on the walls met in
 // it, front to back, so the picture is the same for any split; the split depends only
 // on the width, so the statistics are the same for any thread count.
 #include <algorithm>
+#include <cmath>
+#include <utility>
 
 #include "engine/render/draw.h"
 #include "engine/render/occlusion.h"
@@ -52,6 +62,7 @@ class BspFrontToBack final : public Renderer {
     if (strips_.size() < size_t(strips)) strips_.resize(size_t(strips));
     Canvas::prepare_probe(view, probe);
     Canvas::prepare_frame(level, frame);
+    attach_things(level, state);
     pool_.run(strips, [&](int i) {
       Strip& s = strips_[size_t(i)];
       s.x0 = i * strip_width;
@@ -82,6 +93,10 @@ class BspFrontToBack final : public Renderer {
     int32_t child;
     bool draw_fragments;  // draw this node's own fragments (its near subtree is done)
   };
+  // Things attached to a node or leaf: a range of attached_.
+  struct ThingRange {
+    uint32_t first = 0, count = 0;
+  };
   // One strip's walk: its columns [x0, x1), its scratch, what it counted.
   struct Strip {
     int x0 = 0, x1 = 0;
@@ -108,7 +123,7 @@ class BspFrontToBack final : public Renderer {
       const Item item = s.stack.back();
       s.stack.pop_back();
       if (level::is_leaf(item.child)) {
-        add_sprites(level, level.leaves[size_t(level::leaf_index(item.child))].things, s.canvas);
+        add_sprites(leaf_things_[size_t(level::leaf_index(item.child))], s.canvas);
         continue;
       }
       const level::Node& node = level.nodes[item.child];
@@ -117,14 +132,14 @@ class BspFrontToBack final : public Renderer {
         continue;
       }
       // The culling box covers the subtree's fragments and the sprites of its things
-      // (see level::finalize): nothing visible is skipped.
-      const ColumnRange range = columns_of_box(view, node.cull_box);
+      // (attach_things): nothing visible is skipped.
+      const ColumnRange range = columns_of_box(view, cull_boxes_[size_t(item.child)]);
       if (range.empty() || s.mask.all_closed(range.x0, range.x1)) {
         ++s.stats.subtrees_culled;
         continue;
       }
       ++s.stats.nodes_visited;
-      add_sprites(level, node.things, s.canvas);
+      add_sprites(node_things_[size_t(item.child)], s.canvas);
       const int near = level::splitter_side(node, camera.pos) > 0 ? 1 : 0;
       s.stack.push_back({node.child[1 - near], false});
       s.stack.push_back({item.child, true});
@@ -134,8 +149,65 @@ class BspFrontToBack final : public Renderer {
     s.canvas.count_into(s.stats);
   }
 
-  static void add_sprites(const level::Level& level, const level::ThingRange& things, Canvas& canvas) {
-    for (uint32_t k = things.first; k < things.first + things.count; ++k) canvas.add_sprite(level.attached_things[k]);
+  void add_sprites(const ThingRange& things, Canvas& canvas) const {
+    for (uint32_t k = things.first; k < things.first + things.count; ++k) canvas.add_sprite(attached_[k]);
+  }
+
+  // Attaches each thing drawn to the deepest node whose cell holds its sprite's disc,
+  // or to a leaf; then the culling boxes grow from the nodes' boxes to cover the discs
+  // (see the file's head). Things in index order within each node and leaf.
+  void attach_things(const level::Level& level, const level::State& state) {
+    const size_t nodes = level.nodes.size(), leaves = level.leaves.size();
+    node_things_.assign(nodes, {});
+    leaf_things_.assign(leaves, {});
+    owners_.clear();
+    for (size_t i = 0; i < state.things.size(); ++i) {
+      const level::ShownThing& t = state.things[i];
+      if (t.frame == level::kNone || nodes == 0) continue;
+      const double reach = level.sprite_frames[size_t(t.frame)].reach;
+      int32_t c = 0;
+      while (!level::is_leaf(c)) {
+        const level::Node& n = level.nodes[size_t(c)];
+        const double side = level::splitter_side(n, t.pos) / glm::length(n.direction);  // signed distance, > 0 back
+        if (std::fabs(side) <= reach) break;
+        c = n.child[side > 0 ? 1 : 0];
+      }
+      owners_.push_back({c, uint32_t(i)});
+      ++range_of(c).count;
+    }
+    // Ranges: nodes first, then leaves, in index order.
+    uint32_t next = 0;
+    for (ThingRange& r : node_things_) r.first = next, next += std::exchange(r.count, 0);
+    for (ThingRange& r : leaf_things_) r.first = next, next += std::exchange(r.count, 0);
+    attached_.resize(next);
+    for (const auto& [owner, thing] : owners_) {
+      ThingRange& r = range_of(owner);
+      attached_[r.first + r.count++] = thing;
+    }
+    auto add_discs = [&](const ThingRange& r, geom::BBox& box) {
+      for (uint32_t k = r.first; k < r.first + r.count; ++k) {
+        const level::ShownThing& t = state.things[attached_[k]];
+        const double reach = level.sprite_frames[size_t(t.frame)].reach;
+        box.add(t.pos - geom::Vec2(reach));
+        box.add(t.pos + geom::Vec2(reach));
+      }
+    };
+    cull_boxes_.resize(nodes);
+    for (size_t i = nodes; i-- > 0;) {  // children come after their parent
+      const level::Node& n = level.nodes[i];
+      geom::BBox& box = cull_boxes_[i];
+      box = n.bbox;
+      add_discs(node_things_[i], box);
+      for (int32_t c : n.child) {
+        if (level::is_leaf(c))
+          add_discs(leaf_things_[size_t(level::leaf_index(c))], box);
+        else
+          box.add(cull_boxes_[size_t(c)]);
+      }
+    }
+  }
+  ThingRange& range_of(int32_t child) {
+    return level::is_leaf(child) ? leaf_things_[size_t(level::leaf_index(child))] : node_things_[size_t(child)];
   }
 
   static void draw_fragments(const level::Level& level, const View& view, const level::Node& node, Strip& s) {
@@ -190,6 +262,12 @@ class BspFrontToBack final : public Renderer {
 
   ThreadPool pool_;
   std::vector<Strip> strips_;
+  // This frame's things on the tree (attach_things): per node and leaf a range of
+  // attached_ (indices in state.things), and per node its culling box.
+  std::vector<ThingRange> node_things_, leaf_things_;
+  std::vector<uint32_t> attached_;
+  std::vector<geom::BBox> cull_boxes_;
+  std::vector<std::pair<int32_t, uint32_t>> owners_;  // attach_things' scratch: (node or leaf_child, thing)
   std::vector<uint32_t> fragments_, things_;  // merged_stats' scratch
 };
 

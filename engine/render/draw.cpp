@@ -9,7 +9,8 @@
 // maps), resolved to colours once per pixel at the end (Canvas::resolve).
 //
 // Index: lighting, texel sources, Canvas::begin/draw_wall/paint_wall/finish/resolve,
-// draw_hit (the rows of one hit), wall_span, draw_masked, sprites, plane_span, sky_span.
+// draw_hit (the rows of one hit), wall_span, draw_masked, sprites (and Doom's fuzz),
+// plane_span, sky_span.
 #include "engine/render/draw.h"
 
 #include <algorithm>
@@ -158,6 +159,7 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
   for (int x = x0_; x < x1_; ++x) steps_[x].clear();
   sprites_.clear();
   things_drawn_.clear();
+  fuzz_ready_ = level.generation != 0 && fuzz_index_for_ == level.generation;
   indexed_ = !level.light_indices.empty();
   if (indexed_) {
     index_pitch_ = size_t(std::max(0, x1_ - x0_));
@@ -431,7 +433,7 @@ int64_t ceil_div(int64_t a, int64_t b) { return a >= 0 ? (a + b - 1) / b : -((-a
 }  // namespace
 
 bool Canvas::layer_column(int x, int top, int bottom, const level::Texture& tex, int u, int64_t v0, int64_t step,
-                          int light_map, uint64_t& counter) {
+                          int light_map, uint64_t& counter, bool fuzz) {
   const size_t column = size_t(u) * size_t(tex.height);
   const size_t map = size_t(light_map) * limits::kPaletteSize;
   bool drew = false;
@@ -439,12 +441,15 @@ bool Canvas::layer_column(int x, int top, int bottom, const level::Texture& tex,
     for (int64_t v = v0 + int64_t(y0) * step; y0 < y1; ++y0, out += pitch, v += step) *out = colour_of(column + size_t(v >> 16));
   };
   auto draw_rows = [&](int y0, int y1) {  // texels all opaque
+    if (fuzz) y0 = std::max(y0, 1), y1 = std::min(y1, view_->height - 1);  // as Doom: the rows read stay on screen
     if (y0 >= y1) return;
     drew = true;
     counter += uint64_t(y1 - y0);
     if (writes_)
       for (int y = y0; y < y1; ++y) ++(*writes_)[size_t(y) * view_->width + x];
-    if (indexed_) {
+    if (fuzz) {
+      draw_fuzz(x, y0, y1);
+    } else if (indexed_) {
       const uint8_t* lit = level_->light_indices.data() + map;
       paint(index_pixel(x, y0), index_pitch_, y0, y1, [&](size_t texel) { return lit[tex.indices[texel]]; });
     } else {
@@ -481,18 +486,17 @@ uint32_t Canvas::lit(const level::Texture& tex, size_t texel, int light_map) con
 // ---- sprites ---------------------------------------------------------------------
 // A sprite is a picture facing the viewer at its thing's depth, one texel per map
 // unit (Doom's R_ProjectSprite): its rotation chosen by the angle between the
-// thing's facing and the view, standing on its sector's floor (or hanging from the
-// ceiling), lit by its sector's light and depth like a wall, or full bright.
+// thing's facing and the view, its origin at the thing's height (ShownThing::z), lit
+// by its sector's light and depth like a wall, or full bright; a shadow is fuzz.
 
 constexpr double kSpriteNearDepth = 4;  // Doom's MINZ: nearer things are not drawn
 
 void Canvas::add_sprite(uint32_t thing) {
-  const level::Thing& t = level_->things[thing];
-  const int32_t sprite = state_->thing_sprite(thing, t.sprite);
-  if (!state_->things[thing] || sprite == level::kNone) return;
+  const level::ShownThing& t = state_->things[thing];
+  if (t.frame == level::kNone) return;
   const double depth = view_->depth_of(t.pos);
   if (depth < kSpriteNearDepth) return;
-  const level::SpriteFrame& frame = level_->sprite_frames[size_t(sprite)];
+  const level::SpriteFrame& frame = level_->sprite_frames[size_t(t.frame)];
   // Outside this canvas's columns whichever picture shows (with columns to spare for
   // rounding): a strip of the screen skips the rotation's arc tangent.
   const double scale = view_->d / depth;
@@ -510,14 +514,14 @@ void Canvas::add_sprite(uint32_t thing) {
   s.texture = &tex;
   s.flip = frame.flip[rotation];
   s.left = view_->lateral_of(t.pos) - image.left;
-  const level::SectorState& sector = state_->sectors[size_t(t.sector)];
-  const double origin = frame.hanging ? sector.ceiling - frame.drop : sector.floor;
-  s.top = origin + image.top;
+  s.top = t.z + image.top;
   // Columns whose centre's ray crosses the picture (one more on each side: draw_sprite_column checks).
   s.x0 = std::max(x0_, int(floor_to_int(view_->half_w + s.left * scale)) - 1);
   s.x1 = std::min(x1_ - 1, int(ceil_to_int(view_->half_w + (s.left + tex.width) * scale)) + 1);
   if (s.x0 > s.x1) return;
-  s.light_map = frame.bright ? 0 : wall_light_map(light_start(sector.light, 0), depth);
+  const int light = t.sector != kNone ? state_->sectors[size_t(t.sector)].light : 255;
+  s.light_map = frame.bright ? 0 : wall_light_map(light_start(light, 0), depth);
+  s.fuzz = (t.flags & level::kShownShadow) != 0;
   sprites_.push_back(s);
 }
 
@@ -532,8 +536,54 @@ void Canvas::draw_sprite_column(const Sprite& s, int x, int top, int bottom, boo
   // Texel row at screen row y: (v0 + y * step) >> 16, v0 from top - z at row 0, as walls.
   const int64_t v0 = round_to_int((s.top - view_->eye + (0.5 - view_->half_h) * inv_scale) * kFix);
   const int64_t step = std::max<int64_t>(1, round_to_int(inv_scale * kFix));
-  if (layer_column(x, top, bottom, tex, int(s.flip ? tex.width - 1 - u : u), v0, step, s.light_map, sprite_pixels_))
+  if (layer_column(x, top, bottom, tex, int(s.flip ? tex.width - 1 - u : u), v0, step, s.light_map, sprite_pixels_,
+                   s.fuzz))
     drew = true;
+}
+
+// Doom's fuzz (R_DrawFuzzColumn): a pixel takes the colour of the pixel one row above
+// or below it (Doom's table of 50 offsets), darkened through light map 6. Doom steps
+// through the table pixel by pixel in the order it draws; here the step is a function
+// of the pixel's place, so renderers and strips agree whatever order they draw in.
+// Rows 0 and height - 1 are never fuzzed (layer_column), so the pixel read is on screen.
+namespace {
+constexpr int kFuzzLightMap = 6;
+constexpr int8_t kFuzzOffsets[50] = {  // Doom's fuzzoffset, in rows
+    1, -1, 1,  -1, 1,  1,  -1,     //
+    1, 1,  -1, 1,  1,  1,  -1,     //
+    1, 1,  1,  -1, -1, -1, -1,     //
+    1, -1, -1, 1,  1,  1,  1,  -1, //
+    1, -1, 1,  1,  -1, -1, 1,      //
+    1, -1, -1, -1, -1, 1,  1,      //
+    1, 1,  -1, 1,  1,  -1, 1};
+int fuzz_offset(int x, int y) { return kFuzzOffsets[size_t(x * 7 + y) % std::size(kFuzzOffsets)]; }
+}  // namespace
+
+void Canvas::draw_fuzz(int x, int y0, int y1) {
+  if (indexed_) {
+    const uint8_t* dark = level_->light_indices.data() + size_t(kFuzzLightMap) * limits::kPaletteSize;
+    for (int y = y0; y < y1; ++y) *index_pixel(x, y) = dark[*index_pixel(x, y + fuzz_offset(x, y))];
+    return;
+  }
+  for (int y = y0; y < y1; ++y) *pixel(x, y) = fuzz_colour(*pixel(x, y + fuzz_offset(x, y)));
+}
+
+// A colour darkened as the fuzz darkens it: on a paletted level through light map 6
+// from the colour's first palette index (every pixel drawn in indices is such an index,
+// so colours and indices agree), else (a colour no palette index has, RGBA art) by
+// light map 6's multiplier.
+uint32_t Canvas::fuzz_colour(uint32_t colour) {
+  if (level_->palette.size() == limits::kPaletteSize && level_->paletted()) {
+    if (!fuzz_ready_) {
+      fuzz_index_.clear();
+      for (size_t i = 0; i < limits::kPaletteSize; ++i) fuzz_index_.emplace(level_->palette[i], uint8_t(i));
+      fuzz_index_for_ = level_->generation;
+      fuzz_ready_ = true;
+    }
+    if (const auto it = fuzz_index_.find(colour); it != fuzz_index_.end())
+      return level_->light_maps[size_t(kFuzzLightMap) * limits::kPaletteSize + it->second];
+  }
+  return shade(colour, multiplier(kFuzzLightMap));
 }
 
 void Canvas::draw_layers() {

@@ -63,8 +63,8 @@ class Canvas {
   // Painter's first coat: the sector's planes out to the horizon over the whole column.
   void paint_background(int x, int sector);
 
-  // A thing that may be seen (the BSP renderers add those its walk reaches, the
-  // others all of them); things not present in the state are ignored.
+  // A thing that may be seen, by its index in state.things (the BSP renderer adds those
+  // its walk reaches, the others all of them); things showing no frame are ignored.
   void add_sprite(uint32_t thing);
 
   // Fills the rows still open in every column with the planes of the column's
@@ -78,7 +78,8 @@ class Canvas {
   bool drew_indices() const { return indexed_; }
   // Masked middle textures and sprites, farthest first in every column, each clipped
   // to the rows its column had open at its depth. Equal depths: the masked wall
-  // first, then sprites by thing index.
+  // first, then sprites by thing index. Shadows (kShownShadow) darken what lies
+  // around them (draw_fuzz).
   void draw_layers();
 
   // The things whose sprite wrote a pixel (strips merge them: a sprite across two
@@ -115,7 +116,7 @@ class Canvas {
   };
   // A thing's sprite as this view sees it.
   struct Sprite {
-    uint32_t thing;
+    uint32_t thing;               // index in state.things
     double depth;                 // of the thing's position along the view direction
     int x0, x1;                   // columns it may cover
     const level::Texture* texture;
@@ -123,6 +124,7 @@ class Canvas {
     double left;                  // lateral position (right of the view axis) of the picture's left edge
     double top;                   // world height of the picture's top row
     int light_map;                // 0 (full bright) .. 31
+    bool fuzz;                    // Doom's shadow (MF_SHADOW)
   };
 
   bool draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom);
@@ -146,10 +148,15 @@ class Canvas {
   void draw_sprite_column(const Sprite& s, int x, int top, int bottom, bool& drew);
   // Rows [top, bottom) of column x of a layer (a masked middle texture, a sprite):
   // texture column u, texel row (v0 + y * step) >> 16, drawn where the texture is
-  // opaque, by its runs of opaque texels (no test per pixel) and never tiled. Counts
-  // the pixels into counter; returns whether it drew one.
+  // opaque, by its runs of opaque texels (no test per pixel) and never tiled; as
+  // Doom's fuzz (draw_fuzz) when `fuzz`. Counts the pixels into counter; returns
+  // whether it drew one.
   bool layer_column(int x, int top, int bottom, const level::Texture& tex, int u, int64_t v0, int64_t step, int light_map,
-                    uint64_t& counter);
+                    uint64_t& counter, bool fuzz = false);
+  // Doom's fuzz over rows [y0, y1) of column x: each pixel takes the colour of the one
+  // a row above or below it, darkened.
+  void draw_fuzz(int x, int y0, int y1);
+  uint32_t fuzz_colour(uint32_t colour);
   enum class Fill { kVoid, kMissingTexture };
   void fill_span(int x, int y0, int y1, Fill fill);
   void choose_fill_colors();
@@ -197,6 +204,11 @@ class Canvas {
   SkyKey sky_key_;  // what sky_rows_ and sky_angles_ were tabulated for
   std::vector<uint8_t> lit_sky_;  // paletted levels: the sky's indices, full bright
   std::pair<uint64_t, int> lit_sky_for_{0, -1};  // the level generation and sky texture lit_sky_ is of
+  // Paletted levels drawn in colours: each palette colour's first index, for the fuzz
+  // (found on first use in a frame; fuzz_index_for_ is the level generation it is of).
+  std::unordered_map<uint32_t, uint8_t> fuzz_index_;
+  uint64_t fuzz_index_for_ = 0;
+  bool fuzz_ready_ = false;
   // Paletted levels draw palette indices (Doom's 8-bit screen) into the canvas's own
   // columns, rows index_pitch_ apart, and resolve() copies them to the frame or looks
   // the palette up once per pixel: a strip of 160 columns of 400 rows is 64 KB, where

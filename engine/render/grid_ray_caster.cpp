@@ -29,7 +29,7 @@ class GridRayCaster final : public Renderer {
     RenderStats stats;
     if (level.grid)
       for (int x = 0; x < view.width; ++x) stats.add_ray(cast(level, *level.grid, view, x));
-    for (uint32_t i = 0; i < level.things.size(); ++i) canvas_.add_sprite(i);
+    for (uint32_t i = 0; i < state.things.size(); ++i) canvas_.add_sprite(i);
     canvas_.finish();
     canvas_.resolve(0, view.height);
     canvas_.count_into(stats);

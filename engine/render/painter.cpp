@@ -54,7 +54,7 @@ class Painter final : public Renderer {
     // Masked textures and sprites are layers over the walls: the replay tells each
     // column's open rows at every depth, then they go on farthest first.
     replay_front_to_back(view.width);
-    for (uint32_t i = 0; i < level.things.size(); ++i) canvas_.add_sprite(i);
+    for (uint32_t i = 0; i < state.things.size(); ++i) canvas_.add_sprite(i);
     canvas_.draw_layers();
 
     canvas_.count_into(stats);

@@ -43,7 +43,7 @@ class Reference final : public Renderer {
       for (const Hit& h : column_hits_)
         if (canvas_.draw_wall(x, h.hit)) break;
     }
-    for (uint32_t i = 0; i < level.things.size(); ++i) canvas_.add_sprite(i);
+    for (uint32_t i = 0; i < state.things.size(); ++i) canvas_.add_sprite(i);
     canvas_.finish();
     canvas_.resolve(0, view.height);
 

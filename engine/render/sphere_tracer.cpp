@@ -144,7 +144,7 @@ class SphereTracer final : public Renderer {
     canvas_.begin(level, state, view, frame, level::sector_at_brute_force(level, camera.pos), probe);
     RenderStats stats;
     for (int x = 0; x < view.width; ++x) stats.add_ray(trace(level, view, x));
-    for (uint32_t i = 0; i < level.things.size(); ++i) canvas_.add_sprite(i);
+    for (uint32_t i = 0; i < state.things.size(); ++i) canvas_.add_sprite(i);
     canvas_.finish();
     canvas_.resolve(0, view.height);
     canvas_.count_into(stats);

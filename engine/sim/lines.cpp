@@ -10,6 +10,7 @@
 //   back after a second.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "engine/sim/sim.h"
 #include "engine/util/doom.h"
@@ -199,10 +200,11 @@ void World::cross_line(Player& p, uint32_t wall, int side) {
 bool World::teleport(Player& p, uint32_t wall) {
   const int tag = level_.walls[wall].tag;
   int best = -1;
-  for (size_t i = 0; i < level_.things.size(); ++i) {
-    const level::Thing& t = level_.things[i];
-    if (t.type != doom::kTeleportDestination || !state_.things[i] || level_.sectors[size_t(t.sector)].tag != tag) continue;
-    if (best < 0 || t.sector < level_.things[size_t(best)].sector) best = int(i);
+  for (const level::ShownThing& shown : state_.things) {  // in THINGS order
+    if (shown.placed == level::kNone) continue;
+    const level::Thing& t = level_.things[size_t(shown.placed)];
+    if (t.type != doom::kTeleportDestination || level_.sectors[size_t(t.sector)].tag != tag) continue;
+    if (best < 0 || t.sector < level_.things[size_t(best)].sector) best = shown.placed;
   }
   if (best < 0) return false;
   const level::Thing& dest = level_.things[size_t(best)];
@@ -224,8 +226,10 @@ bool World::teleport(Player& p, uint32_t wall) {
 // Doom's P_TouchSpecialThing, for every thing it lets the player pick up: the boxes
 // of the player and the thing overlap, and the thing is within reach of the feet.
 void World::pick_up(Player& p) {
-  for (size_t i = 0; i < level_.things.size(); ++i) {
-    if (!state_.things[i]) continue;
+  std::vector<size_t> taken;  // entries of state_.things, leaving the world after the loop
+  for (size_t k = 0; k < state_.things.size(); ++k) {  // in THINGS order
+    if (state_.things[k].placed == level::kNone) continue;
+    const size_t i = size_t(state_.things[k].placed);
     const level::Thing& t = level_.things[i];
     const play::ThingType type = pickup_types_[i];
     if (type == play::ThingType::kCount) continue;
@@ -235,12 +239,16 @@ void World::pick_up(Player& p) {
     if (dz < -kPickupBelow || dz > kPlayerHeight) continue;
     const play::Pickup got = play::touch(p.inventory, p.keys, type, false, skill_);
     if (!got.taken) continue;
-    state_.things[i] = 0;
+    // No weapon sprite runs here to lower the old weapon: the pending one is in hand at once.
+    play::Inventory& inv = p.inventory;
+    if (inv.pending != play::Weapon::kCount) inv.ready = std::exchange(inv.pending, play::Weapon::kCount);
+    taken.push_back(k);
     const bool key = t.type == doom::kBlueCardThing || t.type == doom::kYellowCardThing || t.type == doom::kRedCardThing ||
                      t.type == doom::kBlueSkullThing || t.type == doom::kYellowSkullThing || t.type == doom::kRedSkullThing;
     if (!got.message.empty()) say(key ? Event::Kind::kKey : Event::Kind::kPickup, got.message);
     sounds_.push_back({got.sound});
   }
+  for (size_t j = taken.size(); j-- > 0;) state_.things.erase(state_.things.begin() + std::ptrdiff_t(taken[j]));
 }
 
 // Standing on the floor of a secret sector finds it (once).

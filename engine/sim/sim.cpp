@@ -282,6 +282,7 @@ void World::tick(Player& p, const TicCommand& cmd) {
   tick_buttons();
   sounds_.insert(sounds_.end(), movers_.sounds().begin(), movers_.sounds().end());
   things_.tick(state_);                                    // Doom's thinkers, then
+  level::rest_things(level_, state_);                      // (things stay on floors that moved)
   level::animate_textures(level_, state_, level_time_++);  // its P_UpdateSpecials
   scroll_walls();
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "engine/util/error.h"
 #include "engine/wad/art.h"
@@ -46,6 +47,7 @@ class Importer {
     report_crossings();
     report_open_sectors();
     add_things();
+    add_always_frames();
     add_sky();
     finish_warnings();
     return {std::move(src_), std::move(warnings_)};
@@ -436,38 +438,54 @@ class Importer {
 
   // The sprite frame a thing type shows at the start, built from the WADs' sprite
   // lumps; kNone for editor-only things, unknown types and missing sprites (warned).
-  // The frames of the rest of its idle loop come along (idle_frames), for the world
-  // to show in turn.
+  // Every other frame it may show or make shown comes along (more_frames), for the
+  // world to show in turn.
   int sprite_for(int type, const std::string& record) {
-    if (editor_only_thing(type)) return map::kNone;
-    const ThingInfo* info = thing_info(type);
-    if (!info) {
+    const ThingInfo* info = editor_only_thing(type) ? nullptr : thing_info(type);
+    if (!info && !editor_only_thing(type))
       warn("unknown thing types", record, "thing type " + std::to_string(type) + " is not Doom's (not drawn)");
-      return map::kNone;
-    }
-    const int first = sprite_frame(*info, info->sprite, info->frame, info->bright, record);
-    if (first != map::kNone && options_.thing_frames)
-      for (const FrameName& f : options_.thing_frames(type)) sprite_frame(*info, f.sprite, f.frame, f.bright, record);
+    const int first = info ? sprite_frame(*info, info->sprite, info->frame, info->bright, record) : map::kNone;
+    more_frames(type, info, record);
     return first;
   }
 
+  // The frames a type placed may go on to show (ImportOptions::thing_frames), once per
+  // type: a hanging thing's hang as it does; the rest stand.
+  void more_frames(int type, const ThingInfo* info, const std::string& record) {
+    if (!options_.thing_frames || !framed_types_.insert(type).second) return;
+    for (const FrameName& f : options_.thing_frames(type))
+      sprite_frame(info ? *info : kStanding, f.sprite, f.frame, f.bright, record, true);
+  }
+
+  void add_always_frames() {
+    for (const FrameName& f : options_.always_frames) sprite_frame(kStanding, f.sprite, f.frame, f.bright, "SPRITES", true);
+  }
+
+  // What builds the frames no type placed stands for: a thing standing on the floor.
+  static constexpr ThingInfo kStanding{0, "", 'A', false, false, 0, 0, ThingKind::kDecoration};
+
   // A sprite frame of a thing type, built once for each way of showing it (a frame
   // may be bright in one state and not in another; two hanging things may show the
-  // same picture at different drops).
+  // same picture at different drops). `quiet`: a frame the WADs lack is no warning
+  // (the many a level may show and the WADs need not have).
   int sprite_frame(const ThingInfo& info, const std::string& sprite, char frame_letter, bool bright,
-                   const std::string& record) {
+                   const std::string& record, bool quiet = false) {
     const std::string name = sprite + frame_letter;
     const std::string key = name + (bright ? "*" : "") + (info.hanging ? "@" + std::to_string(info.height) : "");
     if (const auto it = sprite_frames_.find(key); it != sprite_frames_.end()) return it->second;
-    const int frame = build_frame(info, sprite, frame_letter, bright, record);
-    sprite_frames_[key] = frame;
+    if (quiet && quietly_missing_.count(key)) return map::kNone;
+    const int frame = build_frame(info, sprite, frame_letter, bright, record, quiet);
+    if (frame == map::kNone && quiet)
+      quietly_missing_.insert(key);  // not cached as missing: a thing showing it first is still warned about
+    else
+      sprite_frames_[key] = frame;
     return frame;
   }
 
   // Doom's sprite lumps: PPPPFR, or PPPPFRFR where the second frame and rotation use
   // the same picture mirrored; rotation 0 serves every direction.
   int build_frame(const ThingInfo& info, const std::string& sprite, char frame_letter, bool bright,
-                  const std::string& record) {
+                  const std::string& record, bool quiet) {
     const std::string name = sprite + frame_letter;
     int lumps[map::kRotations];
     bool flips[map::kRotations] = {};
@@ -490,10 +508,10 @@ class Importer {
     }
     const int any = *std::max_element(std::begin(lumps), std::end(lumps));
     if (any < 0) {
-      warn("missing sprites", record, "sprite " + name + " does not exist (not drawn)");
+      if (!quiet) warn("missing sprites", record, "sprite " + name + " does not exist (not drawn)");
       return map::kNone;
     }
-    if (std::count(std::begin(lumps), std::end(lumps), -1) > 0)
+    if (std::count(std::begin(lumps), std::end(lumps), -1) > 0 && !quiet)
       warn("missing sprites", record, "sprite " + name + " lacks some rotations (the others stand in)");
     map::SpriteFrame frame;
     frame.name = name;
@@ -549,6 +567,8 @@ class Importer {
   std::vector<std::string> warnings_;
   std::map<std::string, size_t> warning_counts_;
   std::unordered_map<std::string, int> wall_textures_, flats_, sprite_frames_, sprite_images_;
+  std::unordered_set<std::string> quietly_missing_;  // sprite_frame's keys of frames the WADs lack
+  std::unordered_set<int> framed_types_;             // types whose more_frames are in
   struct AnimatedRangeInUse {
     doom::AnimatedRange range;
     Art::AnimationFrames frames;

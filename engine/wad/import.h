@@ -34,10 +34,13 @@ struct FrameName {
 
 struct ImportOptions {
   size_t max_warnings_per_kind = SIZE_MAX;  // further warnings of a kind are counted, not listed
-  // The frames a thing type shows as it walks its states (the rules above the importer
-  // know them: bsp::build_wad_map asks engine/play), embedded beside its first; none
-  // when unset.
+  // The frames a thing type may show or make shown as it walks its states (the rules
+  // above the importer know them: bsp::build_wad_map asks engine/play), embedded
+  // beside its first for each type placed; none when unset.
   std::function<std::vector<FrameName>(int editor_number)> thing_frames;
+  // Frames embedded in every map whatever its things (the player's, puffs, blood...).
+  // Frames of either list whose sprite lumps the WADs lack are left out silently.
+  std::vector<FrameName> always_frames;
 };
 
 struct ImportResult {

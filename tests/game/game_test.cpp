@@ -417,7 +417,8 @@ TEST(Session, APickupFlashesTheScreenGold) {
   std::optional<geom::Vec2> at;
   for (size_t i = 0; i < s.level().things.size() && !at; ++i)
     for (int type : {2014, 2015, 2007, 2008})  // bonuses, a clip, shells: taken at the start
-      if (s.level().things[i].type == type && s.state().things[i]) at = s.level().things[i].pos;
+      if (s.level().things[i].type == type && level::find_placed(s.state(), int32_t(i)) != level::kNone)
+        at = s.level().things[i].pos;
   ASSERT_TRUE(at);
   EXPECT_EQ(s.flash_palette(), 0);
   s.spawn(*at, 90);

@@ -3,6 +3,7 @@
 // renderers agree with the reference on every frame of it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -32,18 +33,19 @@ TEST(ThingClocks, PlacedThingsShowTheirIdleLoopsFrames) {
   EXPECT_GE(random.play_index(), clocks.size() % 256);
 
   std::map<uint32_t, std::set<std::string>> seen;  // thing -> frames shown over 4 seconds
+  const size_t shown = state.things.size();
   for (int tic = 0; tic < 140; ++tic) {
     clocks.tick(state);
-    ASSERT_EQ(state.thing_sprites.size(), level.things.size());
-    for (uint32_t i = 0; i < level.things.size(); ++i) {
-      const level::Thing& t = level.things[i];
-      if (t.sprite == level::kNone || !state.things[i]) continue;  // never drawn, or not at this skill
+    ASSERT_EQ(state.things.size(), shown) << "nothing comes or goes";
+    for (const level::ShownThing& entry : state.things) {
+      ASSERT_NE(entry.placed, level::kNone);
+      const level::Thing& t = level.things[size_t(entry.placed)];
+      if (t.sprite == level::kNone) continue;  // never drawn
       const level::SpriteFrame& first = level.sprite_frames[size_t(t.sprite)];
-      const level::SpriteFrame& now = level.sprite_frames[size_t(state.thing_sprites[i])];
-      ASSERT_EQ(now.name.substr(0, 4), first.name.substr(0, 4)) << "thing " << i << ": its reach covers its own sprite";
+      const level::SpriteFrame& now = level.sprite_frames[size_t(entry.frame)];
       ASSERT_EQ(now.hanging, first.hanging);
       ASSERT_EQ(now.drop, first.drop);
-      seen[i].insert(now.name);
+      seen[uint32_t(entry.placed)].insert(now.name);
     }
   }
   int animated = 0, checked = 0;
@@ -71,7 +73,9 @@ TEST(ThingClocks, RenderersAgreeOnAnimatedThingsAndReplaysRepeat) {
   for (int tic = 0; tic < 70; ++tic) {
     a.tick(pa, {});
     b.tick(pb, {});
-    ASSERT_EQ(a.state().thing_sprites, b.state().thing_sprites) << "tic " << tic;
+    ASSERT_EQ(a.state().things.size(), b.state().things.size()) << "tic " << tic;
+    for (size_t k = 0; k < a.state().things.size(); ++k)
+      ASSERT_EQ(a.state().things[k].frame, b.state().things[k].frame) << "tic " << tic << " thing " << k;
     if (tic % 10 != 9) continue;
     const render::Camera c = test::random_camera(level, rng);
     render::Frame bsp(96, 60), reference(96, 60);
@@ -79,6 +83,48 @@ TEST(ThingClocks, RenderersAgreeOnAnimatedThingsAndReplaysRepeat) {
     render::make_renderer("reference")->render(level, a.state(), c, reference);
     EXPECT_EQ(bsp.pixels, reference.pixels) << "tic " << tic;
   }
+}
+
+// What the importer must embed for the world to come: a zombieman's every state
+// (its death among them) and the clip it drops; on every map, puffs and blood.
+TEST(ThingFrames, ReachableFramesFollowStatesAndWhatTheySpawn) {
+  auto has = [](const std::vector<wad::FrameName>& frames, const std::string& sprite, char frame) {
+    return std::any_of(frames.begin(), frames.end(),
+                       [&](const wad::FrameName& f) { return f.sprite == sprite && f.frame == frame; });
+  };
+  const std::vector<wad::FrameName> zombieman = reachable_frames(3004);
+  for (char f = 'A'; f <= 'U'; ++f) EXPECT_TRUE(has(zombieman, "POSS", f)) << "POSS" << f;  // stand, walk, attack, pain, deaths
+  EXPECT_TRUE(has(zombieman, "CLIP", 'A')) << "the clip it drops";
+  EXPECT_TRUE(has(zombieman, "BLUD", 'A')) << "it bleeds";
+  EXPECT_TRUE(has(zombieman, "PUFF", 'A')) << "its bullets hit walls";
+  EXPECT_EQ(zombieman.front().sprite, "POSS") << "its own frames first";
+  std::set<std::string> distinct;
+  for (const wad::FrameName& f : zombieman) distinct.insert(f.sprite + f.frame + (f.bright ? "*" : ""));
+  EXPECT_EQ(distinct.size(), zombieman.size()) << "each frame once";
+
+  const std::vector<wad::FrameName> imp = reachable_frames(3001);
+  EXPECT_TRUE(has(imp, "BAL1", 'C')) << "its fireball's explosion";
+  const std::vector<wad::FrameName> spitter = reachable_frames(89);  // the boss's cube shooter
+  for (const char* monster : {"TROO", "SARG", "PAIN", "HEAD", "VILE", "SKEL", "BOS2", "FATT", "BSPI", "BOSS", "FIRE", "SKUL"})
+    EXPECT_TRUE(has(spitter, monster, 'A')) << monster << ": what its cubes may make, and what those make";
+  EXPECT_TRUE(has(reachable_frames(88), "MISL", 'B')) << "the brain explodes in rockets";
+  EXPECT_TRUE(reachable_frames(9999).empty());
+
+  const std::vector<wad::FrameName> always = always_frames();
+  for (const char* sprite : {"PUFF", "BLUD", "PLAY", "TFOG", "IFOG", "MISL", "PLSS", "PLSE", "BFS1", "BFE1", "BFE2"})
+    EXPECT_TRUE(has(always, sprite, 'A')) << sprite;
+  EXPECT_FALSE(has(always, "POSS", 'A'));
+}
+
+// A WAD map carries every frame its things may show: a zombieman's death on MAP01.
+TEST(ThingFrames, TheImporterEmbedsThem) {
+  const level::Level& level = map01();
+  auto has = [&](const std::string& name) {
+    return std::any_of(level.sprite_frames.begin(), level.sprite_frames.end(),
+                       [&](const level::SpriteFrame& f) { return f.name == name; });
+  };
+  for (const char* name : {"POSSH", "POSSL", "POSSU", "CLIPA", "PUFFA", "BLUDC", "PLAYN", "TFOGJ", "MISLB", "BFE2D"})
+    EXPECT_TRUE(has(name)) << name;
 }
 
 }  // namespace

@@ -1,11 +1,13 @@
 // Sprites: properties of single sprites (hidden behind a wall, whole in the open,
 // equal depths ordered by thing index, hanging from the ceiling, full bright), and
 // every renderer against the reference on random maps dense with things whose
-// pictures have holes and reach across the BSP's splitters.
+// pictures have holes and reach across the BSP's splitters; things that move, come
+// and go in the state, at any height, some drawn as Doom's fuzz.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "engine/bsp/load.h"
 #include "engine/map/generate.h"
 #include "engine/map/source.h"
 #include "engine/render/renderer.h"
@@ -161,6 +163,7 @@ TEST(Sprites, HangFromTheCeilingAndFollowTheirSector) {
   EXPECT_EQ(count(frame, kRed), 0u);
   level::State state = level::start_state(level);
   state.sectors[0].ceiling = 96;  // a lower ceiling brings it into view, hanging from it
+  level::rest_things(level, state);
   make_renderer("bsp")->render(level, state, camera, frame);
   EXPECT_GT(count(frame, kRed), 0u);
   int lowest = -1;
@@ -184,7 +187,9 @@ TEST(Sprites, SkillAndPresenceDecideWhatIsDrawn) {
   renderer->render(level, level::start_state(level, 2), camera, frame);
   EXPECT_GT(count(frame, kRed), 0u);
   level::State state = level::start_state(level, 1);
-  state.things[0] = 0;  // picked up
+  ASSERT_EQ(state.things.size(), 1u);
+  EXPECT_EQ(state.things[0].placed, 0);
+  state.things.clear();  // picked up
   renderer->render(level, state, camera, frame);
   EXPECT_EQ(count(frame, kRed), 0u);
 
@@ -192,7 +197,7 @@ TEST(Sprites, SkillAndPresenceDecideWhatIsDrawn) {
   add_thing(multi, {200, 256}, add_sprite(multi, picture(32, 48, kRed), false, true));
   multi.things.back().flags = doom::kThingAllSkills | doom::kThingNotSingle;
   const level::Level ml = test::compile(multi);
-  EXPECT_EQ(level::start_state(ml).things[0], 0) << "multiplayer-only things are left out";
+  EXPECT_TRUE(level::start_state(ml).things.empty()) << "multiplayer-only things are left out";
 }
 
 // Random rooms and soups crowded with things (pictures with holes, some wide enough
@@ -237,6 +242,181 @@ TEST(Sprites, EveryRendererAgreesOnCrowdedMaps) {
   EXPECT_GT(sprites, frames) << "the maps are crowded";
   std::printf("[ stats    ] crowded maps: %zu frames, %zu sprites drawn, %zu/%zu pixels differ\n", frames, sprites,
               differ, pixels);
+}
+
+// A thing moved in the state (along and up) draws at its new place and nowhere else;
+// a thing added to the state after load draws too.
+TEST(Sprites, ThingsMoveAndComeInTheState) {
+  map::Source src = room_with_wall();
+  add_thing(src, {200, 256}, add_sprite(src, picture(32, 48, kRed), false, true));  // full bright: exactly kRed
+  const level::Level level = test::compile(src);
+  const Camera camera = camera_at(level, {100, 256}, 0);
+  const int w = 160, h = 100;
+  // The pixels showing a 32x48 picture whose feet stand at (pos, z), seen in the open.
+  auto expected = [&](geom::Vec2 pos, double z) {
+    const double depth = pos.x - camera.pos.x, inv = depth / (w / 2.0);
+    size_t n = 0;
+    for (int x = 0; x < w; ++x) {
+      const double lateral = (x + 0.5 - w / 2.0) * inv - (camera.pos.y - pos.y);
+      if (lateral < -16 || lateral >= 16) continue;
+      for (int y = 0; y < h; ++y) {
+        const double at = camera.z - (y + 0.5 - h / 2.0) * inv;
+        n += at > z && at <= z + 48;
+      }
+    }
+    return n;
+  };
+  level::State state = level::start_state(level);
+  ASSERT_EQ(state.things.size(), 1u);
+  state.things[0].pos = {180, 270};
+  state.things[0].z = 20;  // off the floor: flying
+  Frame moved(w, h);
+  for (const char* r : {"bsp", "reference", "painter", "sphere"}) {
+    Frame frame(w, h);
+    make_renderer(r)->render(level, state, camera, frame);
+    EXPECT_EQ(count(frame, kRed), expected({180, 270}, 20)) << r;
+    if (std::string(r) == "bsp") moved = frame;
+    EXPECT_EQ(frame.pixels, moved.pixels) << r;
+  }
+  Frame placed(w, h);
+  make_renderer("bsp")->render(level, level::start_state(level), camera, placed);
+  EXPECT_NE(placed.pixels, moved.pixels);
+
+  level::State added = level::start_state(level);
+  added.things.clear();
+  Frame empty(w, h);
+  make_renderer("bsp")->render(level, added, camera, empty);
+  EXPECT_EQ(count(empty, kRed), 0u);
+  level::ShownThing spawned;
+  spawned.pos = {220, 240};
+  spawned.z = -8;  // sunk into the floor, which does not hide its feet (as in Doom)
+  spawned.frame = 0;
+  spawned.sector = 0;
+  added.things.push_back(spawned);
+  for (const char* r : {"bsp", "reference", "painter", "sphere"}) {
+    Frame frame(w, h);
+    const RenderStats s = make_renderer(r)->render(level, added, camera, frame);
+    EXPECT_EQ(s.sprites_drawn, 1u) << r;
+    EXPECT_EQ(count(frame, kRed), expected({220, 240}, -8)) << r << ": sprites clip to walls, not to floors";
+  }
+}
+
+// Doom's shadows: a kShownShadow thing draws no colour of its own; each pixel of its
+// shape darkens (light map 6's multiplier on RGBA art) the pixel a row above or below.
+TEST(Sprites, ShadowsAreDoomsFuzz) {
+  map::Source src = room_with_wall();
+  add_thing(src, {200, 256}, add_sprite(src, picture(32, 48, kRed), false, true));
+  const level::Level level = test::compile(src);
+  const Camera camera = camera_at(level, {100, 256}, 0);
+  level::State state = level::start_state(level);
+  level::State without = state;
+  without.things.clear();
+  state.things[0].flags = level::kShownShadow;
+  Frame plain(160, 100), fuzzed(160, 100);
+  make_renderer("reference")->render(level, without, camera, plain);
+  const RenderStats rs = make_renderer("reference")->render(level, state, camera, fuzzed);
+  EXPECT_EQ(rs.sprites_drawn, 1u);
+  EXPECT_EQ(count(fuzzed, kRed), 0u);
+  // Light map 6 of RGBA art: 26/32 of each channel.
+  auto dark = [](uint32_t c) {
+    return image::rgba(image::red(c) * 208 >> 8, image::green(c) * 208 >> 8, image::blue(c) * 208 >> 8);
+  };
+  size_t changed = 0;
+  for (int y = 1; y + 1 < fuzzed.height; ++y)
+    for (int x = 0; x < fuzzed.width; ++x) {
+      if (fuzzed.at(x, y) == plain.at(x, y)) continue;
+      ++changed;
+      // Drawn top down: the row above is already fuzzed, the row below not yet.
+      EXPECT_TRUE(fuzzed.at(x, y) == dark(fuzzed.at(x, y - 1)) || fuzzed.at(x, y) == dark(plain.at(x, y + 1)))
+          << x << "," << y;
+    }
+  EXPECT_LE(changed, rs.sprite_pixels);
+  EXPECT_GT(changed, rs.sprite_pixels / 2);
+  EXPECT_GT(rs.sprite_pixels, 500u);
+  for (const char* r : {"bsp", "painter", "sphere"}) {
+    Frame frame(160, 100);
+    make_renderer(r, {.threads = 2})->render(level, state, camera, frame);
+    EXPECT_EQ(frame.pixels, fuzzed.pixels) << r;
+  }
+}
+
+// Random things shown anywhere (moved far from where they were placed, sunk into
+// floors, floating, hanging frames standing and standing frames high), some added,
+// some shadows: every renderer against the reference, on random maps (RGBA art) and
+// Freedoom's MAP01 (paletted: the painter draws colours, the others indices). The BSP
+// renderer's culling, computed anew for every frame, never hides a sprite pixel.
+void scatter_things(const level::Level& level, level::State& state, Rng& rng, size_t extra) {
+  auto random_thing = [&](level::ShownThing& t) {
+    t.pos = {rng.uniform(level.bounds.min.x, level.bounds.max.x), rng.uniform(level.bounds.min.y, level.bounds.max.y)};
+    t.sector = level.sector_at(t.pos);
+    const double floor = t.sector != level::kNone ? state.sectors[size_t(t.sector)].floor : 0;
+    t.z = floor + rng.uniform(-24, 96);
+    t.angle = rng.uniform(0, 360);
+    t.frame = int32_t(rng.below(uint32_t(level.sprite_frames.size())));
+    t.flags = rng.below(4) == 0 ? level::kShownShadow : 0;
+  };
+  for (level::ShownThing& t : state.things)
+    if (rng.below(3) != 0) random_thing(t);
+  for (size_t i = 0; i < extra; ++i) {
+    level::ShownThing t;
+    random_thing(t);
+    state.things.push_back(t);
+  }
+}
+
+size_t compare_renderers(const level::Level& level, const level::State& state, Rng& rng, int cameras,
+                         const std::string& what) {
+  size_t sprites = 0;
+  for (int c = 0; c < cameras; ++c) {
+    const Camera camera = test::random_camera(level, rng);
+    const int w = 48 + int(rng.below(80)), h = 30 + int(rng.below(50));
+    Frame ref(w, h);
+    const RenderStats rs = make_renderer("reference")->render(level, state, camera, ref);
+    sprites += rs.sprites_drawn;
+    for (const char* r : {"bsp", "painter", "sphere"}) {
+      Frame f(w, h);
+      const RenderStats s = make_renderer(r, {.threads = 2})->render(level, state, camera, f);
+      size_t d = 0;
+      for (size_t k = 0; k < f.pixels.size(); ++k) d += f.pixels[k] != ref.pixels[k];
+      EXPECT_EQ(d, 0u) << r << " " << what << " camera " << c;
+      EXPECT_EQ(s.sprites_drawn, rs.sprites_drawn) << r << " " << what << " camera " << c;
+      EXPECT_EQ(s.sprite_pixels, rs.sprite_pixels) << r << " " << what << " camera " << c;
+    }
+  }
+  return sprites;
+}
+
+TEST(Sprites, MovedThingsAgreeEverywhere) {
+  size_t sprites = 0;
+  for (uint64_t seed : {11, 12, 13}) {
+    map::Source src = seed % 2 ? test::random_rooms(300, seed) : test::random_soup(200, seed);
+    const int small = add_sprite(src, picture(24, 40, kRed, true));
+    const int wide = add_sprite(src, picture(160, 24, kBlue, true));
+    const int hanging = add_sprite(src, picture(20, 30, kRed, true), true);
+    src.sprite_images.back().top = 0;
+    const level::Level bounds = test::compile(src);
+    Rng rng(seed);
+    for (int i = 0; i < 60; ++i) {
+      add_thing(src, {rng.uniform(bounds.bounds.min.x, bounds.bounds.max.x), rng.uniform(bounds.bounds.min.y, bounds.bounds.max.y)},
+                i % 3 == 0 ? wide : i % 3 == 1 ? small : hanging);
+    }
+    const level::Level level = test::compile(src);
+    level::State state = level::start_state(level);
+    scatter_things(level, state, rng, 60);
+    sprites += compare_renderers(level, state, rng, 30, "seed " + std::to_string(seed));
+  }
+  EXPECT_GT(sprites, 90u);
+}
+
+TEST(Sprites, MovedThingsAgreeOnFreedoom) {
+  const level::Level level =
+      bsp::open_level(bsp::LevelSource{{}, {test::freedoom_path("freedoom2.wad")}, "MAP01"}).level;
+  ASSERT_TRUE(level.paletted());
+  Rng rng(21);
+  level::State state = level::start_state(level);
+  scatter_things(level, state, rng, 200);
+  const size_t sprites = compare_renderers(level, state, rng, 30, "MAP01");
+  EXPECT_GT(sprites, 30u);
 }
 
 // On grid maps the grid ray caster draws the same sprites as the BSP renderer.

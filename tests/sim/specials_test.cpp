@@ -169,7 +169,7 @@ TEST(Doors, LockedDoorRefusesThenOpensWithTheKey) {
   play.run(40, kBack);  // back over the key
   EXPECT_TRUE(play.said(Event::Kind::kKey, "Picked up a blue keycard."));
   EXPECT_EQ(play.player.keys, kBlueCard);
-  EXPECT_FALSE(play.world.state().things[1]) << "the key is gone from the level";
+  EXPECT_EQ(level::find_placed(play.world.state(), 1), level::kNone) << "the key is gone from the level";
   play.run(60, kWalk);
   play.run(1, kUseCmd);
   play.run(40, kStand);
@@ -450,9 +450,9 @@ TEST(Pickups, WalkingOverThingsTakesWhatDoomWouldGive) {
   EXPECT_EQ(inv.ammo[1], 8);
   EXPECT_EQ(inv.ready, play::Weapon::kShotgun);
   EXPECT_EQ(inv.health, 100);
-  const auto& present = play.world.state().things;
-  EXPECT_EQ(std::vector<uint8_t>(present.begin(), present.end()), (std::vector<uint8_t>{1, 0, 1, 0}))
-      << "the clip and the shotgun are gone, the stimpack stays";
+  std::vector<int32_t> present;
+  for (const level::ShownThing& t : play.world.state().things) present.push_back(t.placed);
+  EXPECT_EQ(present, (std::vector<int32_t>{0, 2})) << "the clip and the shotgun are gone, the stimpack stays";
   EXPECT_TRUE(play.said(Event::Kind::kPickup, "Picked up a clip."));
   EXPECT_TRUE(play.said(Event::Kind::kPickup, "You got the shotgun!"));
   std::vector<play::Sound> heard;

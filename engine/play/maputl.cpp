@@ -1,0 +1,234 @@
+// The map's geometry as the rules ask it (Doom's p_maputl.c): which side of a line a
+// point or box is on, the opening a two-sided line leaves, things linked into their
+// sector and blockmap cell, and the traversal of a trace through the blockmap, its
+// lines and things visited nearest first. Every test is Doom's own, ties included.
+#include <climits>
+#include <cstdlib>
+
+#include "engine/play/world.h"
+
+namespace p3d::play {
+
+int World::point_on_line_side(Fixed x, Fixed y, const Line& line) {
+  if (!line.dx) return x <= line.v1->x ? line.dy > 0 : line.dy < 0;
+  if (!line.dy) return y <= line.v1->y ? line.dx < 0 : line.dx > 0;
+  const Fixed dx = wrap_sub(x, line.v1->x), dy = wrap_sub(y, line.v1->y);
+  const Fixed left = fixed_mul(line.dy >> kFracBits, dx);
+  const Fixed right = fixed_mul(dy, line.dx >> kFracBits);
+  return right < left ? 0 : 1;
+}
+
+// -1 when the box straddles the line.
+int World::box_on_line_side(const Box& box, const Line& ld) {
+  int p1 = 0, p2 = 0;
+  switch (ld.slope) {
+    case Slope::kHorizontal:
+      p1 = box[kBoxTop] > ld.v1->y;
+      p2 = box[kBoxBottom] > ld.v1->y;
+      if (ld.dx < 0) p1 ^= 1, p2 ^= 1;
+      break;
+    case Slope::kVertical:
+      p1 = box[kBoxRight] < ld.v1->x;
+      p2 = box[kBoxLeft] < ld.v1->x;
+      if (ld.dy < 0) p1 ^= 1, p2 ^= 1;
+      break;
+    case Slope::kPositive:
+      p1 = point_on_line_side(box[kBoxLeft], box[kBoxTop], ld);
+      p2 = point_on_line_side(box[kBoxRight], box[kBoxBottom], ld);
+      break;
+    case Slope::kNegative:
+      p1 = point_on_line_side(box[kBoxRight], box[kBoxTop], ld);
+      p2 = point_on_line_side(box[kBoxLeft], box[kBoxBottom], ld);
+      break;
+  }
+  return p1 == p2 ? p1 : -1;
+}
+
+int World::point_on_divline_side(Fixed x, Fixed y, const DivLine& line) {
+  if (!line.dx) return x <= line.x ? line.dy > 0 : line.dy < 0;
+  if (!line.dy) return y <= line.y ? line.dx < 0 : line.dx > 0;
+  const Fixed dx = wrap_sub(x, line.x), dy = wrap_sub(y, line.y);
+  // The sign bits decide most cases without a multiplication.
+  if ((line.dy ^ line.dx ^ dx ^ dy) & Fixed(0x80000000)) return (line.dy ^ dx) & Fixed(0x80000000) ? 1 : 0;
+  const Fixed left = fixed_mul(line.dy >> 8, dx >> 8);
+  const Fixed right = fixed_mul(dy >> 8, line.dx >> 8);
+  return right < left ? 0 : 1;
+}
+
+World::DivLine World::make_divline(const Line& line) { return {line.v1->x, line.v1->y, line.dx, line.dy}; }
+
+// Where along v2 it meets v1, as a fraction of v2 (16.16); 0 when parallel.
+Fixed World::intercept_vector(const DivLine& v2, const DivLine& v1) {
+  const Fixed den = wrap_sub(fixed_mul(v1.dy >> 8, v2.dx), fixed_mul(v1.dx >> 8, v2.dy));
+  if (den == 0) return 0;
+  const Fixed num = wrap_add(fixed_mul(wrap_sub(v1.x, v2.x) >> 8, v1.dy), fixed_mul(wrap_sub(v2.y, v1.y) >> 8, v1.dx));
+  return fixed_div(num, den);
+}
+
+World::Opening World::line_opening(const Line& line) {
+  Opening o;
+  if (line.side[1] == -1) return o;  // one-sided: no opening (Doom leaves top and bottom as they were)
+  const Sector *front = line.front, *back = line.back;
+  o.top = std::min(front->ceiling_height, back->ceiling_height);
+  if (front->floor_height > back->floor_height) {
+    o.bottom = front->floor_height;
+    o.low_floor = back->floor_height;
+  } else {
+    o.bottom = back->floor_height;
+    o.low_floor = front->floor_height;
+  }
+  o.range = wrap_sub(o.top, o.bottom);
+  return o;
+}
+
+void World::unset_thing_position(Mobj* thing) {
+  if (!(thing->flags & kNosector)) {
+    if (thing->snext) thing->snext->sprev = thing->sprev;
+    if (thing->sprev)
+      thing->sprev->snext = thing->snext;
+    else
+      thing->subsector->sector->thing_list = thing->snext;
+  }
+  if (!(thing->flags & kNoblockmap)) {
+    if (thing->bnext) thing->bnext->bprev = thing->bprev;
+    if (thing->bprev) {
+      thing->bprev->bnext = thing->bnext;
+    } else {
+      const int bx = block_x(thing->x), by = block_y(thing->y);
+      if (bx >= 0 && bx < map_.blockmap.width && by >= 0 && by < map_.blockmap.height)
+        block_links_[size_t(by) * size_t(map_.blockmap.width) + size_t(bx)] = thing->bnext;
+    }
+  }
+}
+
+void World::set_thing_position(Mobj* thing) {
+  Subsector* ss = map_.point_in_subsector(thing->x, thing->y);
+  thing->subsector = ss;
+  if (!(thing->flags & kNosector)) {  // invisible things stay out of the sector's list
+    Sector* sec = ss->sector;
+    thing->sprev = nullptr;
+    thing->snext = sec->thing_list;
+    if (sec->thing_list) sec->thing_list->sprev = thing;
+    sec->thing_list = thing;
+  }
+  if (!(thing->flags & kNoblockmap)) {
+    const int bx = block_x(thing->x), by = block_y(thing->y);
+    if (bx >= 0 && bx < map_.blockmap.width && by >= 0 && by < map_.blockmap.height) {
+      Mobj*& link = block_links_[size_t(by) * size_t(map_.blockmap.width) + size_t(bx)];
+      thing->bprev = nullptr;
+      thing->bnext = link;
+      if (link) link->bprev = thing;
+      link = thing;
+    } else {  // off the map
+      thing->bnext = thing->bprev = nullptr;
+    }
+  }
+}
+
+bool World::path_traverse(Fixed x1, Fixed y1, Fixed x2, Fixed y2, int flags,
+                          const std::function<bool(Intercept&)>& trav) {
+  const bool early_out = flags & kEarlyOut;
+  ++valid_count_;
+  intercepts_.clear();
+  const Fixed org_x = map_.blockmap.origin_x, org_y = map_.blockmap.origin_y;
+  if ((wrap_sub(x1, org_x) & (kMapBlockSize - 1)) == 0) x1 = wrap_add(x1, kFracUnit);  // not exactly on a cell's edge
+  if ((wrap_sub(y1, org_y) & (kMapBlockSize - 1)) == 0) y1 = wrap_add(y1, kFracUnit);
+  trace_ = {x1, y1, wrap_sub(x2, x1), wrap_sub(y2, y1)};
+
+  auto add_line = [&](Line* ld) {
+    int s1, s2;
+    // Two tests, each precise where the other is not.
+    if (trace_.dx > kFracUnit * 16 || trace_.dy > kFracUnit * 16 || trace_.dx < -kFracUnit * 16 ||
+        trace_.dy < -kFracUnit * 16) {
+      s1 = point_on_divline_side(ld->v1->x, ld->v1->y, trace_);
+      s2 = point_on_divline_side(ld->v2->x, ld->v2->y, trace_);
+    } else {
+      s1 = point_on_line_side(trace_.x, trace_.y, *ld);
+      s2 = point_on_line_side(wrap_add(trace_.x, trace_.dx), wrap_add(trace_.y, trace_.dy), *ld);
+    }
+    if (s1 == s2) return true;  // not crossed
+    const Fixed frac = intercept_vector(trace_, make_divline(*ld));
+    if (frac < 0) return true;  // behind the source
+    if (early_out && frac < kFracUnit && !ld->back) return false;  // a wall in reach ends it
+    intercepts_.push_back({frac, true, nullptr, ld});
+    return true;
+  };
+  auto add_thing = [&](Mobj* thing) {
+    // The thing's diagonal across the trace.
+    const bool positive = (trace_.dx ^ trace_.dy) > 0;
+    const Fixed xa = wrap_sub(thing->x, thing->radius), xb = wrap_add(thing->x, thing->radius);
+    const Fixed ya = positive ? wrap_add(thing->y, thing->radius) : wrap_sub(thing->y, thing->radius);
+    const Fixed yb = positive ? wrap_sub(thing->y, thing->radius) : wrap_add(thing->y, thing->radius);
+    if (point_on_divline_side(xa, ya, trace_) == point_on_divline_side(xb, yb, trace_)) return true;
+    const Fixed frac = intercept_vector(trace_, DivLine{xa, ya, wrap_sub(xb, xa), wrap_sub(yb, ya)});
+    if (frac < 0) return true;
+    intercepts_.push_back({frac, false, thing, nullptr});
+    return true;
+  };
+
+  // Step through the cells the trace crosses, in order.
+  x1 = wrap_sub(x1, org_x);
+  y1 = wrap_sub(y1, org_y);
+  x2 = wrap_sub(x2, org_x);
+  y2 = wrap_sub(y2, org_y);
+  const int xt1 = x1 >> kMapBlockShift, yt1 = y1 >> kMapBlockShift;
+  const int xt2 = x2 >> kMapBlockShift, yt2 = y2 >> kMapBlockShift;
+  constexpr int kBlockToFrac = kMapBlockShift - kFracBits;
+  int map_xstep, map_ystep;
+  Fixed partial, xstep, ystep;
+  if (xt2 > xt1) {
+    map_xstep = 1;
+    partial = kFracUnit - ((x1 >> kBlockToFrac) & (kFracUnit - 1));
+    ystep = fixed_div(wrap_sub(y2, y1), std::abs(wrap_sub(x2, x1)));
+  } else if (xt2 < xt1) {
+    map_xstep = -1;
+    partial = (x1 >> kBlockToFrac) & (kFracUnit - 1);
+    ystep = fixed_div(wrap_sub(y2, y1), std::abs(wrap_sub(x2, x1)));
+  } else {
+    map_xstep = 0;
+    partial = kFracUnit;
+    ystep = 256 * kFracUnit;
+  }
+  Fixed y_intercept = wrap_add(y1 >> kBlockToFrac, fixed_mul(partial, ystep));
+  if (yt2 > yt1) {
+    map_ystep = 1;
+    partial = kFracUnit - ((y1 >> kBlockToFrac) & (kFracUnit - 1));
+    xstep = fixed_div(wrap_sub(x2, x1), std::abs(wrap_sub(y2, y1)));
+  } else if (yt2 < yt1) {
+    map_ystep = -1;
+    partial = (y1 >> kBlockToFrac) & (kFracUnit - 1);
+    xstep = fixed_div(wrap_sub(x2, x1), std::abs(wrap_sub(y2, y1)));
+  } else {
+    map_ystep = 0;
+    partial = kFracUnit;
+    xstep = 256 * kFracUnit;
+  }
+  Fixed x_intercept = wrap_add(x1 >> kBlockToFrac, fixed_mul(partial, xstep));
+  int map_x = xt1, map_y = yt1;
+  for (int count = 0; count < 64; ++count) {  // the count stops a rounding error from skipping the end
+    if ((flags & kAddLines) && !block_lines(map_x, map_y, add_line)) return false;
+    if ((flags & kAddThings) && !block_things(map_x, map_y, add_thing)) return false;
+    if (map_x == xt2 && map_y == yt2) break;
+    if ((y_intercept >> kFracBits) == map_y) {
+      y_intercept = wrap_add(y_intercept, ystep);
+      map_x += map_xstep;
+    } else if ((x_intercept >> kFracBits) == map_x) {
+      x_intercept = wrap_add(x_intercept, xstep);
+      map_y += map_ystep;
+    }
+  }
+
+  // Nearest first (Doom's selection: the first of equal fractions), up to the trace's end.
+  for (size_t left = intercepts_.size(); left > 0; --left) {
+    Fixed dist = INT_MAX;
+    Intercept* in = nullptr;
+    for (Intercept& scan : intercepts_)
+      if (scan.frac < dist) dist = scan.frac, in = &scan;
+    if (dist > kFracUnit) return true;
+    if (!trav(*in)) return false;
+    in->frac = INT_MAX;
+  }
+  return true;
+}
+
+}  // namespace p3d::play

@@ -1,0 +1,214 @@
+// The World's frame: a level set up as Doom's P_SetupLevel sets it (things spawned in
+// THINGS order, then the sector specials), the tic as P_Ticker runs it, the thinker
+// list, sounds and messages, and the level state the renderers draw.
+#include "engine/play/world.h"
+
+#include <algorithm>
+
+namespace p3d::play {
+
+namespace {
+
+constexpr double kDegreesPerAngle = 360.0 / 4294967296.0;
+
+// Doom II's monsters, which Doom's own games do not spawn: Doom stops loading a map's
+// things at the first of them.
+bool doom2_only(int editor_number) {
+  switch (editor_number) {
+    case 68: case 64: case 88: case 89: case 69: case 67: case 71: case 65: case 66: case 84:
+      return true;
+    default:
+      return false;
+  }
+}
+
+}  // namespace
+
+World::World(Map map, const level::Level& level, const GameOptions& options, Random random, const Inventory* carried)
+    : map_(std::move(map)), level_(level), options_(options), random_(random) {
+  states_.assign(std::begin(kStates), std::end(kStates));
+  thing_info_.assign(std::begin(kThingTypes), std::end(kThingTypes));
+  if (options_.fast || options_.skill == 5) {  // Doom's G_InitNew: faster demons and missiles
+    for (size_t s = size_t(StateId::kSargRun1); s <= size_t(StateId::kSargPain2); ++s) states_[s].tics >>= 1;
+    for (ThingType t : {ThingType::kBruisershot, ThingType::kHeadshot, ThingType::kTroopshot})
+      thing_info_[size_t(t)].speed = 20 * kFracUnit;
+  }
+  respawn_monsters_ = options_.respawn || options_.skill == 5;
+  block_links_.assign(size_t(map_.blockmap.width) * size_t(map_.blockmap.height), nullptr);
+  index_walls();
+  index_sprite_frames();
+  if (carried) {
+    player_.inv = *carried;
+    player_.state = PlayerState::kLive;
+  }
+  player_.view_z = 1;
+  for (const MapThing& mt : map_.things) {
+    if (!options_.commercial && doom2_only(mt.type)) break;
+    spawn_map_thing(mt);
+  }
+  spawn_specials();
+  state_ = level::start_state(level_, options_.skill);
+  show();
+}
+
+World::~World() = default;
+
+void World::tick(const TicCmd& cmd) {
+  sounds_.clear();
+  messages_.clear();
+  player_.cmd = cmd;
+  if (player_.mo) player_think(player_);
+  run_thinkers();
+  update_specials();
+  ++level_time_;
+  show();
+}
+
+void World::add_thinker(std::unique_ptr<Thinker> t) { thinkers_.push_back(std::move(t)); }
+
+void World::run_thinkers() {
+  // By index: thinkers added while the list runs (missiles, puffs) run this tic too.
+  for (size_t i = 0; i < thinkers_.size(); ++i) {
+    Thinker* t = thinkers_[i].get();
+    if (t->removed || !t->active) continue;
+    switch (t->kind) {
+      case Thinker::Kind::kMobj: mobj_thinker(static_cast<Mobj*>(t)); break;
+      case Thinker::Kind::kDoor: think_door(static_cast<Door*>(t)); break;
+      case Thinker::Kind::kFloor: think_floor(static_cast<Floor*>(t)); break;
+      case Thinker::Kind::kPlat: think_plat(static_cast<Plat*>(t)); break;
+      case Thinker::Kind::kCeiling: think_ceiling(static_cast<Ceiling*>(t)); break;
+      case Thinker::Kind::kLightFlash: think_light_flash(static_cast<LightFlash*>(t)); break;
+      case Thinker::Kind::kStrobe: think_strobe(static_cast<Strobe*>(t)); break;
+      case Thinker::Kind::kGlow: think_glow(static_cast<Glow*>(t)); break;
+      case Thinker::Kind::kFireFlicker: think_fire_flicker(static_cast<FireFlicker*>(t)); break;
+    }
+  }
+  // Removed thinkers leave the list; things among them stay allocated, since others may
+  // still point at them (Doom's freed memory kept its contents too).
+  auto kept = std::stable_partition(thinkers_.begin(), thinkers_.end(), [](const auto& t) { return !t->removed; });
+  for (auto it = kept; it != thinkers_.end(); ++it) graveyard_.push_back(std::move(*it));
+  thinkers_.erase(kept, thinkers_.end());
+}
+
+std::vector<const Mobj*> World::things() const {
+  std::vector<const Mobj*> out;
+  for (const auto& t : thinkers_)
+    if (t->kind == Thinker::Kind::kMobj && !t->removed) out.push_back(static_cast<const Mobj*>(t.get()));
+  return out;
+}
+
+size_t World::thinker_count() const {
+  return size_t(std::count_if(thinkers_.begin(), thinkers_.end(), [](const auto& t) { return !t->removed; }));
+}
+
+// ---- sounds, messages, exits -----------------------------------------------------
+
+void World::start_sound(const Mobj* origin, Sound sound) {
+  if (sound == Sound::kNone) return;
+  sounds_.push_back(origin ? SoundEvent{sound, origin->id, origin->x, origin->y} : SoundEvent{sound, 0, 0, 0});
+}
+
+void World::start_sector_sound(const Sector* sector, Sound sound) {
+  if (sound == Sound::kNone) return;
+  sounds_.push_back({sound, kSectorOrigin + uint64_t(sector->index), sector->sound_x, sector->sound_y});
+}
+
+void World::stop_sound(const Mobj*) {}  // sounds are the listener's business
+
+void World::say(std::string message) {
+  player_.message = message;
+  messages_.push_back(std::move(message));
+}
+
+void World::exit_level(bool secret) { exit_ = secret ? ExitKind::kSecret : ExitKind::kNormal; }
+
+// ---- what the renderers see ------------------------------------------------------
+
+// Which of the level's walls draw each line: WAD levels name their line as the wall's
+// source; levels built from walls have a line per wall.
+void World::index_walls() {
+  line_walls_.assign(map_.lines.size(), {});
+  for (uint32_t w = 0; w < level_.walls.size(); ++w) {
+    const int line = map_.wall_lines.empty() ? level_.walls[w].source : map_.wall_lines[w];
+    if (line >= 0 && size_t(line) < line_walls_.size()) line_walls_[size_t(line)].push_back(w);
+  }
+  start_offsets_.resize(map_.sides.size());
+  for (size_t i = 0; i < map_.sides.size(); ++i) start_offsets_[i] = map_.sides[i].texture_offset;
+}
+
+// The level's sprite frame for each of Doom's sprites and frames, bright or not.
+void World::index_sprite_frames() {
+  sprite_frames_.assign(size_t(Sprite::kCount), std::vector<int32_t>(64, level::kNone));
+  for (size_t s = 0; s < size_t(Sprite::kCount); ++s) {
+    const std::string name = kSpriteNames[s];
+    for (size_t f = 0; f < level_.sprite_frames.size(); ++f) {
+      const level::SpriteFrame& frame = level_.sprite_frames[f];
+      if (frame.name.size() != 5 || frame.name.compare(0, 4, name) != 0) continue;
+      const int letter = frame.name[4] - 'A';
+      if (letter < 0 || letter >= 32) continue;
+      int32_t& slot = sprite_frames_[s][size_t(letter + (frame.bright ? 32 : 0))];
+      if (slot == level::kNone) slot = int32_t(f);
+    }
+  }
+}
+
+int32_t World::level_frame(const Mobj& mo) const {
+  const int letter = mo.frame & kFrameMask;
+  if (size_t(mo.sprite) >= sprite_frames_.size() || letter >= 32) return level::kNone;
+  const std::vector<int32_t>& frames = sprite_frames_[size_t(mo.sprite)];
+  const bool bright = mo.frame & kFullBright;
+  const int32_t exact = frames[size_t(letter + (bright ? 32 : 0))];
+  return exact != level::kNone ? exact : frames[size_t(letter + (bright ? 0 : 32))];
+}
+
+void World::show() {
+  for (size_t i = 0; i < map_.sectors.size() && i < state_.sectors.size(); ++i) {
+    const Sector& s = map_.sectors[i];
+    level::SectorState& out = state_.sectors[i];
+    out.floor = to_double(s.floor_height);
+    out.ceiling = to_double(s.ceiling_height);
+    out.light = s.light;
+    out.floor_texture = s.floor_pic;
+    out.ceiling_texture = s.ceiling_pic;
+    out.special = s.special;
+  }
+  bool scrolls = false;
+  for (size_t l = 0; l < map_.lines.size(); ++l) {
+    const Line& line = map_.lines[l];
+    for (uint32_t w : line_walls_[l]) {
+      state_.specials[w] = line.special;
+      for (int k = 0; k < 2; ++k) {
+        if (line.side[k] < 0 || level_.walls[w].sides[k].sector == level::kNone) continue;
+        const Side& side = map_.sides[size_t(line.side[k])];
+        state_.texture(w, k, level::kUpperPart) = side.top;
+        state_.texture(w, k, level::kMiddlePart) = side.middle;
+        state_.texture(w, k, level::kLowerPart) = side.bottom;
+      }
+      const Fixed scrolled = wrap_sub(map_.sides[size_t(line.side[0])].texture_offset, start_offsets_[size_t(line.side[0])]);
+      if (scrolled) {
+        if (state_.scrolled.empty()) state_.scrolled.assign(level_.walls.size(), 0);
+        state_.scrolled[w] = to_double(scrolled);
+        scrolls = true;
+      }
+    }
+  }
+  if (!scrolls) state_.scrolled.clear();
+  // Textures animate by the level time of the last tic's P_UpdateSpecials.
+  if (level_time_ > 0) level::animate_textures(level_, state_, uint64_t(level_time_ - 1));
+  state_.things.clear();
+  for (const auto& t : thinkers_) {
+    if (t->kind != Thinker::Kind::kMobj || t->removed) continue;
+    const Mobj& mo = static_cast<const Mobj&>(*t);
+    if (&mo == player_.mo) continue;  // the view's own body
+    level::ShownThing shown;
+    shown.pos = {to_double(mo.x), to_double(mo.y)};
+    shown.z = to_double(mo.z);
+    shown.angle = double(mo.angle) * kDegreesPerAngle;
+    shown.frame = level_frame(mo);
+    shown.sector = mo.subsector->sector->index;
+    shown.flags = (mo.flags & kShadow) ? level::kShownShadow : 0;
+    if (shown.frame != level::kNone) state_.things.push_back(shown);
+  }
+}
+
+}  // namespace p3d::play

@@ -1,0 +1,556 @@
+// Doom's play simulation: a level played by Doom's rules, in Doom's 16.16 fixed
+// point with its angle tables, random table and order of calls, so that a Doom demo
+// plays as Doom played it. Things (Doom's mobjs) and sector movers are thinkers, run
+// in the order they were made, 35 tics a second.
+//
+// The World is Doom's p_*.c as one class whose members live in files by concern:
+//   world.cpp     construction (P_SetupLevel's play part), the tic (P_Ticker), what the renderers see
+//   maputl.cpp    geometry and the blockmap: line sides, openings, thing links, path traversal
+//   move.cpp      movement and collision (P_CheckPosition, P_TryMove, sliding), hitscans, use, blasts, crushing
+//   mobj.cpp      things: spawning, states, momentum, gravity, missiles, removal
+//   sight.cpp     line of sight (P_CheckSight: reject table, then the node tree)
+//   player.cpp    the player's thrust, view height, death and powers (p_user.c)
+//   enemy.cpp     monsters' thinking and every thing action (p_enemy.c)
+//   weapons.cpp   the player's weapons (p_pspr.c)
+//   interact.cpp  pickups, damage and death (p_inter.c)
+//   specials.cpp  lines walked, used and shot, sector specials, animations (p_spec.c, p_switch.c, p_telept.c)
+//   movers.cpp    doors, lifts, floors, stairs, ceilings and crushers (p_doors.c, p_plats.c, p_floor.c, p_ceilng.c)
+//   lights.cpp    flickering, strobing and glowing sectors (p_lights.c)
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/level/level.h"
+#include "engine/play/angle.h"
+#include "engine/play/fixed.h"
+#include "engine/play/info.h"
+#include "engine/play/inventory.h"
+#include "engine/play/map.h"
+#include "engine/play/random.h"
+
+namespace p3d::play {
+
+constexpr Fixed kGravity = kFracUnit;
+constexpr Fixed kMaxMove = 30 * kFracUnit;
+constexpr Fixed kFloatSpeed = 4 * kFracUnit;
+constexpr Fixed kPlayerRadius = 16 * kFracUnit;
+constexpr Fixed kMaxRadius = 32 * kFracUnit;
+constexpr Fixed kViewHeight = 41 * kFracUnit;
+constexpr Fixed kUseRange = 64 * kFracUnit;
+constexpr Fixed kMeleeRange = 64 * kFracUnit;
+constexpr Fixed kMissileRange = 32 * 64 * kFracUnit;
+constexpr int kBaseThreshold = 100;
+constexpr Fixed kOnFloorZ = std::numeric_limits<Fixed>::min();
+constexpr Fixed kOnCeilingZ = std::numeric_limits<Fixed>::max();
+constexpr int kFullBright = 0x8000;  // a frame's bright bit (Doom's FF_FULLBRIGHT)
+constexpr int kFrameMask = 0x7fff;
+constexpr int kMtfAmbush = 8;  // a placed thing's deaf flag (Doom's MTF_AMBUSH)
+
+// The game being played (Doom's gameskill, gamemode and the -fast, -respawn and
+// -nomonsters options).
+struct GameOptions {
+  int skill = 3;            // 1..5, as -skill
+  bool fast = false, respawn = false, no_monsters = false;
+  bool commercial = true;   // Doom II's rules (MAPxx); else Doom's (ExMy)
+  bool ultimate = true;     // the fourth episode's rules (Ultimate Doom, Freedoom Phase 1)
+  int episode = 1, map = 1;
+};
+
+// One tic of input, Doom's ticcmd_t.
+struct TicCmd {
+  int8_t forward = 0;  // walk 25, run 50
+  int8_t side = 0;     // > 0 to the right
+  int16_t turn = 0;    // 1/65536 of a turn, > 0 to the left
+  uint8_t buttons = 0;  // Doom's: attack 1, use 2, change weapon 4 with the weapon in bits 3..5, special 128
+  friend bool operator==(const TicCmd&, const TicCmd&) = default;
+};
+enum TicButton : uint8_t {
+  kBtAttack = 1,
+  kBtUse = 2,
+  kBtChange = 4,
+  kBtWeaponShift = 3,
+  kBtWeaponMask = 7 << 3,
+  kBtSpecial = 128,
+};
+
+// Everything that thinks: things and the sectors' movers and lights.
+struct Thinker {
+  enum class Kind : uint8_t { kMobj, kDoor, kFloor, kPlat, kCeiling, kLightFlash, kStrobe, kGlow, kFireFlicker };
+  explicit Thinker(Kind k) : kind(k) {}
+  virtual ~Thinker() = default;
+  Kind kind;
+  bool removed = false;  // Doom's function -1: taken out of the list on the next pass
+  bool active = true;    // Doom's function NULL: in the list, doing nothing (stopped lifts and crushers)
+};
+
+struct Player;
+
+struct Mobj : Thinker {
+  Mobj() : Thinker(Kind::kMobj) {}
+  Fixed x = 0, y = 0, z = 0;
+  Mobj *snext = nullptr, *sprev = nullptr;  // the sector's list of things
+  Angle angle = 0;
+  Sprite sprite = Sprite::kTroo;
+  int frame = 0;  // with kFullBright
+  Mobj *bnext = nullptr, *bprev = nullptr;  // the blockmap cell's list of things
+  Subsector* subsector = nullptr;
+  Fixed floor_z = 0, ceiling_z = 0;
+  Fixed radius = 0, height = 0;
+  Fixed mom_x = 0, mom_y = 0, mom_z = 0;
+  int valid_count = 0;
+  ThingType type = ThingType::kPlayer;
+  const ThingInfo* info = nullptr;
+  int tics = 0;
+  StateId state = StateId::kNull;
+  uint32_t flags = 0;  // ThingFlag
+  int health = 0;
+  int move_dir = 0;    // 0..7, or 8 for none (Doom's DI_NODIR)
+  int move_count = 0;  // steps before choosing a new direction
+  Mobj* target = nullptr;  // what it chases or attacks; a missile's shooter
+  int reaction_time = 0;   // tics before it may attack (or move, for a player after a teleport)
+  int threshold = 0;       // tics it keeps chasing its attacker before looking for the player again
+  Player* player = nullptr;
+  int last_look = 0;       // the player it looked at last
+  MapThing spawn_point;
+  Mobj* tracer = nullptr;  // what a homing missile homes on
+  uint32_t id = 0;         // 1, 2, 3... in spawn order: names it as a sound's origin
+};
+
+enum class PlayerState : uint8_t { kLive, kDead, kReborn };
+
+// A weapon sprite (Doom's pspdef_t): the weapon, or its flash.
+struct Psprite {
+  StateId state = StateId::kNull;  // kNull: not shown
+  int tics = 0;
+  Fixed sx = 0, sy = 0;
+};
+enum PspriteLayer { kPsWeapon, kPsFlash, kPsCount };
+
+struct Player {
+  Mobj* mo = nullptr;
+  PlayerState state = PlayerState::kReborn;
+  TicCmd cmd;
+  Fixed view_z = 0, view_height = 0, delta_view_height = 0, bob = 0;
+  Inventory inv;        // health, armor, ammo, weapons (ready and pending), powers, flashes, items
+  uint8_t cards = 0;    // the six keys: blue, yellow, red card, blue, yellow, red skull
+  bool attack_down = false, use_down = false;
+  int cheats = 0;       // kCheatNoclip...
+  int refire = 0;       // shots fired in a row (the chaingun and pistol's spread)
+  int kill_count = 0, secret_count = 0;  // items: inv.items
+  std::string message;  // Doom's message for the player, shown then cleared by the screen
+  Mobj* attacker = nullptr;  // who hurt it last (the face looks there)
+  int extra_light = 0;       // the gun's flash lights the view
+  int fixed_colormap = 0;    // the light amplification visor and invulnerability
+  std::array<Psprite, kPsCount> psprites{};
+  bool did_secret = false;
+};
+enum Cheat : int { kCheatNoclip = 1, kCheatGodMode = 2 };
+
+// ---- sector movers (p_spec.h)
+struct Door : Thinker {
+  enum class Type : uint8_t { kNormal, kClose30ThenOpen, kClose, kOpen, kRaiseIn5Mins, kBlazeRaise, kBlazeOpen, kBlazeClose };
+  Door() : Thinker(Kind::kDoor) {}
+  Type type = Type::kNormal;
+  Sector* sector = nullptr;
+  Fixed top_height = 0, speed = 0;
+  int direction = 0;  // 1 up, 0 waiting, -1 down, 2 initial wait
+  int top_wait = 0, top_countdown = 0;
+};
+struct Floor : Thinker {
+  enum class Type : uint8_t {
+    kLower, kLowerToLowest, kTurboLower, kRaise, kRaiseToNearest, kRaiseToTexture, kLowerAndChange,
+    kRaise24, kRaise24AndChange, kRaiseCrush, kRaiseTurbo, kDonutRaise, kRaise512,
+  };
+  Floor() : Thinker(Kind::kFloor) {}
+  Type type = Type::kLower;
+  bool crush = false;
+  Sector* sector = nullptr;
+  int direction = 0;
+  int new_special = 0;
+  int texture = level::kNone;
+  Fixed destination = 0, speed = 0;
+};
+struct Plat : Thinker {
+  enum class Status : uint8_t { kUp, kDown, kWaiting, kInStasis };
+  enum class Type : uint8_t { kPerpetualRaise, kDownWaitUpStay, kRaiseAndChange, kRaiseToNearestAndChange, kBlazeDwus };
+  Plat() : Thinker(Kind::kPlat) {}
+  Sector* sector = nullptr;
+  Fixed speed = 0, low = 0, high = 0;
+  int wait = 0, count = 0;
+  Status status = Status::kUp, old_status = Status::kUp;
+  bool crush = false;
+  int tag = 0;
+  Type type = Type::kPerpetualRaise;
+};
+struct Ceiling : Thinker {
+  enum class Type : uint8_t { kLowerToFloor, kRaiseToHighest, kLowerAndCrush, kCrushAndRaise, kFastCrushAndRaise, kSilentCrushAndRaise };
+  Ceiling() : Thinker(Kind::kCeiling) {}
+  Type type = Type::kLowerToFloor;
+  Sector* sector = nullptr;
+  Fixed bottom_height = 0, top_height = 0, speed = 0;
+  bool crush = false;
+  int direction = 0, tag = 0, old_direction = 0;
+};
+struct LightFlash : Thinker {
+  LightFlash() : Thinker(Kind::kLightFlash) {}
+  Sector* sector = nullptr;
+  int count = 0, max_light = 0, min_light = 0, max_time = 0, min_time = 0;
+};
+struct Strobe : Thinker {
+  Strobe() : Thinker(Kind::kStrobe) {}
+  Sector* sector = nullptr;
+  int count = 0, min_light = 0, max_light = 0, dark_time = 0, bright_time = 0;
+};
+struct Glow : Thinker {
+  Glow() : Thinker(Kind::kGlow) {}
+  Sector* sector = nullptr;
+  int min_light = 0, max_light = 0, direction = 0;
+};
+struct FireFlicker : Thinker {
+  FireFlicker() : Thinker(Kind::kFireFlicker) {}
+  Sector* sector = nullptr;
+  int count = 0, max_light = 0, min_light = 0;
+};
+
+// A sound a tic started: from a thing or a sector's sound origin (origin names which,
+// so that a new sound from it replaces the old), or from nowhere (origin 0: the
+// player's own pickups, heard at full volume).
+struct SoundEvent {
+  Sound sound = Sound::kNone;
+  uint64_t origin = 0;
+  Fixed x = 0, y = 0;
+  friend bool operator==(const SoundEvent&, const SoundEvent&) = default;
+};
+// Origins of sector sounds are kSectorOrigin + the sector's index; things' are their id.
+constexpr uint64_t kSectorOrigin = uint64_t(1) << 40;
+
+enum class ExitKind : uint8_t { kNone, kNormal, kSecret };
+
+class World {
+ public:
+  // The level at its start (Doom's P_SetupLevel): things spawned in THINGS order,
+  // then the sector specials, drawing from `random` as Doom does (the stream goes on
+  // from level to level). `carried` is what the player brings from the last level
+  // (nullptr: a new player, as Doom's G_PlayerReborn makes one).
+  World(Map map, const level::Level& level, const GameOptions& options, Random random,
+        const Inventory* carried = nullptr);
+  ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  // One tic (Doom's P_Ticker): the player thinks, every thinker runs, the specials
+  // update. Then state() shows the level as it stands.
+  void tick(const TicCmd& cmd);
+
+  const level::State& state() const { return state_; }
+  const Player& player() const { return player_; }
+  Player& player() { return player_; }
+  const Map& map() const { return map_; }
+  const GameOptions& options() const { return options_; }
+  const Random& random() const { return random_; }
+  int level_time() const { return level_time_; }
+  // Set once the player takes an exit (Doom's G_ExitLevel, G_SecretExitLevel).
+  ExitKind exit() const { return exit_; }
+  // The level's totals, for the tally.
+  int total_kills() const { return total_kills_; }
+  int total_items() const { return total_items_; }
+  int total_secrets() const { return total_secrets_; }
+  // The sounds started and the messages given during the last tic, in order.
+  const std::vector<SoundEvent>& sounds() const { return sounds_; }
+  const std::vector<std::string>& messages() const { return messages_; }
+  // Every thing, in thinker order (removed ones left out).
+  std::vector<const Mobj*> things() const;
+  size_t thinker_count() const;
+
+  // ---- world.cpp
+  void run_thinkers();
+  void add_thinker(std::unique_ptr<Thinker> t);
+  template <typename T>
+  T* make_thinker() {
+    auto t = std::make_unique<T>();
+    T* raw = t.get();
+    add_thinker(std::move(t));
+    return raw;
+  }
+  void remove_thinker(Thinker* t) { t->removed = true; }
+  void show();  // state_ from the map and the things
+  void start_sound(const Mobj* origin, Sound sound);
+  void start_sector_sound(const Sector* sector, Sound sound);
+  void stop_sound(const Mobj* origin);  // Doom's S_StopSound (a no-op for play)
+  void say(std::string message);        // the player's message
+  void exit_level(bool secret);
+  void index_walls();          // line_walls_ and the sides' starting offsets
+  void index_sprite_frames();  // sprite_frames_
+  int32_t level_frame(const Mobj& mo) const;  // the level's sprite frame a thing shows, or kNone
+
+  // ---- maputl.cpp
+  struct DivLine {
+    Fixed x = 0, y = 0, dx = 0, dy = 0;
+  };
+  struct Intercept {
+    Fixed frac = 0;
+    bool is_line = false;
+    Mobj* thing = nullptr;
+    Line* line = nullptr;
+  };
+  struct Opening {
+    Fixed top = 0, bottom = 0, range = 0, low_floor = 0;
+  };
+  static int point_on_line_side(Fixed x, Fixed y, const Line& line);
+  static int box_on_line_side(const Box& box, const Line& line);
+  static int point_on_divline_side(Fixed x, Fixed y, const DivLine& line);
+  static DivLine make_divline(const Line& line);
+  static Fixed intercept_vector(const DivLine& v2, const DivLine& v1);
+  static Opening line_opening(const Line& line);
+  void unset_thing_position(Mobj* thing);
+  void set_thing_position(Mobj* thing);
+  // Doom's P_BlockLinesIterator and P_BlockThingsIterator: f returns false to stop;
+  // so do they.
+  template <typename F>
+  bool block_lines(int bx, int by, F&& f);
+  template <typename F>
+  bool block_things(int bx, int by, F&& f);
+  enum PathFlags { kAddLines = 1, kAddThings = 2, kEarlyOut = 4 };
+  // Doom's P_PathTraverse: the lines and things the trace meets, nearest first; trav
+  // returns false to stop. `trace_` holds the trace meanwhile.
+  bool path_traverse(Fixed x1, Fixed y1, Fixed x2, Fixed y2, int flags, const std::function<bool(Intercept&)>& trav);
+  int block_x(Fixed x) const { return (x - map_.blockmap.origin_x) >> kMapBlockShift; }
+  int block_y(Fixed y) const { return (y - map_.blockmap.origin_y) >> kMapBlockShift; }
+
+  // ---- move.cpp (p_map.c)
+  bool check_position(Mobj* thing, Fixed x, Fixed y);
+  bool try_move(Mobj* thing, Fixed x, Fixed y);
+  bool teleport_move(Mobj* thing, Fixed x, Fixed y);
+  void slide_move(Mobj* mo);
+  bool thing_height_clip(Mobj* thing);
+  Fixed aim_line_attack(Mobj* shooter, Angle angle, Fixed distance);  // sets line_target_
+  void line_attack(Mobj* shooter, Angle angle, Fixed distance, Fixed slope, int damage);
+  void use_lines(Player& player);
+  void radius_attack(Mobj* spot, Mobj* source, int damage);
+  bool change_sector(Sector* sector, bool crunch);
+
+  // ---- mobj.cpp (p_mobj.c)
+  // The game's state table and thing types (Doom's states[] and mobjinfo[], which -fast
+  // and nightmare change: faster demons and imp, baron and cacodemon missiles).
+  const StateInfo& state_of(StateId s) const { return states_[size_t(s)]; }
+  const ThingInfo& info_of(ThingType t) const { return thing_info_[size_t(t)]; }
+  bool set_mobj_state(Mobj* mo, StateId state);
+  void explode_missile(Mobj* mo);
+  void xy_movement(Mobj* mo);
+  void z_movement(Mobj* mo);
+  void nightmare_respawn(Mobj* mo);
+  void mobj_thinker(Mobj* mo);
+  Mobj* spawn_mobj(Fixed x, Fixed y, Fixed z, ThingType type);
+  void remove_mobj(Mobj* mo);
+  void spawn_player(const MapThing& start);
+  void spawn_map_thing(const MapThing& mt);
+  void spawn_puff(Fixed x, Fixed y, Fixed z);
+  void spawn_blood(Fixed x, Fixed y, Fixed z, int damage);
+  void check_missile_spawn(Mobj* th);
+  Mobj* spawn_missile(Mobj* source, Mobj* dest, ThingType type);
+  void spawn_player_missile(Mobj* source, ThingType type);
+
+  // ---- sight.cpp
+  bool check_sight(Mobj* t1, Mobj* t2);
+
+  // ---- player.cpp (p_user.c)
+  void thrust(Player& player, Angle angle, Fixed move);
+  void calc_height(Player& player);
+  void move_player(Player& player);
+  void death_think(Player& player);
+  void player_think(Player& player);
+  void reborn_player();  // Doom's G_PlayerReborn: a fresh player, keeping the level's counts
+  void choose_weapon(Player& player, Weapon weapon);  // the weapon keys
+  void run_down_powers(Player& player);
+
+  // ---- enemy.cpp (p_enemy.c): monsters, and the action of every thing state
+  void act(Mobj* mo, Action action);  // a state's action, on entering it
+  void noise_alert(Mobj* target, Mobj* emitter);
+  bool check_melee_range(Mobj* actor);
+  bool check_missile_range(Mobj* actor);
+  bool move(Mobj* actor);
+  bool try_walk(Mobj* actor);
+  void new_chase_dir(Mobj* actor);
+  bool look_for_players(Mobj* actor, bool all_around);
+
+  // ---- weapons.cpp (p_pspr.c)
+  void act_weapon(Player& player, Psprite& psp, Action action);  // a weapon state's action
+  void set_psprite(Player& player, int layer, StateId state);
+  void bring_up_weapon(Player& player);
+  bool check_ammo(Player& player);
+  void fire_weapon(Player& player);
+  void drop_weapon(Player& player);
+  void setup_psprites(Player& player);
+  void move_psprites(Player& player);
+  void bfg_spray(Mobj* mo);  // the BFG ball's A_BFGSpray (a thing action)
+
+  // ---- interact.cpp (p_inter.c)
+  void touch_special_thing(Mobj* special, Mobj* toucher);
+  void kill_mobj(Mobj* source, Mobj* target);
+  void damage_mobj(Mobj* target, Mobj* inflictor, Mobj* source, int damage);
+
+  // ---- specials.cpp (p_spec.c, p_switch.c, p_telept.c)
+  Side* get_side(int sector, int line, int side);
+  Sector* get_sector(int sector, int line, int side);
+  bool two_sided(int sector, int line);
+  Sector* get_next_sector(Line* line, Sector* sector);
+  Fixed find_lowest_floor_surrounding(Sector* sec);
+  Fixed find_highest_floor_surrounding(Sector* sec);
+  Fixed find_next_highest_floor(Sector* sec, Fixed current);
+  Fixed find_lowest_ceiling_surrounding(Sector* sec);
+  Fixed find_highest_ceiling_surrounding(Sector* sec);
+  int find_sector_from_line_tag(const Line* line, int start);
+  int find_min_surrounding_light(Sector* sector, int max);
+  void cross_special_line(int line, int side, Mobj* thing);
+  void shoot_special_line(Mobj* thing, Line* line);
+  bool use_special_line(Mobj* thing, Line* line, int side);
+  void player_in_special_sector(Player& player);
+  void update_specials();
+  void spawn_specials();
+  bool do_donut(Line* line);
+  void change_switch_texture(Line* line, bool use_again);
+  bool teleport(Line* line, int side, Mobj* thing);
+
+  // ---- movers.cpp (p_doors.c, p_plats.c, p_floor.c, p_ceilng.c)
+  enum class MoveResult : uint8_t { kOk, kCrushed, kPastDest };
+  MoveResult move_plane(Sector* sector, Fixed speed, Fixed dest, bool crush, int floor_or_ceiling, int direction);
+  void think_door(Door* door);
+  bool do_door(Line* line, Door::Type type);
+  bool do_locked_door(Line* line, Door::Type type, Mobj* thing);
+  void vertical_door(Line* line, Mobj* thing);
+  void spawn_door_close_in_30(Sector* sec);
+  void spawn_door_raise_in_5_mins(Sector* sec);
+  void think_plat(Plat* plat);
+  bool do_plat(Line* line, Plat::Type type, int amount);
+  void activate_in_stasis(int tag);
+  void stop_plat(Line* line);
+  void think_floor(Floor* floor);
+  bool do_floor(Line* line, Floor::Type type);
+  bool build_stairs(Line* line, bool turbo);
+  void think_ceiling(Ceiling* ceiling);
+  bool do_ceiling(Line* line, Ceiling::Type type);
+  bool ceiling_crush_stop(Line* line);
+  void activate_in_stasis_ceiling(Line* line);
+
+  // ---- lights.cpp (p_lights.c)
+  void think_light_flash(LightFlash* flash);
+  void think_strobe(Strobe* strobe);
+  void think_glow(Glow* glow);
+  void think_fire_flicker(FireFlicker* flicker);
+  void spawn_fire_flicker(Sector* sector);
+  void spawn_light_flash(Sector* sector);
+  void spawn_strobe_flash(Sector* sector, int fast_or_slow, bool in_sync);
+  void spawn_glowing_light(Sector* sector);
+  void start_light_strobing(Line* line);
+  void turn_tag_lights_off(Line* line);
+  void light_turn_on(Line* line, int bright);
+
+  // ---- state shared by the files above, as Doom's globals were
+  Map map_;
+  const level::Level& level_;
+  GameOptions options_;
+  Random random_;
+  Player player_;
+  std::vector<StateInfo> states_;
+  std::vector<ThingInfo> thing_info_;
+  bool respawn_monsters_ = false;  // nightmare or -respawn
+  bool on_ground_ = false;  // player.cpp: the player stood on the floor when it last moved (Doom's onground)
+  int level_time_ = 0;
+  int valid_count_ = 1;
+  std::vector<Mobj*> block_links_;  // per blockmap cell: its things (Doom's blocklinks)
+  // move.cpp's P_CheckPosition results (Doom's tm* globals)
+  struct MoveCheck {
+    Mobj* thing = nullptr;
+    uint32_t flags = 0;
+    Fixed x = 0, y = 0;
+    Box bbox{};
+    Fixed floor_z = 0, ceiling_z = 0, dropoff_z = 0;
+    bool float_ok = false;
+    Line* ceiling_line = nullptr;
+    std::vector<Line*> special_hits;  // lines with specials touched (Doom's spechit)
+  } tm_;
+  // Hitscans (P_AimLineAttack, P_LineAttack)
+  Mobj* line_target_ = nullptr;
+  Mobj* shoot_thing_ = nullptr;
+  Fixed shoot_z_ = 0, attack_range_ = 0, aim_slope_ = 0, top_slope_ = 0, bottom_slope_ = 0;
+  int la_damage_ = 0;
+  // Sliding (P_SlideMove)
+  Fixed best_slide_frac_ = 0, second_slide_frac_ = 0;
+  Line *best_slide_line_ = nullptr, *second_slide_line_ = nullptr;
+  Mobj* slide_mo_ = nullptr;
+  Fixed tm_xmove_ = 0, tm_ymove_ = 0;
+  // Blasts and crushing
+  Mobj *bomb_source_ = nullptr, *bomb_spot_ = nullptr;
+  int bomb_damage_ = 0;
+  bool crush_change_ = false, no_fit_ = false;
+  // Path traversal
+  DivLine trace_;
+  std::vector<Intercept> intercepts_;
+  // Monsters
+  Mobj* sound_target_ = nullptr;  // P_NoiseAlert's
+  std::vector<Mobj*> brain_targets_;  // the icon of sin's spawn spots
+  size_t brain_target_on_ = 0;
+  bool brain_easy_ = false;
+  int game_tic_at_start_ = 0;  // Doom's gametic when this level began (A_Tracer goes by gametic, not leveltime)
+  Mobj* corpse_hit_ = nullptr;  // the Arch-vile's
+  Fixed vile_try_x_ = 0, vile_try_y_ = 0;
+  Mobj* vile_obj_ = nullptr;
+  Fixed bullet_slope_ = 0;  // weapons.cpp
+  // Specials
+  std::vector<Line*> scrolling_lines_;  // special 48
+  struct Button {
+    Line* line = nullptr;
+    int where = 0;  // 0 top, 1 middle, 2 bottom
+    int texture = level::kNone;
+    int timer = 0;
+    const Sector* sound_sector = nullptr;
+  };
+  std::vector<Button> buttons_;
+  std::vector<int> switch_partner_;  // per level texture: its switch pair, or kNone
+  std::vector<Plat*> active_plats_;
+  std::vector<Ceiling*> active_ceilings_;
+  std::vector<std::vector<uint32_t>> line_walls_;  // per line: the level's walls drawn for it
+  std::vector<Fixed> start_offsets_;                // per side: its texture offset at the start (scrolling)
+  int total_kills_ = 0, total_items_ = 0, total_secrets_ = 0;
+  ExitKind exit_ = ExitKind::kNone;
+  uint32_t next_id_ = 1;
+  std::vector<std::unique_ptr<Thinker>> thinkers_;  // in run order; removed ones kept until the level ends
+  std::vector<std::unique_ptr<Thinker>> graveyard_;  // removed things others may still point at
+  std::vector<SoundEvent> sounds_;
+  std::vector<std::string> messages_;
+  level::State state_;
+  std::vector<std::vector<int32_t>> sprite_frames_;  // per Sprite: per frame (bright in the top half) the level's frame, or kNone
+};
+
+// ---- the templates of maputl.cpp
+
+template <typename F>
+bool World::block_lines(int bx, int by, F&& f) {
+  const Blockmap& bm = map_.blockmap;
+  if (bx < 0 || by < 0 || bx >= bm.width || by >= bm.height) return true;
+  for (size_t at = bm.list(bx, by); at < bm.words.size() && bm.words[at] != Blockmap::kEnd; ++at) {
+    const size_t n = bm.words[at];
+    if (n >= map_.lines.size()) continue;  // a broken list: Doom would read past its lines
+    Line* ld = &map_.lines[n];
+    if (ld->valid_count == valid_count_) continue;  // already checked in another cell
+    ld->valid_count = valid_count_;
+    if (!f(ld)) return false;
+  }
+  return true;
+}
+
+template <typename F>
+bool World::block_things(int bx, int by, F&& f) {
+  const Blockmap& bm = map_.blockmap;
+  if (bx < 0 || by < 0 || bx >= bm.width || by >= bm.height) return true;
+  for (Mobj* mo = block_links_[size_t(by) * size_t(bm.width) + size_t(bx)]; mo; mo = mo->bnext)
+    if (!f(mo)) return false;
+  return true;
+}
+
+}  // namespace p3d::play

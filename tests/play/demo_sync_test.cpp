@@ -1,0 +1,129 @@
+// Doom's own demos beside Chocolate Doom's play of them: the console player as
+// Chocolate Doom left it after each tic (tests/golden/doom_demos, traced from its
+// G_Ticker) against the World's. In sync: the player's position, angle, momentum,
+// health, view height and Doom's random index all equal, tic after tic.
+//
+// P3D_SYNC_DUMP=DIR writes our things after every tic of each demo to DIR (the format
+// of the traced Chocolate Doom's detailed trace), for finding where a demo parts.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "engine/bsp/load.h"
+#include "engine/play/doom_demo.h"
+#include "engine/play/world.h"
+#include "tests/support/support.h"
+
+namespace p3d::play {
+namespace {
+
+struct TraceTic {
+  int64_t x, y, z, angle, momx, momy, health, random_index, view_z;
+  bool operator==(const TraceTic&) const = default;
+};
+
+std::vector<TraceTic> read_trace(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::vector<TraceTic> out;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    int64_t tic;
+    TraceTic t;
+    fields >> tic >> t.x >> t.y >> t.z >> t.angle >> t.momx >> t.momy >> t.health >> t.random_index >> t.view_z;
+    out.push_back(t);
+  }
+  return out;
+}
+
+TraceTic trace_of(const World& w) {
+  const Player& p = w.player();
+  const Mobj& mo = *p.mo;
+  return {mo.x, mo.y, mo.z, int64_t(mo.angle), mo.mom_x, mo.mom_y, p.inv.health, w.random().play_index(), p.view_z};
+}
+
+std::string describe(const TraceTic& t) {
+  std::ostringstream o;
+  o << "x " << t.x << " y " << t.y << " z " << t.z << " angle " << t.angle << " mom " << t.momx << "," << t.momy
+    << " health " << t.health << " random " << t.random_index << " viewz " << t.view_z;
+  return o.str();
+}
+
+void dump_things(std::ostream& out, const World& w, size_t tic) {
+  out << "T " << tic << " " << int(w.random().play_index()) << "\n";
+  const std::vector<const Mobj*> things = w.things();
+  auto index_of = [&](const Mobj* m) {
+    for (size_t i = 0; i < things.size(); ++i)
+      if (things[i] == m) return int(i);
+    return -1;
+  };
+  for (const Mobj* m : things)
+    out << "M " << int(m->type) << " " << m->x << " " << m->y << " " << m->z << " " << m->angle << " " << m->mom_x
+        << " " << m->mom_y << " " << m->mom_z << " " << int(m->state) << " " << m->tics << " " << m->health << " "
+        << m->flags << " " << m->move_dir << " " << m->move_count << " " << m->reaction_time << " " << m->threshold
+        << " " << index_of(m->target) << "\n";
+}
+
+struct Sync {
+  size_t tics_in_sync = 0, traced = 0, demo_tics = 0;
+};
+
+// Plays DEMOn of the WAD beside its trace; returns how many tics from the first stay in sync.
+Sync sync_of(const std::string& wad_file, int demo_number) {
+  const auto wad = test::freedoom_path(wad_file);
+  const wad::Stack wads = bsp::read_wads({wad});
+  const std::string lump = "DEMO" + std::to_string(demo_number);
+  const DoomDemo demo = decode_doom_demo(wads.find(lump)->bytes, lump);
+  const bool commercial = wads.map("MAP01").has_value();
+  const std::string map_name = demo.map_name(commercial);
+  const level::Level level = bsp::open_level(bsp::LevelSource{{}, {wad}, map_name}).level;
+  GameOptions options;
+  options.skill = demo.skill;
+  options.fast = demo.fast;
+  options.respawn = demo.respawn;
+  options.no_monsters = demo.no_monsters;
+  options.commercial = commercial;
+  options.ultimate = !commercial && wads.map("E4M1").has_value();
+  options.episode = demo.episode;
+  options.map = demo.map;
+  World world(map_from_wads(wads, map_name, level), level, options, Random{});
+
+  const std::string stem = wad_file.substr(0, wad_file.find('.')) + "_demo" + std::to_string(demo_number);
+  const std::vector<TraceTic> trace = read_trace(test::source_dir() / "tests/golden/doom_demos" / (stem + ".trace"));
+  std::ofstream dump;
+  if (const char* d = std::getenv("P3D_SYNC_DUMP")) dump.open(std::filesystem::path(d) / (stem + ".ours"));
+  Sync s;
+  s.traced = trace.size();
+  s.demo_tics = demo.tic_count();
+  for (size_t t = 0; t < trace.size() && t < demo.tic_count(); ++t) {
+    const DoomTic d = demo.console_tic(t);
+    world.tick(TicCmd{d.forward, d.side, int16_t(uint16_t(uint8_t(d.turn)) << 8), d.buttons});
+    if (dump.is_open()) dump_things(dump, world, t);
+    const TraceTic ours = trace_of(world);
+    if (!(ours == trace[t])) {
+      std::printf("[ parted   ] %s %s at tic %zu:\n  ours  %s\n  doom  %s\n", wad_file.c_str(), lump.c_str(), t,
+                  describe(ours).c_str(), describe(trace[t]).c_str());
+      if (!dump.is_open()) break;
+    } else if (s.tics_in_sync == t) {
+      ++s.tics_in_sync;
+    }
+  }
+  std::printf("[ sync     ] %s %s %s skill %d: %zu of %zu traced tics in sync (%zu in the demo)\n", wad_file.c_str(),
+              lump.c_str(), map_name.c_str(), demo.skill, s.tics_in_sync, s.traced, s.demo_tics);
+  return s;
+}
+
+TEST(DemoSync, FreedoomsEightDemosPlayInSyncWithChocolateDoomToTheirLastTic) {
+  for (const char* wad : {"freedoom1.wad", "freedoom2.wad"})
+    for (int demo = 1; demo <= 4; ++demo) {
+      const Sync s = sync_of(wad, demo);
+      EXPECT_EQ(s.traced, s.demo_tics) << wad << " DEMO" << demo << ": the trace covers the whole demo";
+      EXPECT_EQ(s.tics_in_sync, s.demo_tics) << wad << " DEMO" << demo;
+    }
+}
+
+}  // namespace
+}  // namespace p3d::play
