@@ -1,6 +1,6 @@
 #include "game/automap.h"
 
-#include "engine/sim/specials.h"
+#include "engine/play/line_kinds.h"
 #include "engine/wad/things.h"
 
 #include <cmath>
@@ -37,12 +37,12 @@ void Automap::set_level(const level::Level& level) {
 
 namespace {
 
-uint32_t key_colour(sim::Lock lock) {
+uint32_t key_colour(play::Lock lock) {
   switch (lock) {
-    case sim::Lock::kBlue: return image::rgba(70, 110, 255);
-    case sim::Lock::kYellow: return image::rgba(240, 220, 40);
-    case sim::Lock::kRed: return image::rgba(240, 40, 40);
-    case sim::Lock::kNone: break;
+    case play::Lock::kBlue: return image::rgba(70, 110, 255);
+    case play::Lock::kYellow: return image::rgba(240, 220, 40);
+    case play::Lock::kRed: return image::rgba(240, 40, 40);
+    case play::Lock::kNone: break;
   }
   return image::rgba(230, 230, 230);
 }
@@ -50,12 +50,12 @@ uint32_t key_colour(sim::Lock lock) {
 // The colour of a line by its special: doors, locked doors in their key's colour,
 // teleporters, exits. False for other lines (colour unchanged).
 bool special_colour(int special, uint32_t& colour) {
-  switch (sim::line_kind(special)) {
-    case sim::LineKind::kDoor: colour = image::rgba(240, 140, 40); return true;
-    case sim::LineKind::kLockedDoor: colour = key_colour(sim::line_special(special)->lock); return true;
-    case sim::LineKind::kTeleporter: colour = image::rgba(60, 230, 100); return true;
-    case sim::LineKind::kExit: colour = image::rgba(255, 90, 200); return true;
-    case sim::LineKind::kPlain: break;
+  switch (play::line_kind(special)) {
+    case play::LineKind::kDoor: colour = image::rgba(240, 140, 40); return true;
+    case play::LineKind::kLockedDoor: colour = key_colour(play::line_lock(special)); return true;
+    case play::LineKind::kTeleporter: colour = image::rgba(60, 230, 100); return true;
+    case play::LineKind::kExit: colour = image::rgba(255, 90, 200); return true;
+    case play::LineKind::kPlain: break;
   }
   return false;
 }

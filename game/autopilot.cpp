@@ -7,9 +7,9 @@ namespace p3d::game {
 namespace {
 
 constexpr double kReached = 24;
-constexpr int kGiveUpTics = 3 * sim::kTicRate;  // stuck this long: on to the next waypoint
-constexpr int kAfterUseTics = sim::kTicRate;     // a door needs a second to open
-constexpr int kWaitTics = 2 * sim::kTicRate;
+constexpr int kGiveUpTics = 3 * 35;  // stuck this long: on to the next waypoint
+constexpr int kAfterUseTics = 35;     // a door needs a second to open
+constexpr int kWaitTics = 2 * 35;
 
 // The turn (1/65536 of a turn) toward `degrees`, at most a fast keyboard turn a tic.
 int16_t turn_toward(double from, double degrees) {
@@ -37,20 +37,20 @@ void Autopilot::advance() {
   best_distance_ = INFINITY;
 }
 
-sim::TicCommand Autopilot::walk_to(const sim::Player& p, geom::Vec2 target, double distance) const {
-  const geom::Vec2 to = target - p.pos;
-  sim::TicCommand cmd;
-  cmd.turn = turn_toward(p.angle, std::atan2(to.y, to.x) * 180 / M_PI);
-  const double off = std::fabs(std::remainder(std::atan2(to.y, to.x) * 180 / M_PI - p.angle, 360.0));
+play::TicCmd Autopilot::walk_to(geom::Vec2 pos, double angle, geom::Vec2 target, double distance) const {
+  const geom::Vec2 to = target - pos;
+  play::TicCmd cmd;
+  cmd.turn = turn_toward(angle, std::atan2(to.y, to.x) * 180 / M_PI);
+  const double off = std::fabs(std::remainder(std::atan2(to.y, to.x) * 180 / M_PI - angle, 360.0));
   cmd.forward = int8_t(off < 30 ? (distance > 96 ? 50 : 25) : 0);
   return cmd;
 }
 
-sim::TicCommand Autopilot::next(const sim::Player& p) {
+play::TicCmd Autopilot::next(geom::Vec2 pos, double angle) {
   while (!done()) {
     const Waypoint& w = waypoints_[index_];
     if (!arrived_) {
-      const double distance = glm::length(w.pos - p.pos);
+      const double distance = glm::length(w.pos - pos);
       if (distance < kReached || stuck_tics_ > kGiveUpTics) {
         arrived_ = true;
         if (w.action == Waypoint::Action::kWalk) advance();
@@ -62,9 +62,9 @@ sim::TicCommand Autopilot::next(const sim::Player& p) {
       } else {
         ++stuck_tics_;
       }
-      return walk_to(p, w.pos, distance);
+      return walk_to(pos, angle, w.pos, distance);
     }
-    sim::TicCommand cmd;
+    play::TicCmd cmd;
     ++action_tics_;
     if (w.action == Waypoint::Action::kWait) {
       if (action_tics_ > kWaitTics) {
@@ -78,13 +78,13 @@ sim::TicCommand Autopilot::next(const sim::Player& p) {
       advance();
       continue;
     }
-    const int16_t turn = turn_toward(p.angle, w.angle);
+    const int16_t turn = turn_toward(angle, w.angle);
     if (std::abs(turn) > 60 && action_tics_ < kGiveUpTics) {
       cmd.turn = turn;
       return cmd;
     }
     if (action_tics_ < kGiveUpTics) {
-      cmd.buttons = sim::kUse;
+      cmd.buttons = play::kBtUse;
       action_tics_ = kGiveUpTics;  // pressed: now wait
       return cmd;
     }

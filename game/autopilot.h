@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "engine/render/camera_file.h"
-#include "engine/sim/sim.h"
+#include "engine/play/world.h"
 
 namespace p3d::game {
 
@@ -25,13 +25,14 @@ std::vector<Waypoint> route_from_cameras(const std::vector<render::CameraSpec>& 
 class Autopilot {
  public:
   explicit Autopilot(std::vector<Waypoint> waypoints) : waypoints_(std::move(waypoints)) {}
-  // The command for this tic; done() once every waypoint is reached (or given up on).
-  sim::TicCommand next(const sim::Player& player);
+  // done() once every waypoint is reached (or given up on).
+  // The command for this tic, for a player at `pos` facing `angle` (degrees).
+  play::TicCmd next(geom::Vec2 pos, double angle);
   bool done() const { return index_ >= waypoints_.size(); }
 
  private:
   void advance();
-  sim::TicCommand walk_to(const sim::Player& p, geom::Vec2 target, double distance) const;
+  play::TicCmd walk_to(geom::Vec2 pos, double angle, geom::Vec2 target, double distance) const;
 
   std::vector<Waypoint> waypoints_;
   size_t index_ = 0;

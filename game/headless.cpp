@@ -8,49 +8,74 @@
 
 namespace p3d::game {
 
-const char* exit_name(sim::Exit exit) {
+const char* exit_name(play::ExitKind exit) {
   switch (exit) {
-    case sim::Exit::kNormal: return "normal";
-    case sim::Exit::kSecret: return "secret";
-    case sim::Exit::kNone: break;
+    case play::ExitKind::kNormal: return "normal";
+    case play::ExitKind::kSecret: return "secret";
+    case play::ExitKind::kNone: break;
   }
   return "none";
 }
 
-HeadlessResult replay_headless(Session& session, const sim::Demo& demo, const HeadlessOptions& o) {
-  if (demo.level_fingerprint != sim::fingerprint(session.level()))
+namespace {
+
+// Where the player stands and what it carries, as the CSV and JSON give it.
+Stats player_fields(const Session& session, int frame, size_t tic) {
+  const Session::Pose pose = session.pose();
+  const play::Player& p = session.player();
+  return {{"frame", double(frame)},
+          {"tic", double(tic)},
+          {"x", pose.pos.x},
+          {"y", pose.pos.y},
+          {"z", pose.z},
+          {"angle", pose.angle},
+          {"health", double(p.inv.health)},
+          {"armor", double(p.inv.armor)},
+          {"kills", double(p.kill_count)},
+          {"items", double(p.inv.items)},
+          {"secrets", double(p.secret_count)},
+          {"keys", double(p.cards)}};
+}
+
+}  // namespace
+
+HeadlessResult replay_headless(Session& session, const play::Demo& demo, const HeadlessOptions& o) {
+  if (demo.level_fingerprint != play::fingerprint(session.level()))
     throw Error("the demo was recorded on a different level than " + session.name());
   std::filesystem::create_directories(o.out_dir);
-  session.spawn(demo.start, demo.angle);
+  if (demo.custom_start) session.spawn(demo.start, demo.angle);
   session.set_keys(demo.keys);
   render::Frame frame(o.width, o.height);
-  std::string csv = "frame,tic,x,y,z,angle,renderer";
-  for (const Stat& f : render::stat_fields({})) csv += "," + f.name;
-  csv += ",keys,secrets,exit\n";
+  std::string csv;
   std::string json = "{\"level\": " + json_string(session.name()) + ", \"frames\": [\n";
   HeadlessResult result;
   for (size_t tic = 0;; ++tic) {
-    const bool last = tic == demo.tics.size() || session.exited() != sim::Exit::kNone;
+    const bool last = tic == demo.tics.size() || session.exited() != play::ExitKind::kNone;
     if (tic % size_t(o.capture_every) == 0 || last) {
-      const render::RenderStats& s = session.render(frame, 1.0);
-      char name[32];
-      std::snprintf(name, sizeof name, "frame%05d.png", result.frames);
-      image::save_png(frame, o.out_dir / name);
-      const sim::Player& p = session.player();
-      char line[200];
-      std::snprintf(line, sizeof line, "%d,%zu,%.6f,%.6f,%.6f,%.6f,%s", result.frames, tic, p.pos.x, p.pos.y, p.z,
-                    p.angle, session.renderer_name().c_str());
-      csv += line;
-      for (const Stat& f : render::stat_fields(s)) csv += "," + stat_number(f.value);
-      std::snprintf(line, sizeof line, ",%d,%d,%s\n", int(p.keys), session.world().secrets_found(),
-                    exit_name(session.exited()));
-      csv += line;
-      const Stats where = {{"frame", double(result.frames)}, {"tic", double(tic)}, {"x", p.pos.x}, {"y", p.pos.y},
-                           {"z", p.z},  {"angle", p.angle}, {"keys", double(p.keys)},
-                           {"secrets", double(session.world().secrets_found())}};
-      json += std::string(result.frames ? ",\n" : "") + "  {\"player\": " + stats_json(where) + ", \"renderer\": " +
-              json_string(session.renderer_name()) + ", \"stats\": " + stats_json(render::stat_fields(s)) +
-              ", \"exit\": " + json_string(exit_name(session.exited())) + "}";
+      render::RenderStats s;
+      if (o.frames) {
+        s = session.render(frame, 1.0);
+        char name[32];
+        std::snprintf(name, sizeof name, "frame%05d.png", result.frames);
+        image::save_png(frame, o.out_dir / name);
+      }
+      const Stats where = player_fields(session, result.frames, tic);
+      const std::vector<Stat> drawn = o.frames ? render::stat_fields(s) : std::vector<Stat>{};
+      if (csv.empty()) {  // the header, from the first row's fields
+        for (const Stat& f : where) csv += (csv.empty() ? "" : ",") + f.name;
+        if (o.frames) csv += ",renderer";
+        for (const Stat& f : drawn) csv += "," + f.name;
+        csv += ",exit\n";
+      }
+      std::string row;
+      for (const Stat& f : where) row += (row.empty() ? "" : ",") + stat_number(f.value);
+      if (o.frames) row += "," + session.renderer_name();
+      for (const Stat& f : drawn) row += "," + stat_number(f.value);
+      csv += row + "," + exit_name(session.exited()) + "\n";
+      json += std::string(result.frames ? ",\n" : "") + "  {\"player\": " + stats_json(where);
+      if (o.frames)
+        json += ", \"renderer\": " + json_string(session.renderer_name()) + ", \"stats\": " + stats_json(drawn);
+      json += ", \"exit\": " + json_string(exit_name(session.exited())) + "}";
       ++result.frames;
     }
     if (last) {

@@ -18,7 +18,7 @@ std::string format(const char* fmt, auto... args) {
 }  // namespace
 
 std::vector<std::string> hud_lines(std::string_view title, std::string_view renderer, const render::RenderStats& s,
-                                   const FrameTimes& t, const sim::Player& p) {
+                                   const FrameTimes& t, geom::Vec2 pos, double z, double angle) {
   std::vector<std::string> lines;
   lines.push_back(format("%.*s  %.0f fps  %.2f ms (sim %.2f, render %.2f, present %.2f)", int(title.size()), title.data(),
                          t.fps, t.frame_ms, t.sim_ms, t.render_ms, t.present_ms));
@@ -33,14 +33,13 @@ std::vector<std::string> hud_lines(std::string_view title, std::string_view rend
                                        (unsigned long long)s.sprite_pixels);
   if (s.early_exit) stats += "  early exit";
   lines.push_back(stats);
-  lines.push_back(format("x %.1f  y %.1f  z %.1f  angle %.1f", p.pos.x, p.pos.y, p.z, p.angle));
+  lines.push_back(format("x %.1f  y %.1f  z %.1f  angle %.1f", pos.x, pos.y, z, angle));
   return lines;
 }
 
 std::string progress_line(uint8_t keys, int secrets_found, int secrets_total, bool noclip) {
   static constexpr std::pair<uint8_t, const char*> kNames[] = {
-      {sim::kBlueCard, "blue card"},   {sim::kYellowCard, "yellow card"},   {sim::kRedCard, "red card"},
-      {sim::kBlueSkull, "blue skull"}, {sim::kYellowSkull, "yellow skull"}, {sim::kRedSkull, "red skull"}};
+      {1, "blue card"}, {2, "yellow card"}, {4, "red card"}, {8, "blue skull"}, {16, "yellow skull"}, {32, "red skull"}};
   std::string held;
   for (const auto& [bit, name] : kNames)
     if (keys & bit) held += (held.empty() ? "" : ", ") + std::string(name);
@@ -55,11 +54,13 @@ std::vector<std::string> help_lines() {
       "W/S, Up/Down    move",
       "A/D             strafe",
       "Space, E        use: open doors, press switches",
-      "idclip          (typed) walk through walls",
+      "Ctrl, mouse     fire",
+      "1-7             weapons (as Doom's keys)",
+      "idclip, iddqd, idkfa  (typed) walk through walls, god mode, every weapon",
       "Left/Right      turn (Alt: strafe)",
       "mouse           turn (Esc frees it)",
       "Shift           run",
-      "1-5             bsp painter dda sphere reference",
+      "F5-F9           renderer: bsp painter dda sphere reference",
       "Tab             automap (O: over the view, B: BSP lines, T: things, +/-: zoom)",
       "F2              heads-up text",
       "F11             fullscreen",

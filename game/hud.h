@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "engine/render/camera.h"
-#include "engine/sim/sim.h"
+#include "engine/geom/geom.h"
 
 namespace p3d::game {
 
@@ -17,7 +17,7 @@ struct FrameTimes {
 };
 
 std::vector<std::string> hud_lines(std::string_view title, std::string_view renderer, const render::RenderStats& stats,
-                                   const FrameTimes& times, const sim::Player& player);
+                                   const FrameTimes& times, geom::Vec2 pos, double z, double angle);
 std::vector<std::string> help_lines();
 
 // "keys: blue card, red skull  secrets 1/3  noclip": what the player has found.

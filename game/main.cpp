@@ -24,8 +24,8 @@ std::vector<game::Waypoint> route(const std::string& path) {
 // returns the tics recorded.
 size_t autopilot_headless(game::Session& session, const std::vector<game::Waypoint>& route, uint64_t max_tics) {
   game::Autopilot pilot(route);
-  while (!pilot.done() && session.exited() == sim::Exit::kNone && (!max_tics || session.tics() < max_tics))
-    session.tic(pilot.next(session.player()));
+  while (!pilot.done() && session.exited() == play::ExitKind::kNone && (!max_tics || session.tics() < max_tics))
+    session.tic(pilot.next(session.pose().pos, session.pose().angle));
   return session.recording().tics.size();
 }
 
@@ -53,11 +53,11 @@ DemoBytes demo_bytes(const std::string& name, const bsp::LevelSource& source) {
   return {{found->bytes.begin(), found->bytes.end()}, source.wads.back().filename().string() + ":" + lump};
 }
 
-// What a Doom demo asks for that the simulation does not do yet, said once.
+// What a Doom demo asks for that the game does not play (it plays the console player
+// alone, in a single-player game), said once.
 void say_what_is_not_played(const play::DoomDemo& d, const std::string& what) {
   std::string missing;
-  for (const auto& [on, name] : {std::pair{d.deathmatch, "deathmatch"}, {d.respawn, "-respawn"}, {d.fast, "-fast"},
-                                 {d.no_monsters, "-nomonsters"}, {d.player_count() > 1, "other players"}})
+  for (const auto& [on, name] : {std::pair{d.deathmatch, "deathmatch"}, {d.player_count() > 1, "other players"}})
     if (on) missing += std::string(missing.empty() ? "" : ", ") + name;
   if (!missing.empty()) std::fprintf(stderr, "game: %s: not simulated yet: %s\n", what.c_str(), missing.c_str());
   if (d.truncated) std::fprintf(stderr, "game: %s: ends without Doom's end marker (played as far as it goes)\n", what.c_str());
@@ -82,7 +82,8 @@ int main(int argc, char** argv) {
   std::vector<int> warp;
   std::string record, play, out_dir, resolution, window = "960x600", renderer = "bsp", autopilot;
   bool headless = false, fullscreen = false, no_vsync = false, map_reload = false, timedemo = false, all_keys = false;
-  bool json = false, no_sound = false, no_status_bar = false;
+  bool json = false, no_sound = false, no_status_bar = false, stats_only = false;
+  game::GameFlags flags;
   int capture_every = 35;
   uint64_t quit_after = 0;
   int skill = level::kDefaultSkill;
@@ -101,6 +102,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--out", out_dir, "--headless: directory for the frames and stats.csv");
   app.add_flag("--json", json, "--headless --play: also stats.json, the same statistics by name");
+  app.add_flag("--stats-only", stats_only, "--headless --play: stats.csv alone, no frames drawn (as fast as the rules run)");
+  app.add_flag("--fast", flags.fast, "Doom's -fast: faster demons and monster missiles");
+  app.add_flag("--respawn", flags.respawn, "Doom's -respawn: dead monsters come back (as in nightmare)");
+  app.add_flag("--nomonsters", flags.no_monsters, "Doom's -nomonsters: no monsters are spawned");
   app.add_option("--resolution,--size", resolution, "render at this fixed WxH (320x200 for the old look); "
                  "default: the window's size (640x400 headless)");
   app.add_option("--window", window, "window size WxH")->capture_default_str();
@@ -143,38 +148,42 @@ int main(int argc, char** argv) {
     if (!resolution.empty()) cli::parse_size(resolution, rw, rh, "--resolution");
     cli::parse_size(window, ww, wh, "--window");
 
-    std::optional<sim::Demo> demo;
+    std::optional<play::Demo> demo;
     std::optional<play::DoomDemo> doom_demo;
+    if (stats_only && (!headless || play.empty())) throw CLI::ValidationError("--stats-only", "needs --headless --play");
     if (!play.empty()) {
       const DemoBytes bytes = demo_bytes(play, source);
-      if (sim::is_our_demo(bytes.bytes)) {
-        demo = sim::decode_demo(bytes.bytes, bytes.what);
-        skill = demo->skill;  // the demo's things, as recorded
+      if (play::is_our_demo(bytes.bytes)) {
+        demo = play::decode_demo(bytes.bytes, bytes.what);
+        skill = demo->skill;  // the game the demo recorded
+        flags = {demo->fast, demo->respawn, demo->no_monsters};
       } else {
         doom_demo = play::decode_doom_demo(bytes.bytes, bytes.what);
         if (!source.is_wad()) throw Error(bytes.what + ": a Doom demo plays a WAD's map: name the IWAD with --iwad");
         if (level_args.map.empty() && warp.empty()) source.map = doom_demo->map_name(has_doom2_maps(source));
         skill = doom_demo->skill;
+        flags = {doom_demo->fast, doom_demo->respawn, doom_demo->no_monsters};
         say_what_is_not_played(*doom_demo, bytes.what);
       }
     }
-    game::Session session(source, skill);
-    if (doom_demo) demo = sim::demo_from_doom(*doom_demo, session.level());
+    game::Session session(source, skill, flags);
+    if (doom_demo) demo = play::demo_from_doom(*doom_demo, session.level());
     session.fov = fov;
     session.show_status_bar = !no_status_bar;
     session.renderer_options = renderer_options;
     session.give_all_keys(all_keys);
     const std::string& map_path = session.name();
     if (!session.select_renderer(renderer)) throw Error("renderer '" + renderer + "' cannot draw " + map_path);
-    if (demo && demo->level_fingerprint != sim::fingerprint(session.level()))
+    if (demo && demo->level_fingerprint != play::fingerprint(session.level()))
       throw Error(play + ": the demo was recorded on a different level than " + map_path);
 
     if (headless) {
       if (demo) {
-        game::HeadlessOptions o{capture_every, out_dir, rw ? rw : 640, rh ? rh : 400, json};
+        game::HeadlessOptions o{capture_every, out_dir, rw ? rw : 640, rh ? rh : 400, json, !stats_only};
         const game::HeadlessResult r = game::replay_headless(session, *demo, o);
-        std::printf("replayed %zu of %zu tics (exit: %s), wrote %d frames and stats.csv to %s\n", r.tics,
-                    demo->tics.size(), game::exit_name(r.exit), r.frames, out_dir.c_str());
+        std::printf("replayed %zu of %zu tics (exit: %s), wrote %d %s to %s\n", r.tics, demo->tics.size(),
+                    game::exit_name(r.exit), r.frames, stats_only ? "rows of stats.csv" : "frames and stats.csv",
+                    out_dir.c_str());
         return 0;
       }
       session.start_recording(std::filesystem::path(record).extension() == ".lmp");

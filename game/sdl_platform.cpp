@@ -16,7 +16,7 @@ namespace p3d::game {
 
 namespace {
 
-constexpr double kTicSeconds = 1.0 / sim::kTicRate;
+constexpr double kTicSeconds = 1.0 / kTicRate;
 
 double now_seconds() { return double(SDL_GetPerformanceCounter()) / double(SDL_GetPerformanceFrequency()); }
 
@@ -30,6 +30,8 @@ Controls read_controls(int mouse_dx) {
   c.strafe_left = k[SDL_SCANCODE_A];
   c.strafe_right = k[SDL_SCANCODE_D];
   c.use = k[SDL_SCANCODE_SPACE] || k[SDL_SCANCODE_E];
+  c.attack = k[SDL_SCANCODE_LCTRL] || k[SDL_SCANCODE_RCTRL] ||
+             (SDL_GetRelativeMouseMode() && (SDL_GetMouseState(nullptr, nullptr) & SDL_BUTTON_LMASK));
   c.strafe_modifier = k[SDL_SCANCODE_LALT] || k[SDL_SCANCODE_RALT];
   c.run = k[SDL_SCANCODE_LSHIFT] || k[SDL_SCANCODE_RSHIFT];
   c.mouse_dx = mouse_dx;
@@ -98,7 +100,10 @@ class Window {
     if (!resize()) return 1;
     SDL_SetRelativeMouseMode(SDL_TRUE);
     if (o_.autopilot) autopilot_.emplace(*o_.autopilot);
-    if (o_.play) session_.spawn(o_.play->start, o_.play->angle);
+    if (o_.play) {  // the demo's start and keys, as recorded
+      if (o_.play->custom_start) session_.spawn(o_.play->start, o_.play->angle);
+      session_.set_keys(o_.play->keys);
+    }
     if (!o_.record.empty()) session_.start_recording(o_.record.extension() == ".lmp");
     if (o_.map_reload) session_.watch_files();
 
@@ -259,7 +264,7 @@ class Window {
   }
 
   void key(SDL_Keycode k) {
-    if (k >= SDLK_a && k <= SDLK_z && cheats_.noclip(char(k))) noclip_typed_ = true;
+    if (k >= SDLK_a && k <= SDLK_z) cheats_typed_ |= cheats_.type(char(k));
     if (k == SDLK_ESCAPE) open_menu();
     if (k == SDLK_F10) running_ = false;
     if (k == SDLK_o && session_.show_automap) session_.automap.overlay = !session_.automap.overlay;
@@ -283,11 +288,12 @@ class Window {
         session_.say(e.what());
       }
     }
-    if (k >= SDLK_1 && k <= SDLK_5) session_.select_renderer(key_renderers()[size_t(k - SDLK_1)]);
+    if (k >= SDLK_F5 && k <= SDLK_F9) session_.select_renderer(key_renderers()[size_t(k - SDLK_F5)]);
+    if (k >= SDLK_1 && k <= SDLK_7) weapon_key_ = int(k - SDLK_0);
   }
 
   void run_tic() {
-    sim::TicCommand cmd;
+    play::DemoTic cmd;
     if (o_.play) {
       if (played_ >= o_.play->tics.size()) {
         running_ = false;
@@ -295,24 +301,24 @@ class Window {
       }
       cmd = o_.play->tics[played_++];
     } else if (autopilot_) {
-      cmd = autopilot_->next(session_.player());
+      cmd = {autopilot_->next(session_.pose().pos, session_.pose().angle), 0};
       if (autopilot_->done()) running_ = false;
     } else {
       Controls c = read_controls(mouse_dx_);
-      c.noclip = noclip_typed_;
-      noclip_typed_ = false;
+      c.cheats = std::exchange(cheats_typed_, 0);
+      c.weapon = std::exchange(weapon_key_, 0);
       mouse_dx_ = 0;
       turn_held_ = c.turn_left || c.turn_right ? turn_held_ + 1 : 0;
       cmd = make_command(c, turn_held_, o_.input);
     }
     if (session_.in_intermission()) {  // the tally waits for use (Space, E) to go on
-      if ((cmd.buttons & sim::kUse) && !use_held_) session_.enter_next_map();
-      use_held_ = cmd.buttons & sim::kUse;
+      if ((cmd.cmd.buttons & play::kBtUse) && !use_held_) session_.enter_next_map();
+      use_held_ = cmd.cmd.buttons & play::kBtUse;
       return;
     }
-    use_held_ = cmd.buttons & sim::kUse;
+    use_held_ = cmd.cmd.buttons & play::kBtUse;
     session_.tic(cmd);
-    if (session_.exited() != sim::Exit::kNone) {
+    if (session_.exited() != play::ExitKind::kNone) {
       if (o_.play || autopilot_) running_ = false;  // a demo or a route holds one level
       else if (!session_.start_intermission()) session_.enter_next_map();
     }
@@ -331,7 +337,8 @@ class Window {
   bool running_ = true;
   int mouse_dx_ = 0, turn_held_ = 0;
   Cheats cheats_;
-  bool noclip_typed_ = false;
+  uint8_t cheats_typed_ = 0;
+  int weapon_key_ = 0;
   size_t played_ = 0;
   std::optional<Autopilot> autopilot_;
   std::optional<SoundMixer> mixer_;

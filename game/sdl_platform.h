@@ -20,7 +20,7 @@ struct WindowOptions {
   bool sound = true;                        // Doom's sound effects from the level's WADs
   bool map_reload = false;                  // recompile the source map when it changes on disk
   std::filesystem::path record;             // write the tics played to this demo on exit
-  std::optional<sim::Demo> play;            // replay this demo, then quit
+  std::optional<play::Demo> play;            // replay this demo, then quit
   bool timedemo = false;                    // replay one tic per frame, as fast as possible (Doom's -timedemo)
   std::optional<std::vector<Waypoint>> autopilot;  // walk these waypoints, then quit
   InputSettings input;

@@ -10,34 +10,84 @@
 
 namespace p3d::game {
 
+namespace {
+
+constexpr double kDegreesPerAngle = 360.0 / 4294967296.0;
+
+play::Angle binary_angle(double degrees) {
+  return play::Angle(uint64_t(std::llround(std::fmod(degrees, 360.0) / 360.0 * 4294967296.0 + 4294967296.0)));
+}
+
+play::Fixed to_fixed_units(double units) { return play::Fixed(std::llround(units * play::kFracUnit)); }
+
+}  // namespace
+
 const std::vector<std::string>& key_renderers() {
   static const std::vector<std::string> names = {"bsp", "painter", "dda", "sphere", "reference"};
   return names;
 }
 
-Session::Session(const bsp::LevelSource& source, int skill) : source_(source), skill_(skill) {
+Session::Session(const bsp::LevelSource& source, int skill, GameFlags flags)
+    : source_(source), skill_(skill), flags_(flags) {
   load();
-  player_ = previous_ = world_->spawn();
   select_renderer("bsp");
   message_tics_ = 0;  // nothing to say at the start
 }
 
-void Session::load() {
+void Session::load(const play::Inventory* carried) {
   bsp::OpenedLevel opened = bsp::open_level(source_);
   name_ = opened.name;
   level_ = std::make_unique<level::Level>(std::move(opened.level));
-  world_ = std::make_unique<sim::World>(*level_, skill_);
   automap_view_.set_level(*level_);
-  sound_origins_ = play::sector_sound_origins(*level_);
   status_art_.reset();
   hud_font_.reset();
+  weapon_art_.reset();
   palettes_.clear();
   if (source_.is_wad()) {
     const wad::Stack wads = bsp::read_wads(source_.wads);
     status_art_ = play::StatusBarArt::load(wads);
     hud_font_ = play::HudFont::load(wads);
     palettes_ = wad::Art(wads).palettes();
+    weapon_art_ = std::make_unique<play::WeaponArt>(wads);
   }
+  start_world(carried);
+}
+
+// Doom's G_DoLoadLevel: the World on the level, Doom's options for its map, the play
+// stream going on from the last level.
+void Session::start_world(const play::Inventory* carried) {
+  play::GameOptions o;
+  o.skill = skill_;
+  o.fast = flags_.fast;
+  o.respawn = flags_.respawn;
+  o.no_monsters = flags_.no_monsters;
+  o.episode = 1;
+  o.map = 0;  // a hand-made level is no boss's map
+  std::optional<play::Map> map;
+  if (source_.is_wad()) {
+    const wad::Stack wads = bsp::read_wads(source_.wads);
+    const std::string map_name = bsp::resolve_map_name(wads, source_.map);
+    int episode = 0, number = 0;
+    o.commercial = std::sscanf(map_name.c_str(), "MAP%d", &number) == 1;
+    if (!o.commercial && std::sscanf(map_name.c_str(), "E%dM%d", &episode, &number) == 2) o.episode = episode;
+    o.map = number;
+    o.ultimate = !o.commercial && wads.map("E4M1").has_value();
+    map = play::map_from_wads(wads, map_name, *level_);
+  } else {
+    map = play::map_from_level(*level_);
+  }
+  world_ = std::make_unique<play::World>(std::move(*map), *level_, o, random_, carried);
+  if (all_keys_) set_keys(63);
+  tics_ = 0;
+  pose_ = previous_ = pose_now();
+  face_.start_level(play::face_input(player()));
+}
+
+Session::Pose Session::pose_now() const {
+  const play::Player& p = player();
+  if (!p.mo) return pose_;
+  return {{play::to_double(p.mo->x), play::to_double(p.mo->y)}, play::to_double(p.mo->z), play::to_double(p.view_z),
+          double(p.mo->angle) * kDegreesPerAngle};
 }
 
 std::string Session::title() const {
@@ -50,32 +100,37 @@ std::vector<std::filesystem::path> Session::files() const {
 }
 
 void Session::spawn(geom::Vec2 pos, double angle) {
-  player_ = previous_ = world_->spawn_at(pos, angle);
-  player_.keys = previous_.keys = all_keys_ ? sim::kAllKeys : 0;
+  world_->place_player(to_fixed_units(pos.x), to_fixed_units(pos.y), binary_angle(angle));
+  pose_ = previous_ = pose_now();
   tics_ = 0;
 }
 
-void Session::tic(const sim::TicCommand& cmd) {
-  if (world_->exit() != sim::Exit::kNone) return;  // the level is over: waiting for the next one
-  previous_ = player_;
-  sim::TicCommand played = cmd;
-  if (recording_on_ && doom_turns_) played.turn = sim::doom_demo_turn(cmd.turn);
-  world_->tick(player_, played);
+void Session::tic(const play::DemoTic& tic) {
+  if (world_->exit() != play::ExitKind::kNone) return;  // the level is over: waiting for the next one
+  if (player().state == play::PlayerState::kReborn) {  // Doom's G_DoReborn: the level from its start
+    random_ = world_->random();
+    start_world(nullptr);
+  }
+  previous_ = pose_;
+  play::DemoTic played = tic;
+  if (recording_on_ && doom_turns_) played.cmd.turn = play::doom_demo_turn(tic.cmd.turn);
+  if (played.cheats) world_->apply_cheats(played.cheats);
+  world_->tick(played.cmd);
   ++tics_;
   if (recording_on_) recording_.tics.push_back(played);
+  after_tic();
+}
+
+// What Doom's tickers do after the play: the messages, the face, sounds, the view.
+void Session::after_tic() {
   advance_message();
-  face_.tic(other_random_, play::FaceInput{.health = player_.inventory.health});
-  for (const sim::Event& e : world_->events())
-    if (!e.message.empty()) say(e.message);
+  face_.tic(other_random_, play::face_input(player()));
+  for (const std::string& m : world_->messages()) say(m);
   if (listening_) keep_sounds();
-  if (world_->reborn()) {  // Doom's G_DoReborn in a single-player game: the level from its start
-    load();
-    spawn(level_->player_start, level_->player_angle);
-    return;
-  }
-  if (world_->exit() != sim::Exit::kNone) {
+  pose_ = pose_now();
+  if (world_->exit() != play::ExitKind::kNone) {
     recording_on_ = false;  // a demo holds one level: it ends at its exit
-    say(world_->exit() == sim::Exit::kSecret ? "secret exit" : "exit");
+    say(world_->exit() == play::ExitKind::kSecret ? "secret exit" : "exit");
   }
 }
 
@@ -84,7 +139,7 @@ bool Session::enter_next_map() {
   if (source_.is_wad()) {
     const wad::Stack wads = bsp::read_wads(source_.wads);
     const std::string current = bsp::resolve_map_name(wads, source_.map);
-    next = doom::next_map(current, world_->exit() == sim::Exit::kSecret,
+    next = doom::next_map(current, world_->exit() == play::ExitKind::kSecret,
                           [&](const std::string& name) { return wads.map(name).has_value(); });
     if (next.empty()) why = "no map after " + current;
   } else {
@@ -93,14 +148,14 @@ bool Session::enter_next_map() {
   if (!next.empty()) source_.map = next;
   intermission_.reset();
   // Doom's G_PlayerFinishLevel: health, armor, ammo and weapons go on to the next
-  // map; keys, powers and the flash stay behind.
-  play::Inventory carried = player_.inventory;
+  // map; keys, powers and the flashes stay behind.
+  play::Inventory carried = player().inv;
   carried.powers = {};
-  carried.bonus_count = 0;
+  carried.bonus_count = carried.damage_count = 0;
   carried.items = 0;
-  load();
-  spawn(level_->player_start, level_->player_angle);
-  player_.inventory = previous_.inventory = carried;
+  random_ = world_->random();
+  const bool dead = player().state != play::PlayerState::kLive;
+  load(dead ? nullptr : &carried);
   if (!select_renderer(renderer_name_)) select_renderer("bsp");
   say(next.empty() ? why + ": starting it again" : "entered " + next);
   return !next.empty();
@@ -108,12 +163,12 @@ bool Session::enter_next_map() {
 
 render::Camera Session::camera(double alpha) const {
   alpha = std::clamp(alpha, 0.0, 1.0);
-  double turn = player_.angle - previous_.angle;  // the short way round
+  double turn = pose_.angle - previous_.angle;  // the short way round
   if (turn > 180) turn -= 360;
   if (turn < -180) turn += 360;
-  return render::Camera{previous_.pos + (player_.pos - previous_.pos) * alpha,
-                        previous_.view_z() + (player_.view_z() - previous_.view_z()) * alpha,
-                        previous_.angle + turn * alpha, fov};
+  return render::Camera{previous_.pos + (pose_.pos - previous_.pos) * alpha,
+                        previous_.view_z + (pose_.view_z - previous_.view_z) * alpha, previous_.angle + turn * alpha,
+                        fov};
 }
 
 bool Session::select_renderer(const std::string& name) {
@@ -147,6 +202,7 @@ const render::RenderStats& Session::render(render::Frame& frame, double alpha) {
   const int flash = frame.keep_indices ? 0 : flash_palette();
   if (flash) view.keep_indices = true;  // drawn in palette indices, then seen through the flash's palette
   stats_ = renderer_->render(*level_, world_->state(), camera(alpha), view, &probe_);
+  if (weapon_art_ && !show_automap) play::draw_weapon(player(), *weapon_art_, *level_, view, bar);
   if (flash) {
     view.keep_indices = false;
     if (view.indexed()) {
@@ -157,15 +213,23 @@ const render::RenderStats& Session::render(render::Frame& frame, double alpha) {
   }
   if (bar > 0) {
     std::copy(view_frame_.pixels.begin(), view_frame_.pixels.end(), frame.pixels.begin());
-    status_art_->draw(player_.inventory.status(player_.keys, face_.index()), frame,
-                      flash ? palettes_[size_t(flash)] : level_->palette);
+    const play::Player& p = player();
+    status_art_->draw(p.inv.status(p.cards, face_.index()), frame, flash ? palettes_[size_t(flash)] : level_->palette);
+  }
+  if (message_tics_ > 0 && doom_messages(frame)) {  // Doom's message line, top left, in its own font
+    const int doom_scale = play::ScreenPlace::scale_for(frame.width, frame.height);
+    hud_font_->draw(frame, message_, 0, 0, doom_scale, 0, 0, palettes_[size_t(flash)]);
   }
   if (!show_automap) probe_.order.clear();
   return stats_;
 }
 
+bool Session::doom_messages(const render::Frame& frame) const {
+  return hud_font_ && frame.width >= 320 && !palettes_.empty() && !frame.keep_indices;
+}
+
 int Session::flash_palette() const {
-  const int p = play::flash_palette(player_.inventory);  // red while hurt, gold, the suit's green
+  const int p = play::flash_palette(player().inv);  // red while hurt, gold, the suit's green
   return size_t(p) < palettes_.size() ? p : 0;
 }
 
@@ -183,24 +247,18 @@ void Session::draw_overlays(render::Frame& frame, const FrameTimes& times, doubl
   int y = margin;
   if (show_hud) {
     std::vector<std::string> lines;
-    const std::string progress = progress_line(player_.keys, world_->secrets_found(), world_->secrets_total(), player_.noclip);
+    const std::string progress = progress_line(player().cards, player().secret_count, world_->total_secrets(), player().cheats & play::kCheatNoclip);
     if (frame.width < kCompactWidth) {  // a low resolution: one short line
       char fps[32];
       std::snprintf(fps, sizeof fps, "%.0f fps  ", times.fps);
       lines = {fps + progress};
     } else {
-      lines = hud_lines(title(), renderer_name_, stats_, times, player_);
+      lines = hud_lines(title(), renderer_name_, stats_, times, pose_.pos, pose_.z, pose_.angle);
       lines.push_back(progress);
     }
     y += draw_panel(frame, margin, y, lines, scale) + margin;
   }
-  if (message_tics_ > 0) {  // Doom's messages, top left: in Doom's own font where the WADs have it
-    const int doom_scale = play::ScreenPlace::scale_for(frame.width, frame.height);
-    if (hud_font_ && frame.width >= 320 && !palettes_.empty())
-      hud_font_->draw(frame, message_, 0, 0, doom_scale, 0, y == margin ? 0 : y, palettes_[size_t(flash_palette())]);
-    else
-      draw_panel(frame, margin, y, {message_}, scale);
-  }
+  if (message_tics_ > 0 && !doom_messages(frame)) draw_panel(frame, margin, y, {message_}, scale);
   if (show_help) {
     const auto lines = help_lines();
     draw_panel(frame, margin, std::max(margin, frame.height / 2 - int(lines.size()) * 4 * scale), lines, scale);
@@ -212,12 +270,13 @@ void Session::draw_overlays(render::Frame& frame, const FrameTimes& times, doubl
 }
 
 void Session::keep_sounds() {
-  constexpr uint64_t kPlayerOrigin = uint64_t(1) << 40;  // beyond every sector's number
-  for (const sim::SoundEvent& e : world_->sounds()) {
-    if (e.sector == level::kNone)
-      sounds_.push_back({e.sound, kPlayerOrigin, std::nullopt});
+  const play::Mobj* own = player().mo;
+  for (const play::SoundEvent& e : world_->sounds()) {
+    // The player's own sounds and those from nowhere are heard at full volume.
+    if (e.origin == 0 || (own && e.origin == own->id))
+      sounds_.push_back({e.sound, e.origin, std::nullopt});
     else
-      sounds_.push_back({e.sound, uint64_t(e.sector) + 1, sound_origins_[size_t(e.sector)]});
+      sounds_.push_back({e.sound, e.origin, geom::Vec2(play::to_double(e.x), play::to_double(e.y))});
   }
 }
 
@@ -236,11 +295,11 @@ const play::SoundClip* Session::sound_clip(play::Sound sound) {
   return clip ? &*clip : nullptr;
 }
 
-play::Listener Session::listener() const { return listener_at(player_.pos, player_.angle); }
+play::Listener Session::listener() const { return listener_at(pose_.pos, pose_.angle); }
 
 void Session::say(const std::string& text) {
   message_ = text;
-  message_tics_ = 4 * sim::kTicRate;  // Doom's HU_MSGTIMEOUT
+  message_tics_ = 4 * kTicRate;  // Doom's HU_MSGTIMEOUT
 }
 
 void Session::advance_message() {
@@ -257,11 +316,11 @@ bool Session::doom_map_numbers(int& episode, int& number) const {
 }
 
 std::vector<uint8_t> Session::encode_recording(const std::filesystem::path& path) const {
-  if (path.extension() != ".lmp") return sim::encode_demo(recording_);
+  if (path.extension() != ".lmp") return play::encode_demo(recording_);
   int episode = 0, number = 0;
   if (!doom_map_numbers(episode, number))
     throw Error(path.string() + ": a Doom demo (.lmp) records a WAD's MAPxx or ExMy map, not " + name_);
-  return play::encode_doom_demo(sim::doom_from_demo(recording_, std::max(episode, 1), number));
+  return play::encode_doom_demo(play::doom_from_demo(recording_, std::max(episode, 1), number));
 }
 
 bool Session::start_intermission() {
@@ -273,34 +332,47 @@ bool Session::start_intermission() {
 
 play::Tally Session::tally() const {
   play::Tally t;
-  const level::State start = level::start_state(*level_, skill_);  // what the level held: the totals
-  for (const level::ShownThing& shown : start.things) {
-    if (shown.placed == level::kNone) continue;
-    const play::ThingType type = play::thing_type_for_editor_number(level_->things[size_t(shown.placed)].type);
-    if (type == play::ThingType::kCount) continue;
-    t.total_kills += (play::thing_info(type).flags & play::kCountkill) != 0;
-    t.total_items += (play::thing_info(type).flags & play::kCountitem) != 0;
-  }
-  t.items = player_.inventory.items;
-  t.secrets = world_->secrets_found();
-  t.total_secrets = world_->secrets_total();
-  t.seconds = int(tics_ / sim::kTicRate);
+  const play::Player& p = player();
+  t.kills = p.kill_count;
+  t.total_kills = world_->total_kills();
+  t.items = p.inv.items;
+  t.total_items = world_->total_items();
+  t.secrets = p.secret_count;
+  t.total_secrets = world_->total_secrets();
+  t.seconds = world_->level_time() / kTicRate;
   return t;
 }
 
 void Session::start_recording(bool doom_turns) {
   recording_on_ = true;
   doom_turns_ = doom_turns;
-  recording_ = {sim::fingerprint(*level_), player_.pos, player_.angle, skill_, player_.keys, {}};
+  recording_ = {};
+  recording_.level_fingerprint = play::fingerprint(*level_);
+  recording_.skill = skill_;
+  recording_.fast = flags_.fast;
+  recording_.respawn = flags_.respawn;
+  recording_.no_monsters = flags_.no_monsters;
+  recording_.keys = player().cards;
+  // A start other than the map's own is kept (a route's first point).
+  const geom::Vec2 map_start = level_->player_start;
+  if (std::fabs(pose_.pos.x - map_start.x) > 1.0 / 65536 || std::fabs(pose_.pos.y - map_start.y) > 1.0 / 65536 ||
+      std::fabs(pose_.angle - std::fmod(level_->player_angle + 360.0, 360.0)) > 1e-6) {
+    recording_.custom_start = true;
+    recording_.start = pose_.pos;
+    recording_.angle = pose_.angle;
+  }
 }
 
 bool Session::reload() {
-  const sim::Player keep = player_;
+  const Pose keep = pose_;
+  const uint8_t cards = player().cards;
+  const play::Inventory carried = player().inv;
   const std::string file_name = std::filesystem::path(name_).filename().string();
   std::unique_ptr<level::Level> old_level = std::move(level_);
-  std::unique_ptr<sim::World> old_world = std::move(world_);
+  std::unique_ptr<play::World> old_world = std::move(world_);
+  random_ = old_world->random();
   try {
-    load();
+    load(&carried);
   } catch (const std::exception& e) {
     level_ = std::move(old_level);
     world_ = std::move(old_world);
@@ -309,14 +381,8 @@ bool Session::reload() {
     std::fprintf(stderr, "game: %s not reloaded, the old level kept: %s\n", file_name.c_str(), e.what());
     return false;
   }
-  if (level_->sector_at(keep.pos) != level::kNone) {
-    player_ = previous_ = keep;
-    player_.z = previous_.z = std::max(keep.z, world_->heights_at(keep.pos).floor);
-  } else {  // the ground under the player is gone
-    const uint8_t keys = keep.keys;
-    player_ = previous_ = world_->spawn();
-    set_keys(keys);
-  }
+  set_keys(cards);
+  if (level_->sector_at(keep.pos) != level::kNone) spawn(keep.pos, keep.angle);  // else the ground is gone: the start
   if (watch_) watch_->rebase();
   if (!select_renderer(renderer_name_)) select_renderer("bsp");
   say("reloaded " + file_name);

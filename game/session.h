@@ -1,27 +1,30 @@
-// One game: the level (compiled on the fly from a source if need be), the
-// simulation, the player at this tic and the previous one (for interpolation), the
-// renderers, the overlays' state, and demo recording. Shared by the window and the
+// One game: the level (compiled on the fly from a source if need be), Doom's play
+// simulation on it, the player's view at this tic and the previous one (for
+// interpolation), the renderers, what Doom draws around the view (status bar,
+// weapon, messages, tally), sounds, and demo recording. Shared by the window and the
 // headless replay; no SDL here.
 #pragma once
 
 #include <filesystem>
-#include <memory>
 #include <map>
+#include <memory>
 #include <optional>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/bsp/load.h"
 #include "engine/level/level.h"
+#include "engine/play/demo.h"
 #include "engine/play/hud_font.h"
 #include "engine/play/intermission.h"
 #include "engine/play/sound.h"
 #include "engine/play/status_bar.h"
+#include "engine/play/weapon_view.h"
+#include "engine/play/world.h"
+#include "engine/render/renderer.h"
 #include "engine/wad/art.h"
 #include "engine/wad/wad.h"
-#include "engine/render/renderer.h"
-#include "engine/sim/demo.h"
 #include "game/automap.h"
 #include "game/file_watch.h"
 #include "game/hud.h"
@@ -29,33 +32,45 @@
 
 namespace p3d::game {
 
-// The renderers on keys 1 to 5.
+constexpr int kTicRate = 35;
+
+// The renderers on keys F5 to F9.
 const std::vector<std::string>& key_renderers();
+
+// Doom's -fast, -respawn and -nomonsters.
+struct GameFlags {
+  bool fast = false, respawn = false, no_monsters = false;
+};
 
 class Session {
  public:
   static constexpr int kCompactWidth = 480;  // narrower frames get a one-line heads-up text
 
-  explicit Session(const bsp::LevelSource& source, int skill = level::kDefaultSkill);
+  explicit Session(const bsp::LevelSource& source, int skill = level::kDefaultSkill, GameFlags flags = {});
   explicit Session(const std::filesystem::path& map_path) : Session(bsp::LevelSource{map_path, {}, {}}) {}
 
   const level::Level& level() const { return *level_; }
   const level::State& state() const { return world_->state(); }
-  const sim::World& world() const { return *world_; }
+  const play::World& world() const { return *world_; }
   // The level's name for messages: its file, or "<wad>:<map>".
   const std::string& name() const { return name_; }
   std::string title() const;
   // The files a reload reads: the source, or the WADs.
   std::vector<std::filesystem::path> files() const;
+  int skill() const { return skill_; }
+  const GameFlags& flags() const { return flags_; }
 
   // ---- simulation
+  // The player moved to another start than the map's (a demo's or a route's).
   void spawn(geom::Vec2 pos, double angle);
   // One tic; what happened shows as messages. After an exit, exited() tells which.
-  void tic(const sim::TicCommand& cmd);
-  sim::Exit exited() const { return world_->exit(); }
-  // Loads the map the exit leads to in Doom's order, the player at its start with no
-  // keys. When there is none (a hand-made level, the end of an episode or game, a map
-  // missing from the WADs), starts this level again and returns false.
+  void tic(const play::DemoTic& tic);
+  void tic(const play::TicCmd& cmd) { tic(play::DemoTic{cmd, 0}); }
+  play::ExitKind exited() const { return world_->exit(); }
+  // Loads the map the exit leads to in Doom's order, the player at its start with what
+  // it carried (Doom's G_PlayerFinishLevel). When there is none (a hand-made level, the
+  // end of an episode or game, a map missing from the WADs), starts this level again
+  // and returns false.
   bool enter_next_map();
   // Doom's intermission after an exit: the tally of the level just finished, drawn by
   // render() in place of the view until enter_next_map. False (nothing shown) where
@@ -67,10 +82,16 @@ class Session {
   // Every key at every start (--all-keys).
   void give_all_keys(bool all) {
     all_keys_ = all;
-    set_keys(all ? sim::kAllKeys : 0);
+    set_keys(all ? 63 : 0);
   }
-  void set_keys(uint8_t keys) { player_.keys = previous_.keys = keys; }
-  const sim::Player& player() const { return player_; }
+  void set_keys(uint8_t keys) { world_->player().cards = keys; }
+  const play::Player& player() const { return world_->player(); }
+  // The player's eye and feet as the shells see them: map units, degrees.
+  struct Pose {
+    geom::Vec2 pos;
+    double z = 0, view_z = 0, angle = 0;
+  };
+  Pose pose() const { return pose_; }
   uint64_t tics() const { return tics_; }
   // The camera between the previous tic (alpha 0) and this one (alpha 1).
   render::Camera camera(double alpha) const;
@@ -102,8 +123,8 @@ class Session {
   const render::RenderStats& render(render::Frame& frame, double alpha);
   // The rows Doom's status bar takes at the bottom of such a frame (0: none shown).
   int status_bar_rows(const render::Frame& frame) const;
-  // Which of the WAD's palettes the screen shows now: 0, or Doom's flash (gold after a
-  // pickup, green in the radiation suit; red when hurt, once damage comes).
+  // Which of the WAD's palettes the screen shows now: 0, or Doom's flash (red when
+  // hurt or berserk, gold after a pickup, green in the radiation suit).
   int flash_palette() const;
   void draw_overlays(render::Frame& frame, const FrameTimes& times, double alpha) const;
 
@@ -120,14 +141,14 @@ class Session {
   // Records every tic from now. With doom_turns, turns are rounded as a Doom demo
   // keeps them, before they are played, so a Doom demo of the recording replays it.
   void start_recording(bool doom_turns = false);
-  const sim::Demo& recording() const { return recording_; }
+  const play::Demo& recording() const { return recording_; }
   // The recording in the format the file's name asks for: Doom v1.9 for .lmp (of a
   // WAD map), ours otherwise. Throws Error for a .lmp of a level that is no Doom map.
   std::vector<uint8_t> encode_recording(const std::filesystem::path& path) const;
-  // Recompiles the map from disk, keeping the player where it stands if that point
-  // is still inside the level (else at the new start). False (and a message, the
-  // old level kept) if the new map does not compile. Both outcomes are also said on
-  // stderr.
+  // Recompiles the map from disk and starts it again, keeping the player where it
+  // stands if that point is still inside the level (else at the new start). False
+  // (and a message, the old level kept) if the new map does not compile. Both
+  // outcomes are also said on stderr.
   bool reload();
   // --map-reload: watch the level's files; reload_if_saved, called every frame with a
   // monotonic clock, reloads once an editor has finished saving them.
@@ -135,17 +156,25 @@ class Session {
   bool reload_if_saved(double now_seconds) { return watch_ && watch_->changed(now_seconds) && reload(); }
 
  private:
-  void load();
+  // Opens the level and starts a World on it: `carried` is what the player brings from
+  // the last map (nullptr: a new player).
+  void load(const play::Inventory* carried = nullptr);
+  void start_world(const play::Inventory* carried);
+  void after_tic();
   void keep_sounds();  // the tic's, placed
   bool doom_map_numbers(int& episode, int& number) const;
+  bool doom_messages(const render::Frame& frame) const;  // drawn in Doom's font as part of its screen
+  Pose pose_now() const;
 
   bsp::LevelSource source_;
   std::string name_;
   int skill_;
+  GameFlags flags_;
   bool all_keys_ = false;
   std::unique_ptr<level::Level> level_;
-  std::unique_ptr<sim::World> world_;
-  sim::Player player_, previous_;
+  std::unique_ptr<play::World> world_;
+  play::Random random_;  // Doom's play stream, carried from level to level
+  Pose pose_, previous_;
   uint64_t tics_ = 0;
   std::string renderer_name_;
   std::unique_ptr<render::Renderer> renderer_;
@@ -157,17 +186,17 @@ class Session {
   std::optional<play::StatusBarArt> status_art_;
   std::optional<play::HudFont> hud_font_;
   std::optional<play::IntermissionArt> intermission_;
+  std::unique_ptr<play::WeaponArt> weapon_art_;
   std::vector<std::vector<uint32_t>> palettes_;  // PLAYPAL's, for the flashes
   play::Face face_;
   play::Random other_random_;  // Doom's M_Random: the face's glances, never the play
   render::Frame view_frame_;   // the 3D view above the status bar
   std::vector<PlacedSound> sounds_;
   bool listening_ = false;
-  std::vector<geom::Vec2> sound_origins_;  // per sector
   std::unique_ptr<wad::Stack> sound_wads_;
   std::map<play::Sound, std::optional<play::SoundClip>> clips_;
   bool recording_on_ = false, doom_turns_ = false;
-  sim::Demo recording_;
+  play::Demo recording_;
   std::optional<FileWatch> watch_;
 };
 

@@ -18,8 +18,10 @@ namespace p3d::play {
 // What a tic may do beside Doom's command: our cheats, which Doom's demos cannot hold.
 enum DemoCheat : uint8_t {
   kToggleNoclip = 1,  // idclip typed
+  kToggleGod = 2,     // iddqd
+  kGiveAll = 4,       // idkfa: every weapon, full ammo, armor and keys
 };
-constexpr uint8_t kDemoCheats = kToggleNoclip;
+constexpr uint8_t kDemoCheats = kToggleNoclip | kToggleGod | kGiveAll;
 
 struct DemoTic {
   TicCmd cmd;

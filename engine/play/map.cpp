@@ -308,8 +308,12 @@ Map map_from_wad(const wad::MapData& data, const wad::MapLumps* lumps, const lev
     }
   }
 
+  size_t next_placed = 0;  // the importer keeps the THINGS it can place, in order
   for (const wad::MapThing& t : data.things) {
     MapThing mt;
+    if (next_placed < level.things.size() && level.things[next_placed].type == t.type &&
+        level.things[next_placed].pos == geom::Vec2(t.x, t.y))
+      mt.placed = int32_t(next_placed++);
     mt.x = int16_t(std::lround(t.x));
     mt.y = int16_t(std::lround(t.y));
     mt.angle = int16_t(std::lround(t.angle));
@@ -394,12 +398,21 @@ Map map_from_level(const level::Level& level) {
   }
   for (const level::Thing& t : level.things) {
     MapThing mt;
+    mt.placed = int32_t(m.things.size());
     mt.x = int16_t(std::clamp<long>(std::lround(t.pos.x), -32768, 32767));
     mt.y = int16_t(std::clamp<long>(std::lround(t.pos.y), -32768, 32767));
     mt.angle = int16_t(std::lround(t.angle));
     mt.type = int16_t(t.type);
     mt.options = int16_t(t.flags);
     m.things.push_back(mt);
+  }
+  if (std::none_of(m.things.begin(), m.things.end(), [](const MapThing& t) { return t.type == 1; })) {
+    MapThing start;  // the level's player start as Doom's player 1 start
+    start.x = int16_t(std::clamp<long>(std::lround(level.player_start.x), -32768, 32767));
+    start.y = int16_t(std::clamp<long>(std::lround(level.player_start.y), -32768, 32767));
+    start.angle = int16_t(std::lround(level.player_angle));
+    start.type = 1;
+    m.things.push_back(start);
   }
   m.blockmap = build_blockmap(m.lines, m.vertices);
   m.reject = reject_table(nullptr, m.sectors.size());

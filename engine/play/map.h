@@ -116,6 +116,7 @@ struct Node {
 // A placed thing as the map states it (Doom's mapthing_t).
 struct MapThing {
   int16_t x = 0, y = 0, angle = 0, type = 0, options = 0;
+  int32_t placed = -1;  // the level's thing it is (Level::things), or -1
 };
 
 constexpr int kMapBlockShift = kFracBits + 7;  // 128-unit cells

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 
+#include "engine/util/doom.h"
+
 namespace p3d::play {
 
 namespace {
@@ -37,6 +39,7 @@ World::World(Map map, const level::Level& level, const GameOptions& options, Ran
   block_links_.assign(size_t(map_.blockmap.width) * size_t(map_.blockmap.height), nullptr);
   index_walls();
   index_sprite_frames();
+  index_static_things();
   if (carried) {
     player_.inv = *carried;
     player_.state = PlayerState::kLive;
@@ -161,6 +164,55 @@ int32_t World::level_frame(const Mobj& mo) const {
   return exact != level::kNone ? exact : frames[size_t(letter + (bright ? 0 : 32))];
 }
 
+void World::index_static_things() {
+  for (size_t i = 0; i < level_.things.size(); ++i) {
+    const level::Thing& t = level_.things[i];
+    if (t.sprite == level::kNone || thing_type_for_editor_number(t.type) != ThingType::kCount) continue;
+    if (!(t.flags & doom::skill_bit(options_.skill)) || (t.flags & doom::kThingNotSingle)) continue;
+    static_things_.push_back(int32_t(i));
+  }
+}
+
+void World::place_player(Fixed x, Fixed y, Angle angle) {
+  Mobj* mo = player_.mo;
+  if (!mo) return;
+  unset_thing_position(mo);
+  mo->x = x;
+  mo->y = y;
+  set_thing_position(mo);
+  mo->floor_z = mo->subsector->sector->floor_height;
+  mo->ceiling_z = mo->subsector->sector->ceiling_height;
+  mo->z = mo->floor_z;
+  mo->angle = angle;
+  player_.view_z = wrap_add(mo->z, player_.view_height);
+  show();
+}
+
+void World::apply_cheats(uint8_t cheats) {
+  Player& p = player_;
+  if (cheats & 1) {  // idclip
+    p.cheats ^= kCheatNoclip;
+    say(p.cheats & kCheatNoclip ? "No Clipping Mode ON" : "No Clipping Mode OFF");
+  }
+  if (cheats & 2) {  // iddqd
+    p.cheats ^= kCheatGodMode;
+    if (p.cheats & kCheatGodMode) {
+      p.inv.health = 100;
+      if (p.mo) p.mo->health = 100;
+    }
+    say(p.cheats & kCheatGodMode ? "Degreelessness Mode On" : "Degreelessness Mode Off");
+  }
+  if (cheats & 4) {  // idkfa
+    p.inv.armor = 200;
+    p.inv.armor_type = 2;
+    for (size_t w = 0; w < p.inv.weapons.size(); ++w)
+      p.inv.weapons[w] = options_.commercial || Weapon(w) != Weapon::kSuperShotgun;
+    p.inv.ammo = p.inv.max_ammo;
+    p.cards = 63;
+    say("Very Happy Ammo Added");
+  }
+}
+
 void World::show() {
   for (size_t i = 0; i < map_.sectors.size() && i < state_.sectors.size(); ++i) {
     const Sector& s = map_.sectors[i];
@@ -202,12 +254,29 @@ void World::show() {
     if (&mo == player_.mo) continue;  // the view's own body
     level::ShownThing shown;
     shown.pos = {to_double(mo.x), to_double(mo.y)};
-    shown.z = to_double(mo.z);
     shown.angle = double(mo.angle) * kDegreesPerAngle;
     shown.frame = level_frame(mo);
+    shown.placed = mo.spawn_point.placed;
+    if (shown.frame == level::kNone && shown.placed != level::kNone)  // a picture of the level's own
+      shown.frame = level_.things[size_t(shown.placed)].sprite;
+    if (shown.frame == level::kNone) continue;
     shown.sector = mo.subsector->sector->index;
+    // A hanging picture hangs from the ceiling as it stands now; anything else stands at its z.
+    shown.z = level_.sprite_frames[size_t(shown.frame)].hanging ? level::resting_z(level_, state_, shown.frame, shown.sector)
+                                                               : to_double(mo.z);
     shown.flags = (mo.flags & kShadow) ? level::kShownShadow : 0;
-    if (shown.frame != level::kNone) state_.things.push_back(shown);
+    state_.things.push_back(shown);
+  }
+  for (int32_t i : static_things_) {
+    const level::Thing& t = level_.things[size_t(i)];
+    level::ShownThing shown;
+    shown.pos = t.pos;
+    shown.angle = t.angle;
+    shown.frame = t.sprite;
+    shown.sector = t.sector;
+    shown.z = level::resting_z(level_, state_, shown.frame, shown.sector);
+    shown.placed = i;
+    state_.things.push_back(shown);
   }
 }
 

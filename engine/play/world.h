@@ -116,7 +116,7 @@ struct Mobj : Thinker {
   int threshold = 0;       // tics it keeps chasing its attacker before looking for the player again
   Player* player = nullptr;
   int last_look = 0;       // the player it looked at last
-  MapThing spawn_point;
+  MapThing spawn_point;   // where the map placed it (spawn_point.placed: its level thing), for respawning
   Mobj* tracer = nullptr;  // what a homing missile homes on
   uint32_t id = 0;         // 1, 2, 3... in spawn order: names it as a sound's origin
 };
@@ -263,6 +263,10 @@ class World {
   // The sounds started and the messages given during the last tic, in order.
   const std::vector<SoundEvent>& sounds() const { return sounds_; }
   const std::vector<std::string>& messages() const { return messages_; }
+  // Puts the player at (x, y) facing `angle` (a start other than the map's), on the floor there.
+  void place_player(Fixed x, Fixed y, Angle angle);
+  // Our cheats (play/demo.h's DemoCheat bits): noclip, god mode, every weapon, ammo and key.
+  void apply_cheats(uint8_t cheats);
   // Every thing, in thinker order (removed ones left out).
   std::vector<const Mobj*> things() const;
   size_t thinker_count() const;
@@ -287,6 +291,7 @@ class World {
   void index_walls();          // line_walls_ and the sides' starting offsets
   void index_sprite_frames();  // sprite_frames_
   int32_t level_frame(const Mobj& mo) const;  // the level's sprite frame a thing shows, or kNone
+  void index_static_things();  // static_things_
 
   // ---- maputl.cpp
   struct DivLine {
@@ -524,6 +529,9 @@ class World {
   std::vector<SoundEvent> sounds_;
   std::vector<std::string> messages_;
   level::State state_;
+  // Placed things Doom does not know (a .map level's own types) that have a picture:
+  // shown where they stand, never acting.
+  std::vector<int32_t> static_things_;
   std::vector<std::vector<int32_t>> sprite_frames_;  // per Sprite: per frame (bright in the top half) the level's frame, or kNone
 };
 

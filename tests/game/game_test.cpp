@@ -22,32 +22,32 @@ namespace {
 
 TEST(Input, DoomKeysMakeDoomCommands) {
   Controls c;
-  EXPECT_EQ(make_command(c, 0), sim::TicCommand{});
+  EXPECT_EQ(make_command(c, 0), play::DemoTic{});
   c.forward = true;
-  EXPECT_EQ(make_command(c, 0).forward, 25);
+  EXPECT_EQ(make_command(c, 0).cmd.forward, 25);
   c.run = true;
-  EXPECT_EQ(make_command(c, 0).forward, 50);
+  EXPECT_EQ(make_command(c, 0).cmd.forward, 50);
   c.back = true;  // both cancel
-  EXPECT_EQ(make_command(c, 0).forward, 0);
+  EXPECT_EQ(make_command(c, 0).cmd.forward, 0);
   c = {};
   c.strafe_right = true;
-  EXPECT_EQ(make_command(c, 0).side, 24);
+  EXPECT_EQ(make_command(c, 0).cmd.side, 24);
   c.strafe_left = true;
-  EXPECT_EQ(make_command(c, 0).side, 0);
+  EXPECT_EQ(make_command(c, 0).cmd.side, 0);
   c = {};
   c.turn_left = true;
-  EXPECT_EQ(make_command(c, 0).turn, 320) << "slow for the first tics";
-  EXPECT_EQ(make_command(c, 6).turn, 640);
+  EXPECT_EQ(make_command(c, 0).cmd.turn, 320) << "slow for the first tics";
+  EXPECT_EQ(make_command(c, 6).cmd.turn, 640);
   c.run = true;
-  EXPECT_EQ(make_command(c, 6).turn, 1280);
+  EXPECT_EQ(make_command(c, 6).cmd.turn, 1280);
   c.strafe_modifier = true;  // Alt+Left strafes left instead
-  EXPECT_EQ(make_command(c, 6).turn, 0);
-  EXPECT_EQ(make_command(c, 6).side, -40);
+  EXPECT_EQ(make_command(c, 6).cmd.turn, 0);
+  EXPECT_EQ(make_command(c, 6).cmd.side, -40);
   c = {};
   c.mouse_dx = 10;  // right turns clockwise
-  EXPECT_EQ(make_command(c, 0, {24}).turn, -240);
+  EXPECT_EQ(make_command(c, 0, {24}).cmd.turn, -240);
   c.mouse_dx = 100000;
-  EXPECT_EQ(make_command(c, 0, {24}).turn, -32767) << "clamped, not wrapped";
+  EXPECT_EQ(make_command(c, 0, {24}).cmd.turn, -32767) << "clamped, not wrapped";
 }
 
 TEST(Hud, LinesNameTheRendererTheWorkAndThePlace) {
@@ -59,10 +59,7 @@ TEST(Hud, LinesNameTheRendererTheWorkAndThePlace) {
   s.pixels_written = 256000;
   s.early_exit = true;
   FrameTimes t{512, 1.95, 0.01, 0.52, 1.42};
-  sim::Player p;
-  p.pos = {64, 96};
-  p.angle = 30;
-  const auto lines = hud_lines("Outpost", "bsp", s, t, p);
+  const auto lines = hud_lines("Outpost", "bsp", s, t, {64, 96}, 0, 30);
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_EQ(lines[0], "Outpost  512 fps  1.95 ms (sim 0.01, render 0.52, present 1.42)");
   EXPECT_EQ(lines[1], "bsp: nodes 31  culled 8  fragments 26  columns closed 640  pixels 256000  early exit");
@@ -71,13 +68,13 @@ TEST(Hud, LinesNameTheRendererTheWorkAndThePlace) {
   rays.rays = 640;
   rays.steps = 6400;
   rays.columns_closed = 640;
-  EXPECT_EQ(hud_lines("m", "sphere", rays, t, p)[1], "sphere: rays 640  steps/ray 10.0  columns closed 640  pixels 0");
+  EXPECT_EQ(hud_lines("m", "sphere", rays, t, {64, 96}, 0, 30)[1], "sphere: rays 640  steps/ray 10.0  columns closed 640  pixels 0");
   EXPECT_GE(help_lines().size(), 6u);
 }
 
 TEST(Hud, ProgressNamesKeysAndSecrets) {
   EXPECT_EQ(progress_line(0, 0, 0, false), "keys: none");
-  EXPECT_EQ(progress_line(sim::kBlueCard | sim::kRedSkull, 1, 3, true), "keys: blue card, red skull  secrets 1/3  noclip");
+  EXPECT_EQ(progress_line(1 | 32, 1, 3, true), "keys: blue card, red skull  secrets 1/3  noclip");
 }
 
 TEST(Menu, ChoosesWithUpAndDown) {
@@ -100,7 +97,7 @@ TEST(Menu, ChoosesWithUpAndDown) {
 TEST(Hud, OffByDefaultAndOneLineAtLowResolutions) {
   Session s(test::source_dir() / "maps/outpost.map");
   EXPECT_FALSE(s.show_hud);
-  for (int t = 0; t < 4 * sim::kTicRate; ++t) s.tic({});  // the start's message fades
+  for (int t = 0; t < 4 * kTicRate; ++t) s.tic(play::TicCmd{});  // the start's message fades
   render::Frame small(320, 200);
   s.render(small, 1);
   const render::Frame bare = small;
@@ -125,10 +122,10 @@ TEST(Hud, LongLinesWrapAtSpaces) {
 TEST(Session, InterpolatesBetweenTicsAndSwitchesRenderers) {
   Session s(test::source_dir() / "maps/outpost.map");
   EXPECT_EQ(s.title(), "Outpost");
-  s.tic({50, 0, 0});
-  s.tic({50, 0, 0});
+  s.tic(play::TicCmd{50, 0, 0});
+  s.tic(play::TicCmd{50, 0, 0});
   const render::Camera before = s.camera(0), after = s.camera(1), half = s.camera(0.5);
-  EXPECT_EQ(after.pos, s.player().pos);
+  EXPECT_EQ(after.pos, s.pose().pos);
   EXPECT_NEAR(half.pos.x, (before.pos.x + after.pos.x) / 2, 1e-9);
   EXPECT_LT(before.pos.x, after.pos.x);
   EXPECT_FALSE(s.select_renderer("dda")) << "outpost is not a grid map";
@@ -149,17 +146,17 @@ TEST(Session, ReloadKeepsThePlayerAndSurvivesABrokenMap) {
   std::string text = read_file_text(test::source_dir() / "maps/outpost.map");
   write_file_atomically(dir / "m.map", text);
   Session s(dir / "m.map");
-  for (int i = 0; i < 10; ++i) s.tic({50, 0, 0});
-  const geom::Vec2 where = s.player().pos;
+  for (int i = 0; i < 10; ++i) s.tic(play::TicCmd{50, 0, 0});
+  const geom::Vec2 where = s.pose().pos;
   const size_t walls = s.level().walls.size();
   write_file_atomically(dir / "m.map", text + "vertex extra1 100 20\nvertex extra2 120 40\nsegment extra1 extra2 texture=metal\n");
   EXPECT_TRUE(s.reload());
   EXPECT_EQ(s.level().walls.size(), walls + 1);
-  EXPECT_EQ(s.player().pos, where);
+  EXPECT_EQ(s.pose().pos, where);
   write_file_atomically(dir / "m.map", text + "nonsense\n");
   EXPECT_FALSE(s.reload());
   EXPECT_EQ(s.level().walls.size(), walls + 1) << "the old level stays";
-  s.tic({});
+  s.tic(play::TicCmd{});
   std::filesystem::remove_all(dir);
 }
 
@@ -214,15 +211,15 @@ TEST(Session, MapReloadShowsAnEditorsSaveInTheNextFrames) {
 
   Session s(map);
   s.watch_files();
-  s.tic({0, 0, 0});
-  const geom::Vec2 stand = s.player().pos;
+  s.tic(play::TicCmd{0, 0, 0});
+  const geom::Vec2 stand = s.pose().pos;
   render::Frame frame(160, 100);
   double now = 0;
   int reloads = 0;
   auto run = [&](double seconds) {  // the loop: one tic, the reload check and a frame, 35 times a second
-    for (int i = 0; i < int(seconds * sim::kTicRate); ++i) {
-      s.tic({});
-      now += 1.0 / sim::kTicRate;
+    for (int i = 0; i < int(seconds * kTicRate); ++i) {
+      s.tic(play::TicCmd{});
+      now += 1.0 / kTicRate;
       reloads += s.reload_if_saved(now);
       s.render(frame, 1);
     }
@@ -239,7 +236,7 @@ TEST(Session, MapReloadShowsAnEditorsSaveInTheNextFrames) {
   const uint64_t darker = run(1.5);
   EXPECT_EQ(reloads, 1);
   EXPECT_LT(darker, before * 0.9) << "the hall's new light shows in the frames";
-  EXPECT_EQ(s.player().pos, stand) << "the player stays where they stood";
+  EXPECT_EQ(s.pose().pos, stand) << "the player stays where they stood";
 
   // Renamed over, after being briefly missing: one reload, back to the bright hall.
   std::filesystem::rename(map, dir / "m.map~");
@@ -288,11 +285,11 @@ TEST(Session, MapReloadFollowsAPwadRenamedOver) {
   save(1024, 200);
   EXPECT_TRUE(settle());
   EXPECT_EQ(s.level().sectors[0].light, 200);
-  EXPECT_EQ(s.player().pos, geom::Vec2(900, 900));
+  EXPECT_EQ(s.pose().pos, geom::Vec2(900, 900));
   save(256, 50);  // the room shrank under the player
   EXPECT_TRUE(settle());
   EXPECT_EQ(s.level().sectors[0].light, 50);
-  EXPECT_EQ(s.player().pos, geom::Vec2(32, 32)) << "moved to the start";
+  EXPECT_EQ(s.pose().pos, geom::Vec2(32, 32)) << "moved to the start";
   std::filesystem::remove_all(dir);
 }
 
@@ -342,12 +339,14 @@ TEST(Session, SoundsComeFromTheirSectorsAndTheWadsLumps) {
   write_file_atomically(dir / "doom.wad", wad.bytes());
   const bsp::LevelSource source{{}, {dir / "doom.wad"}, "MAP01"};
   Session deaf(source);
-  deaf.tic({0, 0, 0, sim::kUse});
+  deaf.tic(play::TicCmd{});  // a new player's use starts held (Doom's G_PlayerReborn): let go first
+  deaf.tic(play::TicCmd{0, 0, 0, play::kBtUse});
   EXPECT_EQ(deaf.state().sectors[1].ceiling, 2) << "the door opens";
   EXPECT_TRUE(deaf.take_sounds().empty()) << "but nobody listens";
   Session s(source);
   s.listen();
-  s.tic({0, 0, 0, sim::kUse});
+  s.tic(play::TicCmd{});
+  s.tic(play::TicCmd{0, 0, 0, play::kBtUse});
   const std::vector<Session::PlacedSound> sounds = s.take_sounds();
   ASSERT_EQ(sounds.size(), 1u);
   EXPECT_EQ(sounds[0].sound, play::Sound::kDoropn);
@@ -375,17 +374,17 @@ TEST(Session, ADoomDemoRecordingReplaysTheSameWalk) {
   const bsp::LevelSource source{{}, {dir / "doom.wad"}, "MAP07"};
   Session recorder(source);
   recorder.start_recording(true);
-  for (int t = 0; t < 120; ++t) recorder.tic({50, int8_t(t % 7 - 3), int16_t(300 + 37 * (t % 5)), 0});
+  for (int t = 0; t < 120; ++t) recorder.tic(play::TicCmd{50, int8_t(t % 7 - 3), int16_t(300 + 37 * (t % 5)), 0});
   const std::vector<uint8_t> bytes = recorder.encode_recording(dir / "walk.lmp");
   const play::DoomDemo doom = play::decode_doom_demo(bytes, "walk.lmp");
   EXPECT_EQ(doom.map_name(true), "MAP07");
   EXPECT_EQ(doom.tic_count(), 120u);
   Session player(source);
-  const sim::Demo demo = sim::demo_from_doom(doom, player.level());
-  for (const sim::TicCommand& t : demo.tics) player.tic(t);
-  EXPECT_EQ(player.player().pos, recorder.player().pos);
-  EXPECT_EQ(player.player().angle, recorder.player().angle);
-  EXPECT_NE(recorder.player().pos, geom::Vec2(100, 100));
+  const play::Demo demo = play::demo_from_doom(doom, player.level());
+  for (const play::DemoTic& t : demo.tics) player.tic(t);
+  EXPECT_EQ(player.pose().pos, recorder.pose().pos);
+  EXPECT_EQ(player.pose().angle, recorder.pose().angle);
+  EXPECT_NE(recorder.pose().pos, geom::Vec2(100, 100));
   EXPECT_THROW(Session(test::source_dir() / "maps/outpost.map").encode_recording(dir / "x.lmp"), Error)
       << "a hand-made level is no Doom map";
   std::filesystem::remove_all(dir);
@@ -395,7 +394,7 @@ TEST(Session, ADoomDemoRecordingReplaysTheSameWalk) {
 // exactly as a 320x168 frame shows it, and the status bar in the 32 below.
 TEST(Session, WadLevelsShowDoomsStatusBarBelowAShorterView) {
   Session s(bsp::LevelSource{{}, {test::freedoom_path("freedoom2.wad")}, "MAP01"});
-  for (int t = 0; t < 5; ++t) s.tic({});
+  for (int t = 0; t < 5; ++t) s.tic(play::TicCmd{});
   render::Frame doom(320, 200), view(320, 168);
   EXPECT_EQ(s.status_bar_rows(doom), 32);
   s.render(doom, 1);
@@ -421,9 +420,9 @@ TEST(Session, APickupFlashesTheScreenGold) {
         at = s.level().things[i].pos;
   ASSERT_TRUE(at);
   EXPECT_EQ(s.flash_palette(), 0);
-  s.spawn(*at, 90);
-  s.tic({});
-  EXPECT_EQ(s.player().inventory.bonus_count, play::kBonusAdd) << "it was picked up";
+  s.spawn(*at - geom::Vec2(0, 8), 90);
+  s.tic(play::TicCmd{25, 0, 0, 0});  // Doom takes what a move touches
+  EXPECT_EQ(s.player().inv.bonus_count, play::kBonusAdd) << "it was picked up";
   ASSERT_EQ(s.flash_palette(), 10) << "Doom's second gold palette";
   render::Frame frame(320, 200);
   s.render(frame, 1);
@@ -438,7 +437,7 @@ TEST(Session, APickupFlashesTheScreenGold) {
   EXPECT_EQ(off_view, 0u) << "every pixel of the view through the gold palette";
   EXPECT_EQ(off_bar, 0u) << "and of the bar";
   EXPECT_GT(not_normal, frame.pixels.size() / 2) << "most of them unlike any normal colour";
-  for (int t = 0; t < 12; ++t) s.tic({});
+  for (int t = 0; t < 12; ++t) s.tic(play::TicCmd{});
   EXPECT_EQ(s.flash_palette(), 0) << "gone after 6 tics";
 }
 
@@ -447,10 +446,10 @@ TEST(Session, APickupFlashesTheScreenGold) {
 TEST(Session, TheIntermissionTalliesTheLevel) {
   const auto wad = test::freedoom_path("freedoom2.wad");
   Session s(bsp::LevelSource{{}, {wad}, "MAP01"});
-  for (int t = 0; t < 70; ++t) s.tic({});
+  for (int t = 0; t < 70; ++t) s.tic(play::TicCmd{});
   const play::Tally t = s.tally();
   EXPECT_EQ(t.seconds, 2);
-  EXPECT_EQ(t.total_secrets, s.world().secrets_total());
+  EXPECT_EQ(t.total_secrets, s.world().total_secrets());
   EXPECT_GT(t.total_items, 0);
   EXPECT_GT(t.total_kills, 0);
   EXPECT_EQ(t.kills, 0) << "no monster dies yet";
@@ -482,15 +481,17 @@ TEST(Session, UseAfterDeathStartsTheLevelAgain) {
   m.add_to(wad, "MAP01");
   write_file_atomically(dir / "doom.wad", wad.bytes());
   Session s(bsp::LevelSource{{}, {dir / "doom.wad"}, "MAP01"});
-  for (int t = 0; t < 32 * 10 + 5; ++t) s.tic({25, 0, 0, 0});
-  ASSERT_TRUE(s.player().dead);
-  const geom::Vec2 fell = s.player().pos;
-  s.tic({25, 0, 0, 0});
-  EXPECT_EQ(s.player().pos, fell) << "the dead do not walk";
-  s.tic({0, 0, 0, sim::kUse});
-  EXPECT_FALSE(s.player().dead);
-  EXPECT_EQ(s.player().inventory.health, 100);
-  EXPECT_EQ(s.player().pos, geom::Vec2(64, 64)) << "back at the start";
+  for (int t = 0; t < 32 * 10 + 5; ++t) s.tic(play::TicCmd{25, 0, 0, 0});
+  ASSERT_EQ(s.player().state, play::PlayerState::kDead);
+  const geom::Vec2 fell = s.pose().pos;
+  s.tic(play::TicCmd{25, 0, 0, 0});
+  EXPECT_EQ(s.pose().pos, fell) << "the dead do not walk";
+  s.tic(play::TicCmd{0, 0, 0, play::kBtUse});
+  EXPECT_EQ(s.player().state, play::PlayerState::kReborn);
+  s.tic(play::TicCmd{});  // Doom's next G_Ticker starts the level again
+  EXPECT_EQ(s.player().state, play::PlayerState::kLive);
+  EXPECT_EQ(s.player().inv.health, 90) << "a fresh player, hurt at once: the slime bites at level time 0";
+  EXPECT_EQ(s.pose().pos, geom::Vec2(64, 64)) << "back at the start";
   std::filesystem::remove_all(dir);
 }
 
@@ -499,25 +500,26 @@ TEST(Headless, ReplayIsByteForByteReproducible) {
   Session recorder(test::source_dir() / "maps/outpost.map");
   recorder.start_recording();
   Autopilot pilot({{{300, 110}}, {{440, 192}}, {{700, 192}}});
-  for (int t = 0; t < 150 && !pilot.done(); ++t) recorder.tic(pilot.next(recorder.player()));
-  const sim::Demo demo = sim::decode_demo(sim::encode_demo(recorder.recording()), "d");
+  for (int t = 0; t < 150 && !pilot.done(); ++t) recorder.tic(pilot.next(recorder.pose().pos, recorder.pose().angle));
+  const play::Demo demo = play::decode_demo(play::encode_demo(recorder.recording()), "d");
   EXPECT_GT(demo.tics.size(), 60u);
-  EXPECT_EQ(recorder.player().z, 96) << "the autopilot climbed the stairs";
+  EXPECT_EQ(recorder.pose().z, 96) << "the autopilot climbed the stairs";
 
   for (const char* run : {"a", "b"}) {
     Session s(test::source_dir() / "maps/outpost.map");
     const HeadlessResult r = replay_headless(s, demo, {20, dir / run, 96, 60});
     EXPECT_EQ(r.frames, int(demo.tics.size() / 20 + 1 + (demo.tics.size() % 20 != 0))) << "and one at the last tic";
     EXPECT_EQ(r.tics, demo.tics.size());
-    EXPECT_EQ(r.exit, sim::Exit::kNone);
-    EXPECT_EQ(s.player().pos, recorder.player().pos) << "replay ends where the recording did";
+    EXPECT_EQ(r.exit, play::ExitKind::kNone);
+    EXPECT_EQ(s.pose().pos, recorder.pose().pos) << "replay ends where the recording did";
   }
   for (const auto& entry : std::filesystem::directory_iterator(dir / "a"))
     EXPECT_EQ(read_file_bytes(entry.path()), read_file_bytes(dir / "b" / entry.path().filename())) << entry.path();
   const std::string csv = read_file_text(dir / "a/stats.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
-            "frame,tic,x,y,z,angle,renderer,nodes_visited,subtrees_culled,fragments_drawn,columns_closed,pixels_written,"
-            "masked_pixels,sprites_drawn,sprite_pixels,early_exit,rays,steps,max_steps,keys,secrets,exit");
+            "frame,tic,x,y,z,angle,health,armor,kills,items,secrets,keys,renderer,nodes_visited,subtrees_culled,"
+            "fragments_drawn,columns_closed,pixels_written,masked_pixels,sprites_drawn,sprite_pixels,early_exit,rays,steps,"
+            "max_steps,exit");
 
   Session other(test::source_dir() / "maps/soup.map");
   EXPECT_THROW(replay_headless(other, demo, {20, dir / "c", 96, 60}), Error);
@@ -548,28 +550,30 @@ TEST(Session, AnExitLoadsTheNextMapInDoomsOrder) {
   Session s(bsp::LevelSource{{}, {dir / "two.wad"}, ""});
   s.give_all_keys(true);
   s.start_recording();
-  s.tic({});
-  s.tic({0, 0, 0, sim::kUse});
-  EXPECT_EQ(s.exited(), sim::Exit::kNormal);
-  EXPECT_EQ(s.recording().tics.size(), 2u) << "the demo ends at the exit";
-  const sim::Player before = s.player();
-  s.tic({50, 0, 0, 0});
-  EXPECT_EQ(s.player().pos, before.pos) << "nothing moves once the level is over";
+  s.tic(play::TicCmd{25, 0, 0, 0});  // a step: the shotgun and the suit under the player are taken
+  for (int t = 0; t < 40; ++t) s.tic(play::TicCmd{});  // the pistol goes down, the shotgun comes up
+  EXPECT_EQ(s.player().inv.ready, play::Weapon::kShotgun);
+  s.tic(play::TicCmd{0, 0, 0, play::kBtUse});
+  EXPECT_EQ(s.exited(), play::ExitKind::kNormal);
+  EXPECT_EQ(s.recording().tics.size(), 42u) << "the demo ends at the exit";
+  const Session::Pose before = s.pose();
+  s.tic(play::TicCmd{50, 0, 0, 0});
+  EXPECT_EQ(s.pose().pos, before.pos) << "nothing moves once the level is over";
   EXPECT_TRUE(s.enter_next_map());
   EXPECT_EQ(s.name(), "two.wad:MAP02");
-  EXPECT_EQ(s.player().pos, geom::Vec2(1100, 100));
-  EXPECT_EQ(s.player().keys, sim::kAllKeys) << "--all-keys holds on every map";
-  EXPECT_EQ(s.player().inventory.ready, play::Weapon::kShotgun) << "weapons and ammo go on to the next map";
-  EXPECT_EQ(s.player().inventory.ammo[1], 8);
-  EXPECT_EQ(s.player().inventory.powers[size_t(play::Power::kIronFeet)], 0) << "powers stay behind";
-  EXPECT_EQ(s.exited(), sim::Exit::kNone);
+  EXPECT_EQ(s.pose().pos, geom::Vec2(1100, 100));
+  EXPECT_EQ(s.player().cards, 63) << "--all-keys holds on every map";
+  EXPECT_EQ(s.player().inv.ready, play::Weapon::kShotgun) << "weapons and ammo go on to the next map";
+  EXPECT_EQ(s.player().inv.ammo[1], 8);
+  EXPECT_EQ(s.player().inv.powers[size_t(play::Power::kIronFeet)], 0) << "powers stay behind";
+  EXPECT_EQ(s.exited(), play::ExitKind::kNone);
   std::filesystem::remove_all(dir);
 }
 
 TEST(Session, TheLastMapStartsAgain) {
   Session s(test::source_dir() / "maps/outpost.map");
   EXPECT_FALSE(s.enter_next_map()) << "a hand-made level has no next map";
-  EXPECT_EQ(s.player().pos, s.level().player_start);
+  EXPECT_EQ(s.pose().pos, s.level().player_start);
 }
 
 TEST(Autopilot, UseWaypointsOpenDoors) {
@@ -586,22 +590,33 @@ TEST(Autopilot, UseWaypointsOpenDoors) {
   write_file_atomically(dir / "door.wad", w.bytes());
   Session s(bsp::LevelSource{{}, {dir / "door.wad"}, ""});
   Autopilot pilot(route_from_cameras(render::parse_camera_list("use 220 128 0\nthrough 400 128 0\n", "route")));
-  for (int t = 0; t < 600 && !pilot.done(); ++t) s.tic(pilot.next(s.player()));
+  for (int t = 0; t < 600 && !pilot.done(); ++t) s.tic(pilot.next(s.pose().pos, s.pose().angle));
   EXPECT_TRUE(pilot.done());
-  EXPECT_GT(s.player().pos.x, 380) << "through the door the route opened";
+  EXPECT_GT(s.pose().pos.x, 380) << "through the door the route opened";
   std::filesystem::remove_all(dir);
 }
 
-TEST(Input, TypingIdclipTogglesNoclip) {
+TEST(Input, TypedCheatsBecomeDemoCheats) {
   Cheats cheats;
-  std::string typed = "xxidcli";
-  for (char c : typed) EXPECT_FALSE(cheats.noclip(c));
-  EXPECT_TRUE(cheats.noclip('p'));
-  for (char c : std::string("idspispop")) EXPECT_FALSE(cheats.noclip(c));
-  EXPECT_TRUE(cheats.noclip('d'));
+  for (char c : std::string("xxidcli")) EXPECT_EQ(cheats.type(c), 0);
+  EXPECT_EQ(cheats.type('p'), play::kToggleNoclip);
+  for (char c : std::string("idspispop")) EXPECT_EQ(cheats.type(c), 0);
+  EXPECT_EQ(cheats.type('d'), play::kToggleNoclip);
+  for (char c : std::string("iddq")) EXPECT_EQ(cheats.type(c), 0);
+  EXPECT_EQ(cheats.type('d'), play::kToggleGod);
+  for (char c : std::string("idkf")) EXPECT_EQ(cheats.type(c), 0);
+  EXPECT_EQ(cheats.type('a'), play::kGiveAll);
   Controls c;
-  c.noclip = true;
-  EXPECT_EQ(make_command(c, 0).buttons, sim::kNoclip);
+  c.cheats = play::kToggleNoclip;
+  EXPECT_EQ(make_command(c, 0).cheats, play::kToggleNoclip);
+}
+
+TEST(Input, AttackAndWeaponKeysAreDoomsButtons) {
+  Controls c;
+  c.attack = true;
+  c.weapon = 3;  // Doom's key 3: the shotgun (weapon 2)
+  const play::TicCmd cmd = make_command(c, 0).cmd;
+  EXPECT_EQ(cmd.buttons, play::kBtAttack | play::kBtChange | 2 << play::kBtWeaponShift);
 }
 
 }  // namespace
