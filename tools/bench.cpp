@@ -4,6 +4,7 @@
 //   grids       grid ray casting against open distance: mazes and open arenas
 //   strategies  tree size, depth, build time and frame time per BSP strategy
 //   hostile, capture, threads, wad, doom: see main's help and the README
+//   play        Doom's rules: every monster awake on every Freedoom map, Doom's demos (bench_play.cpp)
 // Timings are wall-clock medians; compare ratios within one run. --json writes the
 // tables as JSON, --plots draws the scaling, threads and doom tables as SVG charts.
 #include <fcntl.h>
@@ -33,9 +34,12 @@
 #include "engine/render/renderer.h"
 #include "engine/util/file.h"
 #include "tools/cli.h"
+#include "tools/bench_play.h"
+#include "tools/bench_report.h"
 #include "tools/plot_svg.h"
 
 using namespace p3d;
+using namespace p3d::bench;
 using tools::BarChart;
 using tools::LineChart;
 using tools::LineSeries;
@@ -43,104 +47,6 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-// The tables bench prints, kept as they are printed so --json says the same thing
-// with the same names: a section per "### title", a row per table line, each cell
-// under its column's name in snake case, numbers as numbers.
-class Report {
- public:
-  void print(const char* fmt, ...) __attribute__((format(printf, 2, 3))) {
-    char buf[4096];
-    va_list args;
-    va_start(args, fmt);
-    std::vsnprintf(buf, sizeof buf, fmt, args);
-    va_end(args);
-    std::fputs(buf, stdout);
-    std::fflush(stdout);
-    pending_ += buf;
-    for (size_t nl; (nl = pending_.find('\n')) != std::string::npos; pending_.erase(0, nl + 1)) line(pending_.substr(0, nl));
-  }
-
-  struct Section {
-    std::string title;
-    std::vector<std::string> columns;           // as printed
-    std::vector<std::string> rows;              // as JSON objects
-    std::vector<std::vector<std::string>> cells;  // as printed, per row
-  };
-
-  // The first section whose title starts with prefix, or null.
-  const Section* find(const std::string& prefix) const {
-    for (const Section& s : sections_)
-      if (s.title.rfind(prefix, 0) == 0) return &s;
-    return nullptr;
-  }
-
-  std::string json() const {
-    std::string out = "{\"sections\": [";
-    for (size_t i = 0; i < sections_.size(); ++i) {
-      out += std::string(i ? ",\n " : "\n ") + "{\"title\": " + json_string(sections_[i].title) + ", \"rows\": [";
-      for (size_t r = 0; r < sections_[i].rows.size(); ++r) out += std::string(r ? ",\n  " : "\n  ") + sections_[i].rows[r];
-      out += "]}";
-    }
-    return out + "\n]}\n";
-  }
-
- private:
-  static std::vector<std::string> cells(const std::string& line) {
-    std::vector<std::string> out;
-    size_t start = 1;
-    for (size_t bar; (bar = line.find('|', start)) != std::string::npos; start = bar + 1) {
-      std::string cell = line.substr(start, bar - start);
-      cell.erase(0, cell.find_first_not_of(' '));
-      cell.erase(cell.find_last_not_of(' ') + 1);
-      out.push_back(cell);
-    }
-    return out;
-  }
-
-  static std::string snake(const std::string& name) {
-    std::string out;
-    for (const char c : name)
-      if (std::isalnum(static_cast<unsigned char>(c)))
-        out += char(std::tolower(static_cast<unsigned char>(c)));
-      else if (!out.empty() && out.back() != '_')
-        out += '_';
-    while (!out.empty() && out.back() == '_') out.pop_back();
-    return out;
-  }
-
-  static std::string value(const std::string& cell) {
-    if (cell.empty()) return "null";
-    char* end = nullptr;
-    const double v = std::strtod(cell.c_str(), &end);
-    if (!cell.empty() && end && *end == 0 && std::isfinite(v)) return stat_number(v);
-    return json_string(cell);
-  }
-
-  void line(const std::string& text) {
-    if (text.rfind("### ", 0) == 0) {
-      sections_.push_back({text.substr(4), {}, {}, {}});
-      return;
-    }
-    if (sections_.empty() || text.rfind("|", 0) != 0) return;
-    Section& s = sections_.back();
-    const std::vector<std::string> row = cells(text);
-    if (s.columns.empty()) {
-      s.columns = row;
-      return;
-    }
-    if (!row.empty() && row[0].rfind("---", 0) == 0) return;  // the header's rule
-    std::string object = "{";
-    for (size_t i = 0; i < row.size() && i < s.columns.size(); ++i)
-      object += (i ? ", " : "") + json_string(snake(s.columns[i])) + ": " + value(row[i]);
-    s.rows.push_back(object + "}");
-    s.cells.push_back(row);
-  }
-
-  std::string pending_;
-  std::vector<Section> sections_;
-};
-
-Report report;
 
 struct Settings {
   cli::LevelArgs wads;         // the wad section: --iwad, --file, --map
@@ -164,11 +70,6 @@ struct Timing {
   double steps_per_ray = 0;  // mean (ray-based renderers)
 };
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
 
 Timing time_renderer(render::Renderer& r, const level::Level& level, const std::vector<render::Camera>& path,
                      const Settings& s) {
@@ -225,11 +126,6 @@ std::vector<map::Texture> bundled_textures(const Settings& s) {
   return textures;
 }
 
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
 
 std::string count_text(size_t n) {
   if (n >= 1000000 && n % 1000000 == 0) return std::to_string(n / 1000000) + "M";
@@ -554,11 +450,6 @@ std::vector<render::Camera> random_cameras(const level::Level& level, int count,
   return out;
 }
 
-double geomean(const std::vector<double>& v) {
-  double log_sum = 0;
-  for (double x : v) log_sum += std::log(x);
-  return v.empty() ? 0 : std::exp(log_sum / double(v.size()));
-}
 
 // The bsp renderer's ms/frame on the cameras at w x h, on one thread and on `cores`, interleaved camera
 // by camera so that the machine's noise falls on both alike; medians. Each timed frame follows an
@@ -1012,8 +903,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> sections;
   std::string size_text = "640x400";
   app.add_option("sections", sections,
-                 "render, scaling, grids, strategies, hostile, capture, threads, wad, doom (default: all but wad and doom; with --iwad, wad)")
-      ->check(CLI::IsMember({"render", "scaling", "grids", "strategies", "hostile", "capture", "threads", "wad", "doom"}));
+                 "render, scaling, grids, strategies, hostile, capture, threads, wad, doom, play (default: all but wad, doom and play; with --iwad, wad)")
+      ->check(CLI::IsMember({"render", "scaling", "grids", "strategies", "hostile", "capture", "threads", "wad", "doom", "play"}));
   cli::add_wad_options(app, s.wads);
   app.add_option("--cameras", s.cameras, "wad: random cameras per map")->check(CLI::Range(1, 100000))->capture_default_str();
   app.add_option("--runs", s.runs, "wad: compiles per map and tool (median)")->check(CLI::Range(1, 1000))->capture_default_str();
@@ -1062,6 +953,7 @@ int main(int argc, char** argv) {
       if (section == "threads") bench_threads(s);
       if (section == "wad") bench_wad(s);
       if (section == "doom") bench_doom(s);
+      if (section == "play") bench_play(s.skill, s.source_dir);
     }
     if (!json.empty()) write_file_atomically(json, report.json());
     if (!plots.empty()) write_plots(s, plots);

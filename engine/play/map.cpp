@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <unordered_map>
 
 #include "engine/util/bytes.h"
 #include "engine/util/error.h"
@@ -64,25 +65,37 @@ void group_lines(Map& m) {
   }
 }
 
-// The map's BLOCKMAP if it is whole: a header, an offset per cell, lists inside the lump.
+// The map's BLOCKMAP if it is whole: a header, an offset per cell, lists inside the lump
+// ending with 0xFFFF, every entry a line of the map.
 std::optional<Blockmap> read_blockmap(const wad::Lump* lump, size_t line_count) {
   if (!lump || lump->bytes.size() < 8 || lump->bytes.size() % 2) return std::nullopt;
+  std::vector<uint16_t> words(lump->bytes.size() / 2);
+  for (size_t i = 0; i < words.size(); ++i) words[i] = uint16_t(lump->bytes[2 * i] | lump->bytes[2 * i + 1] << 8);
   Blockmap bm;
-  bm.words.resize(lump->bytes.size() / 2);
-  for (size_t i = 0; i < bm.words.size(); ++i) bm.words[i] = uint16_t(lump->bytes[2 * i] | lump->bytes[2 * i + 1] << 8);
-  bm.origin_x = int32_t(int16_t(bm.words[0])) << kFracBits;
-  bm.origin_y = int32_t(int16_t(bm.words[1])) << kFracBits;
-  bm.width = bm.words[2];
-  bm.height = bm.words[3];
+  bm.origin_x = int32_t(int16_t(words[0])) << kFracBits;
+  bm.origin_y = int32_t(int16_t(words[1])) << kFracBits;
+  bm.width = words[2];
+  bm.height = words[3];
+  constexpr size_t kHeaderWords = 4;
   const size_t cells = size_t(bm.width) * size_t(bm.height);
-  if (cells == 0 || Blockmap::kHeaderWords + cells > bm.words.size()) return std::nullopt;
+  if (cells == 0 || kHeaderWords + cells > words.size()) return std::nullopt;
+  std::unordered_map<size_t, uint32_t> copied;  // a list's place in the lump -> in `lists` (cells share lists)
   for (size_t c = 0; c < cells; ++c) {
-    size_t at = bm.words[Blockmap::kHeaderWords + c];
-    while (at < bm.words.size() && bm.words[at] != Blockmap::kEnd) {
-      if (bm.words[at] >= line_count) return std::nullopt;
-      ++at;
+    const size_t start = words[kHeaderWords + c];
+    if (const auto it = copied.find(start); it != copied.end()) {
+      bm.offsets.push_back(it->second);
+      continue;
     }
-    if (at >= bm.words.size()) return std::nullopt;  // a list running off the lump
+    const uint32_t at_list = uint32_t(bm.lists.size());
+    size_t at = start;
+    for (; at < words.size() && words[at] != 0xFFFF; ++at) {
+      if (words[at] >= line_count) return std::nullopt;
+      bm.lists.push_back(words[at]);
+    }
+    if (at >= words.size()) return std::nullopt;  // a list running off the lump
+    bm.lists.push_back(Blockmap::kEnd);
+    copied.emplace(start, at_list);
+    bm.offsets.push_back(at_list);
   }
   return bm;
 }
@@ -130,8 +143,7 @@ bool read_nodes(const wad::MapLumps& lumps, Map& m) {
     n.y = int32_t(int16_t(nd.u16())) << kFracBits;
     n.dx = int32_t(int16_t(nd.u16())) << kFracBits;
     n.dy = int32_t(int16_t(nd.u16())) << kFracBits;
-    for (Box& b : n.bbox)
-      for (Fixed& edge : b) edge = int32_t(int16_t(nd.u16())) << kFracBits;
+    nd.raw(16);  // the children's boxes
     for (uint16_t& c : n.children) {
       c = nd.u16();
       const bool leaf = c & Node::kSubsectorBit;
@@ -171,7 +183,45 @@ std::vector<uint8_t> reject_table(const wad::Lump* lump, size_t sectors) {
   return table;
 }
 
+// The side of the node the cell's points are all on (0 or 1), or -1 when they differ or
+// might: Doom's side test is monotone in x and in y within a quadrant around the
+// node's origin, so a cell inside one quadrant has its sides' extremes at its corners.
+int cell_side(const Node& node, Fixed x0, Fixed y0, Fixed x1, Fixed y1) {
+  if (!node.dx) return x1 <= node.x ? node.dy > 0 : x0 > node.x ? node.dy < 0 : -1;
+  if (!node.dy) return y1 <= node.y ? node.dx < 0 : y0 > node.y ? node.dx > 0 : -1;
+  const bool x_split = (int64_t(x0) - node.x < 0) != (int64_t(x1) - node.x < 0);
+  const bool y_split = (int64_t(y0) - node.y < 0) != (int64_t(y1) - node.y < 0);
+  if (x_split || y_split) return -1;
+  const int side = point_on_node_side(x0, y0, node);
+  for (const auto& [x, y] : {std::pair{x1, y0}, {x0, y1}, {x1, y1}})
+    if (point_on_node_side(x, y, node) != side) return -1;
+  return side;
+}
+
 }  // namespace
+
+void Map::index_cells() {
+  cell_start.clear();
+  if (!has_nodes()) return;
+  const uint16_t root = uint16_t(nodes.size() - 1);
+  cell_columns = blockmap.width << (kMapBlockShift - kCellShift);
+  cell_rows = blockmap.height << (kMapBlockShift - kCellShift);
+  cell_start.assign(size_t(cell_columns) * size_t(cell_rows), root);
+  for (int by = 0; by < cell_rows; ++by)
+    for (int bx = 0; bx < cell_columns; ++bx) {
+      const int64_t x0 = int64_t(blockmap.origin_x) + (int64_t(bx) << kCellShift);
+      const int64_t y0 = int64_t(blockmap.origin_y) + (int64_t(by) << kCellShift);
+      const int64_t x1 = x0 + (int64_t(1) << kCellShift) - 1, y1 = y0 + (int64_t(1) << kCellShift) - 1;
+      if (x1 > INT32_MAX || y1 > INT32_MAX) continue;  // beyond Doom's coordinates: from the root
+      uint16_t n = root;
+      while (!(n & Node::kSubsectorBit)) {
+        const int side = cell_side(nodes[n], Fixed(x0), Fixed(y0), Fixed(x1), Fixed(y1));
+        if (side < 0) break;
+        n = nodes[n].children[size_t(side)];
+      }
+      cell_start[size_t(by) * size_t(cell_columns) + size_t(bx)] = n;
+    }
+}
 
 Subsector* Map::point_in_subsector(Fixed x, Fixed y) {
   if (located_by) {
@@ -180,6 +230,9 @@ Subsector* Map::point_in_subsector(Fixed x, Fixed y) {
   }
   if (nodes.empty()) return &subsectors[0];
   uint16_t n = uint16_t(nodes.size() - 1);
+  const int64_t bx = (int64_t(x) - blockmap.origin_x) >> kCellShift, by = (int64_t(y) - blockmap.origin_y) >> kCellShift;
+  if (bx >= 0 && by >= 0 && bx < cell_columns && by < cell_rows && !cell_start.empty())
+    n = cell_start[size_t(by) * size_t(cell_columns) + size_t(bx)];
   while (!(n & Node::kSubsectorBit)) {
     const Node& node = nodes[n];
     n = node.children[size_t(point_on_node_side(x, y, node))];
@@ -191,7 +244,8 @@ Blockmap build_blockmap(const std::vector<Line>& lines, const std::vector<Vertex
   Blockmap bm;
   if (vertices.empty()) {
     bm.width = bm.height = 1;
-    bm.words = {0, 0, 1, 1, 5, 0, Blockmap::kEnd};
+    bm.offsets = {0};
+    bm.lists = {Blockmap::kEnd};
     return bm;
   }
   Fixed min_x = INT_MAX, min_y = INT_MAX, max_x = INT_MIN, max_y = INT_MIN;
@@ -205,7 +259,7 @@ Blockmap build_blockmap(const std::vector<Line>& lines, const std::vector<Vertex
   bm.width = int((int64_t(max_x) - bm.origin_x) >> kMapBlockShift) + 1;
   bm.height = int((int64_t(max_y) - bm.origin_y) >> kMapBlockShift) + 1;
   const size_t cells = size_t(bm.width) * size_t(bm.height);
-  std::vector<std::vector<uint16_t>> lists(cells);
+  std::vector<std::vector<uint32_t>> lists(cells);
   for (size_t i = 0; i < lines.size(); ++i) {
     // Every cell the segment passes through, found by its box then a side test per
     // cell (a cell is crossed when its corners are not all on one side).
@@ -222,17 +276,14 @@ Blockmap build_blockmap(const std::vector<Line>& lines, const std::vector<Vertex
           const double cross = (x2 - x1) * (cy - y1) - (y2 - y1) * (cx - x1);
           sides |= cross > 0 ? 1 : cross < 0 ? 2 : 3;
         }
-        if (sides == 3 || (x1 == x2 && y1 == y2)) lists[size_t(r) * size_t(bm.width) + size_t(c)].push_back(uint16_t(i));
+        if (sides == 3 || (x1 == x2 && y1 == y2)) lists[size_t(r) * size_t(bm.width) + size_t(c)].push_back(uint32_t(i));
       }
   }
-  bm.words = {uint16_t(int16_t(bm.origin_x >> kFracBits)), uint16_t(int16_t(bm.origin_y >> kFracBits)), uint16_t(bm.width),
-              uint16_t(bm.height)};
-  bm.words.resize(Blockmap::kHeaderWords + cells);
   for (size_t c = 0; c < cells; ++c) {
-    bm.words[Blockmap::kHeaderWords + c] = uint16_t(std::min<size_t>(bm.words.size(), 0xFFFF));
-    bm.words.push_back(0);  // the list's opening word, which Doom reads as line 0
-    bm.words.insert(bm.words.end(), lists[c].begin(), lists[c].end());
-    bm.words.push_back(Blockmap::kEnd);
+    bm.offsets.push_back(uint32_t(bm.lists.size()));
+    if (!lines.empty()) bm.lists.push_back(0);  // the list's opening word, which Doom reads as line 0
+    bm.lists.insert(bm.lists.end(), lists[c].begin(), lists[c].end());
+    bm.lists.push_back(Blockmap::kEnd);
   }
   return bm;
 }
@@ -327,6 +378,8 @@ Map map_from_wad(const wad::MapData& data, const wad::MapLumps* lumps, const lev
   m.reject = reject_table(lumps ? lumps->find("REJECT") : nullptr, m.sectors.size());
   if (!lumps || data.udmf || !read_nodes(*lumps, m)) leaves_as_subsectors(m, level);
   group_lines(m);
+  m.index_cells();
+  m.line_marks.assign(m.lines.size(), 0);
   return m;
 }
 
@@ -418,6 +471,7 @@ Map map_from_level(const level::Level& level) {
   m.reject = reject_table(nullptr, m.sectors.size());
   leaves_as_subsectors(m, level);
   group_lines(m);
+  m.line_marks.assign(m.lines.size(), 0);
   return m;
 }
 

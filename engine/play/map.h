@@ -80,15 +80,17 @@ struct Side {
 
 enum class Slope : uint8_t { kHorizontal, kVertical, kPositive, kNegative };
 
+// (Ordered so that what a collision check reads first shares a cache line; Doom's
+// validcount mark is kept apart, in Map::line_marks.)
 struct Line {
-  Vertex *v1 = nullptr, *v2 = nullptr;
-  Fixed dx = 0, dy = 0;
-  int flags = 0, special = 0, tag = 0;
-  std::array<int, 2> side{-1, -1};  // front, back: indices into Map::sides
   Box bbox{};
   Slope slope = Slope::kHorizontal;
+  int flags = 0;
+  Fixed dx = 0, dy = 0;
+  Vertex *v1 = nullptr, *v2 = nullptr;
   Sector *front = nullptr, *back = nullptr;
-  int valid_count = 0;
+  int special = 0, tag = 0;
+  std::array<int, 2> side{-1, -1};  // front, back: indices into Map::sides
   int index = 0;
 };
 
@@ -106,9 +108,10 @@ struct Subsector {
   int line_count = 0, first_line = 0;  // its segs
 };
 
+// A node of the map's tree: its partition line and children (the boxes, which only
+// Doom's renderer reads, are not kept: descents stay in fewer cache lines).
 struct Node {
   Fixed x = 0, y = 0, dx = 0, dy = 0;
-  std::array<Box, 2> bbox{};
   std::array<uint16_t, 2> children{};  // kSubsectorBit: a subsector
   static constexpr uint16_t kSubsectorBit = 0x8000;
 };
@@ -125,13 +128,15 @@ constexpr Fixed kMapBlockSize = 128 * kFracUnit;
 struct Blockmap {
   Fixed origin_x = 0, origin_y = 0;
   int width = 0, height = 0;
-  // The lump's words: the cell offsets, then the lists (each opening with a 0 and
-  // ending with 0xFFFF, as node builders write them; Doom walks the opening 0 too).
-  std::vector<uint16_t> words;
-  static constexpr size_t kHeaderWords = 4;
-  static constexpr uint16_t kEnd = 0xFFFF;
-  // The first word of cell (x, y)'s list.
-  size_t list(int x, int y) const { return words[kHeaderWords + size_t(y) * size_t(width) + size_t(x)]; }
+  // Each cell's list of line numbers, as the lump lists them (each opening with a 0,
+  // which Doom walks as line 0, as node builders write them), ending with kEnd; in 32
+  // bits, so that levels beyond Doom's 64K words and lines fit.
+  std::vector<uint32_t> offsets;  // per cell (x + y * width): where its list starts in `lists`
+  std::vector<uint32_t> lists;
+  static constexpr uint32_t kEnd = 0xFFFFFFFF;
+  // Cell (x, y)'s list. Every entry is a valid line number (read_blockmap checks,
+  // build_blockmap makes them so).
+  const uint32_t* list(int x, int y) const { return lists.data() + offsets[size_t(y) * size_t(width) + size_t(x)]; }
 };
 
 struct Map {
@@ -140,6 +145,9 @@ struct Map {
   std::vector<Sector> sectors;
   std::vector<Side> sides;
   std::vector<Line> lines;
+  // Per line, Doom's validcount mark: the last search that reached it (dense, so that
+  // lines met again in other cells cost no visit to the line itself).
+  std::vector<int> line_marks;
   std::vector<Seg> segs;
   std::vector<Subsector> subsectors;
   std::vector<Node> nodes;
@@ -152,6 +160,14 @@ struct Map {
   std::vector<int> wall_lines;  // located_by: the Map line of each level wall
 
   bool has_nodes() const { return !nodes.empty() && located_by == nullptr; }
+  // Where point_in_subsector's descent may start for the points of each 32-unit cell
+  // of the blockmap's area: the deepest node (or subsector) every point of the cell
+  // reaches from the root, so starting there gives exactly the root's answer in fewer
+  // steps. Built by index_cells.
+  static constexpr int kCellShift = kFracBits + 5;
+  std::vector<uint16_t> cell_start;
+  int cell_columns = 0, cell_rows = 0;
+  void index_cells();
   // Doom's R_PointInSubsector.
   Subsector* point_in_subsector(Fixed x, Fixed y);
   // Doom's reject table: true when sector a's things can never see sector b's.

@@ -484,6 +484,7 @@ bool World::do_locked_door(Line* line, Door::Type type, Mobj* thing) {
 
 // EV_VerticalDoor: a door used by hand opens the sector behind the line.
 void World::vertical_door(Line* line, Mobj* thing) {
+  mark_line(line);
   static constexpr const char* kNeeds[] = {"You need a blue key to open this door",
                                            "You need a yellow key to open this door",
                                            "You need a red key to open this door"};

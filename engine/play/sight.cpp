@@ -50,8 +50,9 @@ bool cross_subsector(Map& map, int num, SightTrace& s, int valid_count) {
   for (int i = 0; i < sub.line_count; ++i) {
     const Seg& seg = map.segs[size_t(sub.first_line + i)];
     Line* line = seg.line;
-    if (line->valid_count == valid_count) continue;
-    line->valid_count = valid_count;
+    int& mark = map.line_marks[size_t(line->index)];
+    if (mark == valid_count) continue;
+    mark = valid_count;
     const Vertex *v1 = line->v1, *v2 = line->v2;
     if (divline_side(v1->x, v1->y, s.trace) == divline_side(v2->x, v2->y, s.trace)) continue;
     const World::DivLine divl{v1->x, v1->y, wrap_sub(v2->x, v1->x), wrap_sub(v2->y, v1->y)};

@@ -231,6 +231,7 @@ int World::find_min_surrounding_light(Sector* sector, int max) {
 void World::cross_special_line(int line_number, int side, Mobj* thing) {
   Line* line = &map_.lines[size_t(line_number)];
   if (!thing->player && !may_cross_without_player(thing->type, line->special)) return;
+  mark_line(line);  // its special may be used up
   switch (line->special) {
     case 2: do_door(line, Door::Type::kOpen); break;
     case 3: do_door(line, Door::Type::kClose); break;
@@ -322,6 +323,7 @@ void World::cross_special_line(int line_number, int side, Mobj* thing) {
 // Things other than the player open only door 46 by shooting.
 void World::shoot_special_line(Mobj* thing, Line* line) {
   if (!thing->player && line->special != 46) return;
+  mark_line(line);
   switch (line->special) {
     case 24:
       do_floor(line, Floor::Type::kRaise);
@@ -344,6 +346,7 @@ void World::shoot_special_line(Mobj* thing, Line* line) {
 // what it starts did start (exits and lights always).
 bool World::use_special_line(Mobj* thing, Line* line, int side) {
   if (side && line->special != 124) return false;
+  mark_line(line);
   if (!thing->player) {
     if (line->flags & kMlSecret) return false;
     const int s = line->special;
@@ -483,6 +486,7 @@ void World::update_specials() {
   for (Button& b : buttons_) {
     if (!b.timer || --b.timer) continue;
     side_part(map_.sides[size_t(b.line->side[0])], b.where) = b.texture;
+    mark_line(b.line);
     // Doom's origin is the button record itself, a place that is nowhere in particular
     start_sector_sound(b.sound_sector, Sound::kSwtchn);
     b = Button{};
@@ -569,6 +573,7 @@ bool World::do_donut(Line* line) {
 // The first of the front side's textures in Doom's list of switches flips to its pair
 // (top before middle before bottom for the same place); a button flips back later.
 void World::change_switch_texture(Line* line, bool use_again) {
+  mark_line(line);
   if (!use_again) line->special = 0;
   // Doom asks for the exit switch's sound only now, when a once-only exit switch has
   // lost its special: the exit sounds as any switch does.

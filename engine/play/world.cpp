@@ -51,7 +51,7 @@ World::World(Map map, const level::Level& level, const GameOptions& options, Ran
   }
   spawn_specials();
   state_ = level::start_state(level_, options_.skill);
-  show();
+  for (size_t l = 0; l < map_.lines.size(); ++l) show_line(l);
 }
 
 World::~World() = default;
@@ -64,7 +64,7 @@ void World::tick(const TicCmd& cmd) {
   run_thinkers();
   update_specials();
   ++level_time_;
-  show();
+  stale_ = true;
 }
 
 void World::add_thinker(std::unique_ptr<Thinker> t) { thinkers_.push_back(std::move(t)); }
@@ -88,6 +88,8 @@ void World::run_thinkers() {
   }
   // Removed thinkers leave the list; things among them stay allocated, since others may
   // still point at them (Doom's freed memory kept its contents too).
+  if (!removed_since_pass_) return;
+  removed_since_pass_ = 0;
   auto kept = std::stable_partition(thinkers_.begin(), thinkers_.end(), [](const auto& t) { return !t->removed; });
   for (auto it = kept; it != thinkers_.end(); ++it) graveyard_.push_back(std::move(*it));
   thinkers_.erase(kept, thinkers_.end());
@@ -137,6 +139,10 @@ void World::index_walls() {
   }
   start_offsets_.resize(map_.sides.size());
   for (size_t i = 0; i < map_.sides.size(); ++i) start_offsets_[i] = map_.sides[i].texture_offset;
+  side_lines_.assign(map_.sides.size(), {});
+  for (const Line& line : map_.lines)
+    for (int k : {0, 1})
+      if (line.side[size_t(k)] >= 0) side_lines_[size_t(line.side[size_t(k)])].push_back(line.index);
 }
 
 // The level's sprite frame for each of Doom's sprites and frames, bright or not.
@@ -173,6 +179,19 @@ void World::index_static_things() {
   }
 }
 
+int World::wake_monsters() {
+  int woken = 0;
+  for (size_t i = 0; i < thinkers_.size(); ++i) {
+    if (thinkers_[i]->kind != Thinker::Kind::kMobj || thinkers_[i]->removed) continue;
+    Mobj* mo = static_cast<Mobj*>(thinkers_[i].get());
+    if (!(mo->flags & kCountkill) || mo->health <= 0 || mo->info->see == StateId::kNull || !player_.mo) continue;
+    mo->target = player_.mo;
+    set_mobj_state(mo, mo->info->see);
+    ++woken;
+  }
+  return woken;
+}
+
 void World::place_player(Fixed x, Fixed y, Angle angle) {
   Mobj* mo = player_.mo;
   if (!mo) return;
@@ -185,7 +204,7 @@ void World::place_player(Fixed x, Fixed y, Angle angle) {
   mo->z = mo->floor_z;
   mo->angle = angle;
   player_.view_z = wrap_add(mo->z, player_.view_height);
-  show();
+  stale_ = true;
 }
 
 void World::apply_cheats(uint8_t cheats) {
@@ -213,7 +232,23 @@ void World::apply_cheats(uint8_t cheats) {
   }
 }
 
-void World::show() {
+// The line's special and its sides' textures into the walls drawn for it.
+void World::show_line(size_t l) const {
+  const Line& line = map_.lines[l];
+  for (uint32_t w : line_walls_[l]) {
+    state_.specials[w] = line.special;
+    for (int k = 0; k < 2; ++k) {
+      if (line.side[k] < 0 || level_.walls[w].sides[k].sector == level::kNone) continue;
+      const Side& side = map_.sides[size_t(line.side[k])];
+      state_.texture(w, k, level::kUpperPart) = side.top;
+      state_.texture(w, k, level::kMiddlePart) = side.middle;
+      state_.texture(w, k, level::kLowerPart) = side.bottom;
+    }
+  }
+}
+
+void World::show() const {
+  stale_ = false;
   for (size_t i = 0; i < map_.sectors.size() && i < state_.sectors.size(); ++i) {
     const Sector& s = map_.sectors[i];
     level::SectorState& out = state_.sectors[i];
@@ -224,27 +259,20 @@ void World::show() {
     out.ceiling_texture = s.ceiling_pic;
     out.special = s.special;
   }
-  bool scrolls = false;
-  for (size_t l = 0; l < map_.lines.size(); ++l) {
-    const Line& line = map_.lines[l];
-    for (uint32_t w : line_walls_[l]) {
-      state_.specials[w] = line.special;
-      for (int k = 0; k < 2; ++k) {
-        if (line.side[k] < 0 || level_.walls[w].sides[k].sector == level::kNone) continue;
-        const Side& side = map_.sides[size_t(line.side[k])];
-        state_.texture(w, k, level::kUpperPart) = side.top;
-        state_.texture(w, k, level::kMiddlePart) = side.middle;
-        state_.texture(w, k, level::kLowerPart) = side.bottom;
-      }
-      const Fixed scrolled = wrap_sub(map_.sides[size_t(line.side[0])].texture_offset, start_offsets_[size_t(line.side[0])]);
-      if (scrolled) {
-        if (state_.scrolled.empty()) state_.scrolled.assign(level_.walls.size(), 0);
-        state_.scrolled[w] = to_double(scrolled);
-        scrolls = true;
-      }
-    }
+  for (int l : changed_lines_) {
+    show_line(size_t(l));
+    for (int k : {0, 1})  // a side shared with other lines changes them too
+      if (const int side = map_.lines[size_t(l)].side[size_t(k)]; side >= 0)
+        for (int other : side_lines_[size_t(side)])
+          if (other != l) show_line(size_t(other));
   }
-  if (!scrolls) state_.scrolled.clear();
+  changed_lines_.clear();
+  for (const Line* line : scrolling_lines_) {
+    const Fixed scrolled = wrap_sub(map_.sides[size_t(line->side[0])].texture_offset, start_offsets_[size_t(line->side[0])]);
+    if (scrolled && state_.scrolled.empty()) state_.scrolled.assign(level_.walls.size(), 0);
+    if (!state_.scrolled.empty())
+      for (uint32_t w : line_walls_[size_t(line->index)]) state_.scrolled[w] = to_double(scrolled);
+  }
   // Textures animate by the level time of the last tic's P_UpdateSpecials.
   if (level_time_ > 0) level::animate_textures(level_, state_, uint64_t(level_time_ - 1));
   state_.things.clear();

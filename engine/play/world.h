@@ -90,24 +90,25 @@ struct Thinker {
 
 struct Player;
 
+// (What a collision check reads of the things in a cell comes first: one cache line.)
 struct Mobj : Thinker {
   Mobj() : Thinker(Kind::kMobj) {}
   Fixed x = 0, y = 0, z = 0;
+  uint32_t flags = 0;  // ThingFlag
+  Fixed radius = 0, height = 0;
+  Mobj *bnext = nullptr, *bprev = nullptr;  // the blockmap cell's list of things
   Mobj *snext = nullptr, *sprev = nullptr;  // the sector's list of things
   Angle angle = 0;
   Sprite sprite = Sprite::kTroo;
   int frame = 0;  // with kFullBright
-  Mobj *bnext = nullptr, *bprev = nullptr;  // the blockmap cell's list of things
   Subsector* subsector = nullptr;
   Fixed floor_z = 0, ceiling_z = 0;
-  Fixed radius = 0, height = 0;
   Fixed mom_x = 0, mom_y = 0, mom_z = 0;
   int valid_count = 0;
   ThingType type = ThingType::kPlayer;
   const ThingInfo* info = nullptr;
   int tics = 0;
   StateId state = StateId::kNull;
-  uint32_t flags = 0;  // ThingFlag
   int health = 0;
   int move_dir = 0;    // 0..7, or 8 for none (Doom's DI_NODIR)
   int move_count = 0;  // steps before choosing a new direction
@@ -247,7 +248,12 @@ class World {
   // update. Then state() shows the level as it stands.
   void tick(const TicCmd& cmd);
 
-  const level::State& state() const { return state_; }
+  // The level as it stands, for the renderers: brought up to date when asked (ticks
+  // that nobody draws cost nothing here).
+  const level::State& state() const {
+    if (stale_) show();
+    return state_;
+  }
   const Player& player() const { return player_; }
   Player& player() { return player_; }
   const Map& map() const { return map_; }
@@ -267,6 +273,9 @@ class World {
   void place_player(Fixed x, Fixed y, Angle angle);
   // Our cheats (play/demo.h's DemoCheat bits): noclip, god mode, every weapon, ammo and key.
   void apply_cheats(uint8_t cheats);
+  // Every monster at once hunting the player, as if it had seen it (A_Look's waking:
+  // the target set, the see state entered); for benchmarks and tests. Returns how many.
+  int wake_monsters();
   // Every thing, in thinker order (removed ones left out).
   std::vector<const Mobj*> things() const;
   size_t thinker_count() const;
@@ -281,8 +290,11 @@ class World {
     add_thinker(std::move(t));
     return raw;
   }
-  void remove_thinker(Thinker* t) { t->removed = true; }
-  void show();  // state_ from the map and the things
+  void remove_thinker(Thinker* t) {
+    t->removed = true;
+    ++removed_since_pass_;
+  }
+  void show() const;  // state_ from the map and the things
   void start_sound(const Mobj* origin, Sound sound);
   void start_sector_sound(const Sector* sector, Sound sound);
   void stop_sound(const Mobj* origin);  // Doom's S_StopSound (a no-op for play)
@@ -291,6 +303,10 @@ class World {
   void index_walls();          // line_walls_ and the sides' starting offsets
   void index_sprite_frames();  // sprite_frames_
   int32_t level_frame(const Mobj& mo) const;  // the level's sprite frame a thing shows, or kNone
+  // A line whose special or side textures may change this tic: show() draws it anew (and
+  // every line sharing a side with it).
+  void mark_line(const Line* line) { changed_lines_.push_back(line->index); }
+  void show_line(size_t line) const;
   void index_static_things();  // static_things_
 
   // ---- maputl.cpp
@@ -521,14 +537,18 @@ class World {
   std::vector<Ceiling*> active_ceilings_;
   std::vector<std::vector<uint32_t>> line_walls_;  // per line: the level's walls drawn for it
   std::vector<Fixed> start_offsets_;                // per side: its texture offset at the start (scrolling)
+  std::vector<std::vector<int>> side_lines_;        // per side: the lines it is a side of
+  mutable std::vector<int> changed_lines_;          // mark_line's, since the last show()
   int total_kills_ = 0, total_items_ = 0, total_secrets_ = 0;
   ExitKind exit_ = ExitKind::kNone;
   uint32_t next_id_ = 1;
   std::vector<std::unique_ptr<Thinker>> thinkers_;  // in run order; removed ones kept until the level ends
   std::vector<std::unique_ptr<Thinker>> graveyard_;  // removed things others may still point at
+  size_t removed_since_pass_ = 0;
   std::vector<SoundEvent> sounds_;
   std::vector<std::string> messages_;
-  level::State state_;
+  mutable level::State state_;
+  mutable bool stale_ = true;  // state_ is behind the map
   // Placed things Doom does not know (a .map level's own types) that have a picture:
   // shown where they stand, never acting.
   std::vector<int32_t> static_things_;
@@ -541,13 +561,11 @@ template <typename F>
 bool World::block_lines(int bx, int by, F&& f) {
   const Blockmap& bm = map_.blockmap;
   if (bx < 0 || by < 0 || bx >= bm.width || by >= bm.height) return true;
-  for (size_t at = bm.list(bx, by); at < bm.words.size() && bm.words[at] != Blockmap::kEnd; ++at) {
-    const size_t n = bm.words[at];
-    if (n >= map_.lines.size()) continue;  // a broken list: Doom would read past its lines
-    Line* ld = &map_.lines[n];
-    if (ld->valid_count == valid_count_) continue;  // already checked in another cell
-    ld->valid_count = valid_count_;
-    if (!f(ld)) return false;
+  for (const uint32_t* at = bm.list(bx, by); *at != Blockmap::kEnd; ++at) {
+    int& mark = map_.line_marks[*at];
+    if (mark == valid_count_) continue;  // already checked in another cell
+    mark = valid_count_;
+    if (!f(&map_.lines[*at])) return false;
   }
   return true;
 }
