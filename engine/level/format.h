@@ -4,8 +4,8 @@
 //            u64 payload size, u64 XXH3-64 checksum of the payload (util/checksum.h)
 //   payload  sections in this order, each opening with its u32 tag:
 //     META     str title, f64 player x, y, angle, i32 default sector, i32 sky texture
-//     PALT     u32 paletted (0 or 1); if 1: 256 RGBA8 palette colours, then kLightMaps x 256
-//              RGBA8 light-map colours (map 0 full bright)
+//     PALT     u32 paletted (0 or 1); if 1: 256 RGBA8 palette colours, then kStoredMaps x 256
+//              RGBA8 light-map colours (map 0 full bright; the last, Doom's invulnerability map)
 //     TEXTURES u32 n; n x { str name, u32 width, u32 height, pixels in columns (pixel p is
 //              row p % height of column p / height): if paletted, width*height u8 palette
 //              indices then ceil(width*height / 8) opacity bytes (bit p % 8 of byte p / 8,
@@ -38,7 +38,7 @@
 namespace p3d::level::format {
 
 constexpr char kMagic[8] = {'P', '3', 'D', 'B', 'S', 'P', '\r', '\n'};
-constexpr uint32_t kVersion = 8;
+constexpr uint32_t kVersion = 9;  // 9: the invulnerability map after the light maps
 constexpr size_t kHeaderSize = 8 + 4 + 4 + 8 + 8;
 
 constexpr uint32_t tag(const char (&s)[5]) {

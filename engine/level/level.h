@@ -206,8 +206,9 @@ struct Level {
   int default_sector = kNone;
   int sky_texture = kNone;
   std::vector<doom::TextureAnimation> animations;  // textures shown in turn, in place of each other
-  // Paletted levels (WAD art): the palette, and limits::kLightMaps maps of its colours
-  // shaded (map m of index i at [m * kPaletteSize + i], map 0 full bright). Both empty:
+  // Paletted levels (WAD art): the palette, and limits::kStoredMaps maps of its colours
+  // (map m of index i at [m * kPaletteSize + i]): kLightMaps shaded, map 0 full bright,
+  // then Doom's invulnerability map (kInverseMap). Both empty:
   // textures are RGBA, shaded by multiplying.
   std::vector<uint32_t> palette, light_maps;
   bool paletted() const { return !light_maps.empty(); }
@@ -266,6 +267,9 @@ enum ShownFlag : uint8_t { kShownShadow = 1 };  // Doom's partial invisibility (
 
 struct State {
   std::vector<SectorState> sectors;
+  // Doom's fixedcolormap: every wall, flat and thing in this light map (the light
+  // amplification visor's 1, invulnerability's limits::kInverseMap), or kNone.
+  int fixed_light_map = kNone;
   // The things in the world, drawn whatever their order (equal depths: the lower index
   // first). A sprite may reach SpriteFrame::reach sideways from its thing.
   std::vector<ShownThing> things;

@@ -81,7 +81,7 @@ class Reader {
     const uint32_t paletted = in_.u32();
     if (paletted > 1) in_.fail("bad palette flag");
     if (!paletted) return;
-    const size_t colors = limits::kPaletteSize, maps = size_t(limits::kLightMaps) * limits::kPaletteSize;
+    const size_t colors = limits::kPaletteSize, maps = size_t(limits::kStoredMaps) * limits::kPaletteSize;
     if (in_.remaining() < 4 * (colors + maps)) in_.fail("truncated palette");
     level_.palette.resize(colors);
     for (uint32_t& c : level_.palette) c = in_.u32();

@@ -249,6 +249,7 @@ void World::show_line(size_t l) const {
 
 void World::show() const {
   stale_ = false;
+  state_.fixed_light_map = player_.fixed_colormap ? player_.fixed_colormap : level::kNone;
   for (size_t i = 0; i < map_.sectors.size() && i < state_.sectors.size(); ++i) {
     const Sector& s = map_.sectors[i];
     level::SectorState& out = state_.sectors[i];

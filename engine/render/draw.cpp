@@ -392,7 +392,7 @@ void Canvas::wall_span(int x, int y0, int y1, const Part& part, const WallHit& h
   auto reduce = [&](int64_t v) { return tex.pow2_height ? v & (period - 1) : level::floor_mod(v, period); };
   const int64_t step = reduce(round_to_int(inv_scale * kFix));
   const int64_t v = reduce(round_to_int(v0 * kFix) + int64_t(y0) * step);
-  const int map = wall_light_map(light_start(part.light, w.contrast), hit.depth);
+  const int map = fixed_or(wall_light_map(light_start(part.light, w.contrast), hit.depth));
   if (indexed_)
     return wrapped_column(index_pixel(x, y0), index_pitch_, y1 - y0, v, step, period,
                           IndexedColumn{tex.index_column(u), level_->light_indices.data() + size_t(map) * limits::kPaletteSize});
@@ -420,7 +420,7 @@ void Canvas::draw_masked(int x, const Step& m) {
   const double v0 = anchor - view_->eye + side.y_offset + level_->part_y(side, level::kMiddlePart) +
                     (0.5 - view_->half_h) * inv_scale;
   const int light = side.light != kNone ? side.light : s.light;
-  const int map = wall_light_map(light_start(light, w.contrast), m.hit.depth);
+  const int map = fixed_or(wall_light_map(light_start(light, w.contrast), m.hit.depth));
   layer_column(x, m.top, m.bottom, tex, tex.wrap_u(u), round_to_int(v0 * kFix), round_to_int(inv_scale * kFix), map,
                masked_pixels_);
 }
@@ -477,6 +477,14 @@ bool Canvas::layer_column(int x, int top, int bottom, const level::Texture& tex,
   return drew;
 }
 
+// The light map a pixel takes: `map`, unless the player's powers fix one for every
+// pixel (Doom's fixedcolormap); RGBA art has no invulnerability map and stays bright.
+int Canvas::fixed_or(int map) const {
+  const int fixed = state_->fixed_light_map;
+  if (fixed < 0) return map;
+  return level_->paletted() || fixed < limits::kLightMaps ? fixed : 0;
+}
+
 // A texel under a light map: looked up in the level's light maps when paletted, else shaded.
 uint32_t Canvas::lit(const level::Texture& tex, size_t texel, int light_map) const {
   return level_->paletted() ? level_->light_maps[size_t(light_map) * limits::kPaletteSize + tex.indices[texel]]
@@ -520,7 +528,7 @@ void Canvas::add_sprite(uint32_t thing) {
   s.x1 = std::min(x1_ - 1, int(ceil_to_int(view_->half_w + (s.left + tex.width) * scale)) + 1);
   if (s.x0 > s.x1) return;
   const int light = t.sector != kNone ? state_->sectors[size_t(t.sector)].light : 255;
-  s.light_map = frame.bright ? 0 : wall_light_map(light_start(light, 0), depth);
+  s.light_map = fixed_or(frame.bright ? 0 : wall_light_map(light_start(light, 0), depth));
   s.fuzz = (t.flags & level::kShownShadow) != 0;
   sprites_.push_back(s);
 }
@@ -630,7 +638,7 @@ Canvas::PlaneRow Canvas::plane_row(const PlaneKey& key, int y) const {
   const Vec2 p = view_->pos * kFix, r0 = view_->ray0 * kFix, dr = view_->right * kFix;
   const double depth = std::fabs(h_rel) * view_->d * std::fabs(row_inv_[y]);  // |h| d / |dy|
   return {uint64_t(to_int(p.x + r0.x * k)), uint64_t(to_int(dr.x * k)), uint64_t(to_int(-p.y - r0.y * k)),
-          uint64_t(to_int(-dr.y * k)), flat_light_map(key.light, depth)};
+          uint64_t(to_int(-dr.y * k)), fixed_or(flat_light_map(key.light, depth))};
 }
 
 // A floor or ceiling seen in rows [y0, y1) of column x: filed as a plane run, drawn by

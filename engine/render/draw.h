@@ -164,6 +164,7 @@ class Canvas {
   int near_sector(const level::Wall& w, const WallHit& hit, int x) const;
   double texture_u(const WallHit& hit, int part) const;
   uint32_t lit(const level::Texture& tex, size_t texel, int light_map) const;
+  int fixed_or(int map) const;
   uint32_t* pixel(int x, int y) { return frame_->pixels.data() + size_t(y) * view_->width + x; }
   uint8_t* index_pixel(int x, int y) { return indices_.data() + size_t(y) * index_pitch_ + size_t(x - x0_); }
   void count(int x, int y0, int y1);

@@ -20,8 +20,11 @@ constexpr size_t kMaxFileBytes = size_t{1} << 31;  // any input file: 2 GiB
 constexpr size_t kMaxWalls = size_t{1} << 21;
 inline const char* too_many_walls() { return "more walls than a level may have (2,097,152)"; }
 
-// Paletted art (WAD levels): a 256-colour palette and Doom's 32 light maps over it.
+// Paletted art (WAD levels): a 256-colour palette and Doom's 32 light maps over it,
+// stored with Doom's invulnerability map after them (COLORMAP's 33rd).
 constexpr int kPaletteSize = 256;
 constexpr int kLightMaps = 32;
+constexpr int kInverseMap = kLightMaps;
+constexpr int kStoredMaps = kLightMaps + 1;
 
 }  // namespace p3d::limits

@@ -72,8 +72,8 @@ class Importer {
   // ---- art -------------------------------------------------------------------
   void make_light_maps() {
     src_.palette = art_.palette();
-    src_.light_maps.resize(size_t(limits::kLightMaps) * limits::kPaletteSize);
-    for (int m = 0; m < limits::kLightMaps; ++m)
+    src_.light_maps.resize(size_t(limits::kStoredMaps) * limits::kPaletteSize);
+    for (int m = 0; m < limits::kStoredMaps; ++m)
       for (int i = 0; i < limits::kPaletteSize; ++i)
         src_.light_maps[size_t(m) * limits::kPaletteSize + i] =
             art_.palette()[art_.colormap()[size_t(m) * kPaletteColors + i]];

@@ -1,9 +1,10 @@
 // A demo's bytes (checksum made right), replayed on a small level when accepted.
+#include <cmath>
 #include <cstring>
 
 #include "engine/bsp/build.h"
 #include "engine/map/source.h"
-#include "engine/sim/demo.h"
+#include "engine/play/demo.h"
 #include "engine/util/bytes.h"
 #include "tests/fuzz/harness.h"
 
@@ -16,11 +17,25 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const uint64_t checksum = fnv1a64(std::span(bytes).first(size - 8));
   std::memcpy(bytes.data() + size - 8, &checksum, 8);
   try {
-    const sim::Demo demo = sim::decode_demo(bytes, "fuzz.demo");
-    sim::World world(level, demo.skill);
-    sim::Player p = world.spawn_at(demo.start, demo.angle);
-    p.keys = demo.keys;
-    for (size_t t = 0; t < demo.tics.size() && t < 700; ++t) world.tick(p, demo.tics[t]);
+    const play::Demo demo = play::decode_demo(bytes, "fuzz.demo");
+    play::GameOptions options;
+    options.skill = demo.skill;
+    options.fast = demo.fast;
+    options.respawn = demo.respawn;
+    options.no_monsters = demo.no_monsters;
+    options.map = 0;
+    play::World world(play::map_from_level(level), level, options, play::Random{});
+    if (demo.custom_start) {  // decode_demo keeps the start within Doom's coordinates
+      const double turns = std::fmod(demo.angle, 360.0) / 360.0 + 1;
+      world.place_player(play::Fixed(std::llround(demo.start.x * play::kFracUnit)),
+                         play::Fixed(std::llround(demo.start.y * play::kFracUnit)),
+                         play::Angle(uint64_t(std::llround(turns * 4294967296.0))));
+    }
+    world.player().cards = demo.keys;
+    for (size_t t = 0; t < demo.tics.size() && t < 700; ++t) {
+      if (demo.tics[t].cheats) world.apply_cheats(demo.tics[t].cheats);
+      world.tick(demo.tics[t].cmd);
+    }
   } catch (const Error&) {
   }
   return 0;

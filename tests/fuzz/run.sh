@@ -18,7 +18,7 @@ seed() {  # seed TARGET FILES...
 }
 seed map tests/fuzz/seeds/room.map tests/bad/*.map
 seed grid tests/fuzz/seeds/room.grid tests/bad/*.grid
-seed demo maps/*.demo
+seed demo tests/fuzz/seeds/walk.demo maps/*.demo
 seed cameras maps/*.cameras maps/*.path maps/*.route
 seed png maps/textures/lantern.png maps/textures/lamp.png maps/textures/hazard.png tests/bad/fake.png
 seed wad tests/fuzz/seeds/map01.wad

@@ -131,8 +131,8 @@ TEST_F(LevelIo, RejectsDamagedFiles) {
   EXPECT_EQ(decode_error(text), "x.bsp: not a compiled level (bad magic; compile maps with mapc)");
 
   std::vector<uint8_t> version(good);
-  version[8] = 9;
-  EXPECT_EQ(decode_error(version), "x.bsp: compiled level version 9 is not supported (expected " +
+  version[8] = 10;
+  EXPECT_EQ(decode_error(version), "x.bsp: compiled level version 10 is not supported (expected " +
                                        std::to_string(format::kVersion) + "; recompile with mapc)");
 
   std::vector<uint8_t> truncated(good.begin(), good.begin() + good.size() / 2);
@@ -330,7 +330,7 @@ TEST_F(LevelIo, PalettedLevelsAndDoomDataRoundTrip) {
   Level l = *level_;
   l.palette.resize(limits::kPaletteSize);
   for (int i = 0; i < limits::kPaletteSize; ++i) l.palette[size_t(i)] = image::rgba(i, 255 - i, i / 2);
-  l.light_maps.resize(size_t(limits::kLightMaps) * limits::kPaletteSize);
+  l.light_maps.resize(size_t(limits::kStoredMaps) * limits::kPaletteSize);
   for (size_t i = 0; i < l.light_maps.size(); ++i) l.light_maps[i] = l.palette[(i * 7) % limits::kPaletteSize];
   for (Texture& t : l.textures) {
     std::vector<uint32_t> rgba(size_t(t.width) * t.height);

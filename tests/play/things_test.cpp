@@ -10,8 +10,8 @@
 #include "engine/bsp/load.h"
 #include "engine/play/info.h"
 #include "engine/play/things.h"
+#include "engine/play/world.h"
 #include "engine/render/renderer.h"
-#include "engine/sim/sim.h"
 #include "tests/support/support.h"
 
 namespace p3d::play {
@@ -67,12 +67,13 @@ TEST(ThingClocks, PlacedThingsShowTheirIdleLoopsFrames) {
 
 TEST(ThingClocks, RenderersAgreeOnAnimatedThingsAndReplaysRepeat) {
   const level::Level& level = map01();
-  sim::World a(level), b(level);
-  sim::Player pa = a.spawn(), pb = b.spawn();
+  const wad::Stack wads = bsp::read_wads({test::freedoom_path("freedoom2.wad")});
+  World a(map_from_wads(wads, "MAP01", level), level, GameOptions{}, Random{});
+  World b(map_from_wads(wads, "MAP01", level), level, GameOptions{}, Random{});
   Rng rng(5);
   for (int tic = 0; tic < 70; ++tic) {
-    a.tick(pa, {});
-    b.tick(pb, {});
+    a.tick({});
+    b.tick({});
     ASSERT_EQ(a.state().things.size(), b.state().things.size()) << "tic " << tic;
     for (size_t k = 0; k < a.state().things.size(); ++k)
       ASSERT_EQ(a.state().things[k].frame, b.state().things[k].frame) << "tic " << tic << " thing " << k;

@@ -10,8 +10,8 @@
 #include "engine/bsp/check.h"
 #include "engine/bsp/load.h"
 #include "engine/image/image.h"
+#include "engine/play/world.h"
 #include "engine/render/renderer.h"
-#include "engine/sim/sim.h"
 #include "engine/util/error.h"
 #include "tests/support/support.h"
 #include "tests/support/wad_writer.h"
@@ -597,13 +597,12 @@ TEST(Import, AnimatedFlatsAndWallsCycleAsDoomCyclesThem) {
   EXPECT_EQ(nukage.phase, 4 % 3) << "NUKAGE1 is the fifth flat";
   EXPECT_EQ(nukage.tics, 8);
 
-  sim::World world(level);
-  sim::Player player = world.spawn();
+  play::World world(play::map_from_wads(stack_of(m), "MAP01", level), level, play::GameOptions{}, play::Random{});
   const int nukage2 = nukage.frames[1];
   EXPECT_EQ(world.state().shown(nukage2), nukage2) << "before the first tic, every flat shows itself";
   std::string shown;  // the flat shown for NUKAGE2 after each tic
   for (int tic = 0; tic < 32; ++tic) {
-    world.tick(player, {});
+    world.tick({});
     if (tic % 8 == 0) shown += level.textures[size_t(world.state().shown(nukage2))].name + " ";
   }
   EXPECT_EQ(shown, "NUKAGE3 NUKAGE1 NUKAGE2 NUKAGE3 ");
