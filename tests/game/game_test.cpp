@@ -6,6 +6,7 @@
 #include <set>
 
 #include "engine/map/generate.h"
+#include "engine/render/camera_file.h"
 #include "engine/wad/art.h"
 #include "engine/util/file.h"
 #include "game/autopilot.h"
@@ -574,6 +575,20 @@ TEST(Session, TheLastMapStartsAgain) {
   Session s(test::source_dir() / "maps/outpost.map");
   EXPECT_FALSE(s.enter_next_map()) << "a hand-made level has no next map";
   EXPECT_EQ(s.pose().pos, s.level().player_start);
+}
+
+// The walk through freedoom2 MAP01 recorded as a Doom demo gives the bytes that Chocolate
+// Doom was seen to play in sync (tests/golden/doom_demos, checked in DemoSync).
+TEST(Session, RecordsTheDoomDemoChocolateDoomPlaysInSync) {
+  Session s(bsp::LevelSource{{}, {test::freedoom_path("freedoom2.wad")}, "MAP01"});
+  s.start_recording(true);
+  Autopilot pilot(route_from_cameras(render::read_camera_list(test::source_dir() / "maps/freedoom2_map01.route")));
+  while (!pilot.done() && s.exited() == play::ExitKind::kNone) s.tic(pilot.next(s.pose().pos, s.pose().angle));
+  const auto dir = test::temp_dir("record_lmp");
+  const auto lmp = dir / "walk.lmp";
+  EXPECT_EQ(s.encode_recording(lmp),
+            read_file_bytes(test::source_dir() / "tests/golden/doom_demos/recorded_freedoom2_map01.lmp"));
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Autopilot, UseWaypointsOpenDoors) {

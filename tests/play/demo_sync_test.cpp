@@ -14,6 +14,7 @@
 #include "engine/bsp/load.h"
 #include "engine/play/doom_demo.h"
 #include "engine/play/world.h"
+#include "engine/util/file.h"
 #include "tests/support/support.h"
 
 namespace p3d::play {
@@ -71,12 +72,13 @@ struct Sync {
   size_t tics_in_sync = 0, traced = 0, demo_tics = 0;
 };
 
-// Plays DEMOn of the WAD beside its trace; returns how many tics from the first stay in sync.
-Sync sync_of(const std::string& wad_file, int demo_number) {
+// Plays a demo of the WAD beside Chocolate Doom's trace of it (tests/golden/doom_demos/
+// <stem>.trace); returns how many tics from the first stay in sync.
+Sync sync_of(const std::string& wad_file, std::span<const uint8_t> demo_bytes, const std::string& lump,
+             const std::string& stem) {
   const auto wad = test::freedoom_path(wad_file);
   const wad::Stack wads = bsp::read_wads({wad});
-  const std::string lump = "DEMO" + std::to_string(demo_number);
-  const DoomDemo demo = decode_doom_demo(wads.find(lump)->bytes, lump);
+  const DoomDemo demo = decode_doom_demo(demo_bytes, lump);
   const bool commercial = wads.map("MAP01").has_value();
   const std::string map_name = demo.map_name(commercial);
   const level::Level level = bsp::open_level(bsp::LevelSource{{}, {wad}, map_name}).level;
@@ -91,7 +93,6 @@ Sync sync_of(const std::string& wad_file, int demo_number) {
   options.map = demo.map;
   World world(map_from_wads(wads, map_name, level), level, options, Random{});
 
-  const std::string stem = wad_file.substr(0, wad_file.find('.')) + "_demo" + std::to_string(demo_number);
   const std::vector<TraceTic> trace = read_trace(test::source_dir() / "tests/golden/doom_demos" / (stem + ".trace"));
   std::ofstream dump;
   if (const char* d = std::getenv("P3D_SYNC_DUMP")) dump.open(std::filesystem::path(d) / (stem + ".ours"));
@@ -116,6 +117,14 @@ Sync sync_of(const std::string& wad_file, int demo_number) {
   return s;
 }
 
+// DEMOn of the WAD beside its trace.
+Sync sync_of(const std::string& wad_file, int demo_number) {
+  const wad::Stack wads = bsp::read_wads({test::freedoom_path(wad_file)});
+  const std::string lump = "DEMO" + std::to_string(demo_number);
+  return sync_of(wad_file, wads.find(lump)->bytes, lump,
+                 wad_file.substr(0, wad_file.find('.')) + "_demo" + std::to_string(demo_number));
+}
+
 TEST(DemoSync, FreedoomsEightDemosPlayInSyncWithChocolateDoomToTheirLastTic) {
   for (const char* wad : {"freedoom1.wad", "freedoom2.wad"})
     for (int demo = 1; demo <= 4; ++demo) {
@@ -123,6 +132,16 @@ TEST(DemoSync, FreedoomsEightDemosPlayInSyncWithChocolateDoomToTheirLastTic) {
       EXPECT_EQ(s.traced, s.demo_tics) << wad << " DEMO" << demo << ": the trace covers the whole demo";
       EXPECT_EQ(s.tics_in_sync, s.demo_tics) << wad << " DEMO" << demo;
     }
+}
+
+// Our --record of the freedoom2 MAP01 walk (game_test checks the game still records
+// these bytes), as Chocolate Doom played it: in sync to the exit.
+TEST(DemoSync, OurRecordedDemoPlaysInChocolateDoomAsInOurs) {
+  const std::vector<uint8_t> bytes =
+      read_file_bytes(test::source_dir() / "tests/golden/doom_demos/recorded_freedoom2_map01.lmp");
+  const Sync s = sync_of("freedoom2.wad", bytes, "recorded_freedoom2_map01.lmp", "recorded_freedoom2_map01");
+  EXPECT_EQ(s.traced, s.demo_tics);
+  EXPECT_EQ(s.tics_in_sync, s.demo_tics);
 }
 
 }  // namespace
