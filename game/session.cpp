@@ -155,7 +155,9 @@ bool Session::enter_next_map() {
   carried.items = 0;
   random_ = world_->random();
   const bool dead = player().state != play::PlayerState::kLive;
+  const int cheats = player().cheats;  // god mode and noclip go on, as Doom's player_t keeps them
   load(dead ? nullptr : &carried);
+  if (!dead) world_->player().cheats = cheats;
   if (!select_renderer(renderer_name_)) select_renderer("bsp");
   say(next.empty() ? why + ": starting it again" : "entered " + next);
   return !next.empty();

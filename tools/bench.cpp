@@ -24,6 +24,8 @@
 
 #include "engine/bsp/build.h"
 #include "engine/bsp/load.h"
+#include "engine/play/demo.h"
+#include "engine/play/world.h"
 #include "engine/util/rng.h"
 #include "engine/util/thread_pool.h"
 #include <stb_image_write.h>
@@ -674,6 +676,10 @@ std::string demo_map(const wad::Lump& demo, bool numbered_maps) {
 
 // Crispy Doom's render-only ms/frame on a demo, by tools/peers/doom_render_ms.py; 0 when it cannot run.
 double crispy_ms(const Settings& s, const std::filesystem::path& iwad, const std::string& demo) {
+  static std::map<std::string, double> measured;  // each demo once per run, for both tables
+  const std::string key = iwad.string() + ":" + demo;
+  if (const auto it = measured.find(key); it != measured.end()) return it->second;
+  double& ms = measured[key];
   const auto script = std::filesystem::path(s.source_dir) / "tools" / "peers" / "doom_render_ms.py";
   const std::string command = "python3 '" + script.string() + "' --port crispy --iwad '" + iwad.string() + "' --demo " +
                               demo + " --res 640 --reps " + std::to_string(s.peer_reps) + " 2>/dev/null";
@@ -684,12 +690,49 @@ double crispy_ms(const Settings& s, const std::filesystem::path& iwad, const std
   while (std::fgets(buffer, sizeof buffer, pipe)) out += buffer;
   if (::pclose(pipe) != 0) return 0;
   const size_t at = out.find("render_ms_per_frame=");
-  return at == std::string::npos ? 0 : std::atof(out.c_str() + at + 20);
+  return ms = at == std::string::npos ? 0 : std::atof(out.c_str() + at + 20);
+}
+
+// The demo replayed by Doom's rules (the same path as Crispy's -timedemo, tic for tic),
+// each tic's view rendered as Crispy draws it above its status bar (640x336, 8-bit):
+// the mean ms/frame on one thread and on `cores`, interleaved frame by frame.
+std::pair<double, double> time_demo_views(const wad::Stack& wads, const level::Level& level, const std::string& map,
+                                          const play::DoomDemo& doom, int cores) {
+  play::GameOptions o;
+  o.skill = doom.skill;
+  o.fast = doom.fast, o.respawn = doom.respawn, o.no_monsters = doom.no_monsters;
+  int episode = 0, number = 0;
+  o.commercial = std::sscanf(map.c_str(), "MAP%d", &number) == 1;
+  if (!o.commercial && std::sscanf(map.c_str(), "E%dM%d", &episode, &number) == 2) o.episode = episode;
+  o.map = number;
+  o.ultimate = !o.commercial && wads.map("E4M1").has_value();
+  play::World world(play::map_from_wads(wads, map, level), level, o, play::Random{});
+  const play::Demo demo = play::demo_from_doom(doom, level);
+  auto one = render::make_renderer("bsp", {.threads = 1});
+  auto all = render::make_renderer("bsp", {.threads = cores});
+  render::Frame frame(640, 336);
+  frame.keep_indices = true;
+  double ms1 = 0, msn = 0;
+  for (const play::DemoTic& t : demo.tics) {
+    world.tick(t.cmd);
+    const play::Mobj& mo = *world.player().mo;
+    const render::Camera camera{{play::to_double(mo.x), play::to_double(mo.y)}, play::to_double(world.player().view_z),
+                                double(mo.angle) * (360.0 / 4294967296.0), 90};
+    const level::State& state = world.state();
+    for (auto [r, sum] : {std::pair{one.get(), &ms1}, std::pair{all.get(), &msn}}) {
+      const auto t0 = Clock::now();
+      r->render(level, state, camera, frame);
+      *sum += cli::seconds_since(t0) * 1000;
+    }
+  }
+  const double n = double(std::max<size_t>(1, demo.tics.size()));
+  return {ms1 / n, msn / n};
 }
 
 // For every demo of the IWADs (Freedoom's eight by default), the map it plays: Crispy
-// Doom's render time on the demo beside ours on random cameras inside the map, at
-// 640x400 on one thread and on every core, and ours at 1920x1080.
+// Doom's render time on the demo beside ours on the same views (the demo replayed by
+// Doom's rules); then ours on random cameras inside the map, at 640x400 on one thread
+// and on every core, and at 1920x1080.
 void bench_doom(const Settings& s) {
   const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<std::filesystem::path> iwads;
@@ -700,6 +743,36 @@ void bench_doom(const Settings& s) {
         iwads.push_back(std::filesystem::path("/usr/share/games/doom") / name);
   if (iwads.empty()) return report.print("\n### Beside Crispy Doom: no IWAD (apt-get install freedoom, or --iwad)\n");
   const bool crispy = s.peer_reps > 0 && on_path("crispy-doom");
+  report.print("\n### Beside Crispy Doom on the same views: render-only ms/frame along each demo\n\n");
+  report.print("Both engines play the demo (ours by Doom's rules, in sync with Doom) and draw every tic's view, 640x400\n"
+               "hires: Crispy's render-only time (its -timedemo drawn without blit, less the game without drawing), ours\n"
+               "the mean of every tic's view above the status bar (640x336) in Doom's 8-bit screen.\n\n");
+  report.print("| iwad | demo | map | tics | Crispy 640x400 | ours, 1 thread | ÷ Crispy | ours, %d threads | ÷ Crispy |\n"
+               "|---|---|---|---:|---:|---:|---:|---:|---:|\n", cores);
+  std::vector<double> same1, samen;
+  for (const auto& iwad : iwads) {
+    const wad::Stack wads = bsp::read_wads({iwad});
+    const bool numbered = wads.map("MAP01").has_value();
+    for (int n = 1; n <= 4; ++n) {
+      const std::string demo = "demo" + std::to_string(n);
+      const wad::Lump* lump = wads.find(demo);
+      if (!lump) continue;
+      const std::string map = demo_map(*lump, numbered);
+      if (!wads.map(map)) continue;
+      const play::DoomDemo doom = play::decode_doom_demo(lump->bytes, demo);
+      const level::Level level = bsp::build_wad_map(wads, map, {}, nullptr);
+      const double peer = crispy ? crispy_ms(s, iwad, demo) : 0;
+      const auto [one, all] = time_demo_views(wads, level, map, doom, cores);
+      if (peer > 0) same1.push_back(one / peer), samen.push_back(all / peer);
+      report.print("| %s | %s | %s | %zu | %s | %s | %s | %s | %s |\n", iwad.filename().c_str(), demo.c_str(), map.c_str(),
+                   doom.tic_count(), peer > 0 ? fixed(peer, 3).c_str() : "n/a", fixed(one, 3).c_str(),
+                   peer > 0 ? fixed(one / peer, 2).c_str() : "n/a", fixed(all, 3).c_str(),
+                   peer > 0 ? fixed(all / peer, 2).c_str() : "n/a");
+    }
+  }
+  report.print("| geomean | | | | | | %s | | %s |\n", same1.empty() ? "n/a" : fixed(geomean(same1), 2).c_str(),
+               samen.empty() ? "n/a" : fixed(geomean(samen), 2).c_str());
+
   report.print("\n### Beside Crispy Doom: render-only ms/frame, things drawn (%d random cameras per map; Crispy on the map's demo)\n\n",
                s.cameras);
   report.print("Ours as Crispy's render-only time counts its own: the frame drawn into Doom's 8-bit screen, before the\n"
