@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "engine/bsp/load.h"
+#include "engine/play/dehacked.h"
 #include "engine/util/doom.h"
 #include "engine/util/error.h"
 #include "game/sound_mixer.h"
@@ -72,6 +73,7 @@ void Session::start_world(const play::Inventory* carried) {
     if (!o.commercial && std::sscanf(map_name.c_str(), "E%dM%d", &episode, &number) == 2) o.episode = episode;
     o.map = number;
     o.ultimate = !o.commercial && wads.map("E4M1").has_value();
+    o.texts = play::dehacked_texts(wads);
     map = play::map_from_wads(wads, map_name, *level_);
   } else {
     map = play::map_from_level(*level_);

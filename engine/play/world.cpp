@@ -121,6 +121,7 @@ void World::start_sector_sound(const Sector* sector, Sound sound) {
 void World::stop_sound(const Mobj*) {}  // sounds are the listener's business
 
 void World::say(std::string message) {
+  if (const auto it = options_.texts.find(message); it != options_.texts.end()) message = it->second;
   player_.message = message;
   messages_.push_back(std::move(message));
 }

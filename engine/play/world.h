@@ -21,6 +21,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -59,6 +60,7 @@ struct GameOptions {
   bool commercial = true;   // Doom II's rules (MAPxx); else Doom's (ExMy)
   bool ultimate = true;     // the fourth episode's rules (Ultimate Doom, Freedoom Phase 1)
   int episode = 1, map = 1;
+  std::map<std::string, std::string> texts;  // Doom's messages as the WAD rewords them (play/dehacked.h)
 };
 
 // One tic of input, Doom's ticcmd_t.

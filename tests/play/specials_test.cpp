@@ -933,6 +933,60 @@ TEST(Weapons, BulletsSpreadAsDoomsDo) {
 
 // Random walks that press use, on the door and lift maps: replaying the recorded
 // commands gives the same player and the same sectors at every tic.
+// Doom's boss maps: when the last of the bosses dies, the map's tagged sectors move
+// (A_BossDeath): MAP07's mancubi lower the tag-666 floors, its arachnotrons raise the
+// tag-667 ones; E1M8's barons lower tag 666. Killed here by the player, one by one.
+std::map<int, Fixed> floors_tagged(const World& w, int tag) {
+  std::map<int, Fixed> out;
+  for (const Sector& s : w.map().sectors)
+    if (s.tag == tag) out[s.index] = s.floor_height;
+  return out;
+}
+
+void kill_all(World& w, ThingType type) {
+  for (const Mobj* m : w.things())
+    if (m->type == type && m->health > 0) w.damage_mobj(const_cast<Mobj*>(m), nullptr, w.player().mo, 10000);
+}
+
+TEST(Bosses, TheLastBossOfTheMapMovesItsTaggedSectors) {
+  struct Case {
+    const char* wad;
+    const char* map;
+    ThingType boss;
+    int tag;
+    bool down;
+  };
+  for (const Case& c : {Case{"freedoom2.wad", "MAP07", ThingType::kFatso, 666, true},
+                        Case{"freedoom2.wad", "MAP07", ThingType::kBaby, 667, false},
+                        Case{"freedoom1.wad", "E1M8", ThingType::kBruiser, 666, true}}) {
+    const wad::Stack wads = bsp::read_wads({test::freedoom_path(c.wad)});
+    const level::Level level = bsp::build_wad_map(wads, c.map, {}, nullptr);
+    GameOptions o;
+    o.commercial = c.map[0] == 'M';
+    o.ultimate = !o.commercial;
+    std::sscanf(c.map, o.commercial ? "MAP%d" : "E%*dM%d", &o.map);
+    o.episode = 1;
+    World w(map_from_wads(wads, c.map, level), level, o, Random{});
+    w.apply_cheats(kToggleGod);
+    const std::map<int, Fixed> before = floors_tagged(w, c.tag);
+    ASSERT_FALSE(before.empty()) << c.map << " has sectors tagged " << c.tag;
+    const auto bosses = [&] {
+      const std::vector<const Mobj*> things = w.things();
+      return std::count_if(things.begin(), things.end(), [&](const Mobj* m) { return m->type == c.boss; });
+    };
+    ASSERT_GT(bosses(), 0) << c.map;
+    for (int t = 0; t < 10; ++t) w.tick({});
+    EXPECT_EQ(floors_tagged(w, c.tag), before) << c.map << ": nothing moves while a boss lives";
+    kill_all(w, c.boss);
+    for (int t = 0; t < 35 * 10; ++t) w.tick({});
+    const std::map<int, Fixed> after = floors_tagged(w, c.tag);
+    int moved = 0;
+    for (const auto& [sector, height] : before)
+      moved += c.down ? after.at(sector) < height : after.at(sector) > height;
+    EXPECT_GT(moved, 0) << c.map << ": the tag-" << c.tag << " floors " << (c.down ? "lower" : "rise");
+  }
+}
+
 TEST(Demos, ReplayIsExactWithDoorsAndLifts) {
   for (const TestMap& m : {door_map(1), lift_map()}) {
     Rng rng(5);

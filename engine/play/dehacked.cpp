@@ -1,0 +1,129 @@
+#include "engine/play/dehacked.h"
+
+#include <array>
+#include <utility>
+
+namespace p3d::play {
+
+namespace {
+
+// Doom's messages the rules say, by their BEX mnemonic (Doom's d_englsh.h).
+constexpr std::pair<const char*, const char*> kMessages[] = {
+    {"GOTARMOR", "Picked up the armor."},
+    {"GOTMEGA", "Picked up the MegaArmor!"},
+    {"GOTHTHBONUS", "Picked up a health bonus."},
+    {"GOTARMBONUS", "Picked up an armor bonus."},
+    {"GOTSTIM", "Picked up a stimpack."},
+    {"GOTMEDINEED", "Picked up a medikit that you REALLY need!"},
+    {"GOTMEDIKIT", "Picked up a medikit."},
+    {"GOTSUPER", "Supercharge!"},
+    {"GOTBLUECARD", "Picked up a blue keycard."},
+    {"GOTYELWCARD", "Picked up a yellow keycard."},
+    {"GOTREDCARD", "Picked up a red keycard."},
+    {"GOTBLUESKUL", "Picked up a blue skull key."},
+    {"GOTYELWSKUL", "Picked up a yellow skull key."},
+    {"GOTREDSKULL", "Picked up a red skull key."},
+    {"GOTINVUL", "Invulnerability!"},
+    {"GOTBERSERK", "Berserk!"},
+    {"GOTINVIS", "Partial Invisibility"},
+    {"GOTSUIT", "Radiation Shielding Suit"},
+    {"GOTMAP", "Computer Area Map"},
+    {"GOTVISOR", "Light Amplification Visor"},
+    {"GOTMSPHERE", "MegaSphere!"},
+    {"GOTCLIP", "Picked up a clip."},
+    {"GOTCLIPBOX", "Picked up a box of bullets."},
+    {"GOTROCKET", "Picked up a rocket."},
+    {"GOTROCKBOX", "Picked up a box of rockets."},
+    {"GOTCELL", "Picked up an energy cell."},
+    {"GOTCELLBOX", "Picked up an energy cell pack."},
+    {"GOTSHELLS", "Picked up 4 shotgun shells."},
+    {"GOTSHELLBOX", "Picked up a box of shotgun shells."},
+    {"GOTBACKPACK", "Picked up a backpack full of ammo!"},
+    {"GOTBFG9000", "You got the BFG9000!  Oh, yes."},
+    {"GOTCHAINGUN", "You got the chaingun!"},
+    {"GOTCHAINSAW", "A chainsaw!  Find some meat!"},
+    {"GOTLAUNCHER", "You got the rocket launcher!"},
+    {"GOTPLASMA", "You got the plasma gun!"},
+    {"GOTSHOTGUN", "You got the shotgun!"},
+    {"GOTSHOTGUN2", "You got the super shotgun!"},
+    {"PD_BLUEK", "You need a blue key to open this door"},
+    {"PD_REDK", "You need a red key to open this door"},
+    {"PD_YELLOWK", "You need a yellow key to open this door"},
+    {"PD_BLUEO", "You need a blue key to activate this object"},
+    {"PD_REDO", "You need a red key to activate this object"},
+    {"PD_YELLOWO", "You need a yellow key to activate this object"},
+    {"STSTR_NCON", "No Clipping Mode ON"},
+    {"STSTR_NCOFF", "No Clipping Mode OFF"},
+    {"STSTR_DQDON", "Degreelessness Mode On"},
+    {"STSTR_DQDOFF", "Degreelessness Mode Off"},
+    {"STSTR_KFAADDED", "Very Happy Ammo Added"},
+};
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
+
+// BEX's escapes: \n a new line (the message line shows the first), \\ a backslash.
+std::string unescape(std::string_view s) {
+  std::string out;
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (s[i] == '\\' && i + 1 < s.size()) {
+      const char next = s[++i];
+      out += next == 'n' ? '\n' : next;
+    } else {
+      out += s[i];
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::map<std::string, std::string> parse_dehacked_texts(std::string_view text) {
+  std::map<std::string, std::string> by_mnemonic;
+  bool in_strings = false;
+  std::string key, value;
+  bool continued = false;
+  for (size_t pos = 0; pos < text.size();) {
+    size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view line = trim(text.substr(pos, end - pos));
+    pos = end + 1;
+    if (continued) {  // a value going on after a trailing backslash
+      continued = !line.empty() && line.back() == '\\';
+      value += continued ? line.substr(0, line.size() - 1) : line;
+      if (!continued) by_mnemonic[key] = unescape(value);
+      continue;
+    }
+    if (line.empty() || line[0] == '#') continue;
+    if (line[0] == '[') {
+      in_strings = line.substr(0, 9) == "[STRINGS]";
+      continue;
+    }
+    if (!in_strings) continue;
+    const size_t eq = line.find('=');
+    if (eq == std::string_view::npos) continue;
+    key = std::string(trim(line.substr(0, eq)));
+    const std::string_view rest = trim(line.substr(eq + 1));
+    continued = !rest.empty() && rest.back() == '\\';
+    value = std::string(continued ? rest.substr(0, rest.size() - 1) : rest);
+    if (!continued) by_mnemonic[key] = unescape(value);
+  }
+  std::map<std::string, std::string> texts;
+  for (const auto& [mnemonic, doom] : kMessages)
+    if (const auto it = by_mnemonic.find(mnemonic); it != by_mnemonic.end() && !it->second.empty())
+      texts[doom] = it->second;
+  return texts;
+}
+
+std::map<std::string, std::string> dehacked_texts(const wad::Stack& wads) {
+  // Chocolate Doom loads an IWAD's own DEHACKED (Freedoom's); a PWAD's waits for -dehlump.
+  if (wads.empty() || !wads.wads().front().is_iwad()) return {};
+  const wad::Lump* lump = wads.wads().front().find("DEHACKED");
+  if (!lump) return {};
+  return parse_dehacked_texts({reinterpret_cast<const char*>(lump->bytes.data()), lump->bytes.size()});
+}
+
+}  // namespace p3d::play
