@@ -173,7 +173,7 @@ int main(int argc, char** argv) {
     session.renderer_options = renderer_options;
     session.give_all_keys(all_keys);
     const std::string& map_path = session.name();
-    if (!session.select_renderer(renderer)) throw Error("renderer '" + renderer + "' cannot draw " + map_path);
+    if (!session.select_renderer(renderer, false)) throw Error("renderer '" + renderer + "' cannot draw " + map_path);
     if (demo && demo->level_fingerprint != play::fingerprint(session.level()))
       throw Error(play + ": the demo was recorded on a different level than " + map_path);
 

@@ -31,8 +31,7 @@ const std::vector<std::string>& key_renderers() {
 Session::Session(const bsp::LevelSource& source, int skill, GameFlags flags)
     : source_(source), skill_(skill), flags_(flags) {
   load();
-  select_renderer("bsp");
-  message_tics_ = 0;  // nothing to say at the start
+  select_renderer("bsp", false);
 }
 
 void Session::load(const play::Inventory* carried) {
@@ -160,7 +159,7 @@ bool Session::enter_next_map() {
   const int cheats = player().cheats;  // god mode and noclip go on, as Doom's player_t keeps them
   load(dead ? nullptr : &carried);
   if (!dead) world_->player().cheats = cheats;
-  if (!select_renderer(renderer_name_)) select_renderer("bsp");
+  if (!select_renderer(renderer_name_, false)) select_renderer("bsp", false);
   say(next.empty() ? why + ": starting it again" : "entered " + next);
   return !next.empty();
 }
@@ -175,7 +174,7 @@ render::Camera Session::camera(double alpha) const {
                         fov};
 }
 
-bool Session::select_renderer(const std::string& name) {
+bool Session::select_renderer(const std::string& name, bool announce) {
   auto r = render::make_renderer(name, renderer_options);
   if (!r) {
     say("no renderer '" + name + "'");
@@ -188,7 +187,7 @@ bool Session::select_renderer(const std::string& name) {
   r->prepare(*level_);
   renderer_ = std::move(r);
   renderer_name_ = name;
-  say("renderer: " + name);
+  if (announce) say("renderer: " + name);
   return true;
 }
 
@@ -388,7 +387,7 @@ bool Session::reload() {
   set_keys(cards);
   if (level_->sector_at(keep.pos) != level::kNone) spawn(keep.pos, keep.angle);  // else the ground is gone: the start
   if (watch_) watch_->rebase();
-  if (!select_renderer(renderer_name_)) select_renderer("bsp");
+  if (!select_renderer(renderer_name_, false)) select_renderer("bsp", false);
   say("reloaded " + file_name);
   std::fprintf(stderr, "game: reloaded %s\n", file_name.c_str());
   return true;

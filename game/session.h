@@ -116,8 +116,9 @@ class Session {
   play::Listener listener() const;
 
   // ---- rendering
-  // Switches renderer; false (with a message) if it cannot draw this level.
-  bool select_renderer(const std::string& name);
+  // Switches renderer; false (with a message) if it cannot draw this level. `announce`:
+  // say which renderer now draws (a key pressed), not at the start.
+  bool select_renderer(const std::string& name, bool announce = true);
   render::RendererOptions renderer_options;  // for the renderers select_renderer makes
   const std::string& renderer_name() const { return renderer_name_; }
   const render::RenderStats& render(render::Frame& frame, double alpha);
