@@ -4,7 +4,6 @@
 #include <cstdio>
 
 #include "engine/bsp/load.h"
-#include "engine/play/dehacked.h"
 #include "engine/util/doom.h"
 #include "engine/util/error.h"
 #include "game/sound_mixer.h"
@@ -58,25 +57,19 @@ void Session::load(const play::Inventory* carried) {
 void Session::start_world(const play::Inventory* carried) {
   play::GameOptions o;
   o.skill = skill_;
-  o.fast = flags_.fast;
-  o.respawn = flags_.respawn;
-  o.no_monsters = flags_.no_monsters;
-  o.episode = 1;
   o.map = 0;  // a hand-made level is no boss's map
   std::optional<play::Map> map;
   if (source_.is_wad()) {
     const wad::Stack wads = bsp::read_wads(source_.wads);
     const std::string map_name = bsp::resolve_map_name(wads, source_.map);
-    int episode = 0, number = 0;
-    o.commercial = std::sscanf(map_name.c_str(), "MAP%d", &number) == 1;
-    if (!o.commercial && std::sscanf(map_name.c_str(), "E%dM%d", &episode, &number) == 2) o.episode = episode;
-    o.map = number;
-    o.ultimate = !o.commercial && wads.map("E4M1").has_value();
-    o.texts = play::dehacked_texts(wads);
+    o = play::game_options_for(wads, map_name, skill_);
     map = play::map_from_wads(wads, map_name, *level_);
   } else {
     map = play::map_from_level(*level_);
   }
+  o.fast = flags_.fast;
+  o.respawn = flags_.respawn;
+  o.no_monsters = flags_.no_monsters;
   world_ = std::make_unique<play::World>(std::move(*map), *level_, o, random_, carried);
   if (all_keys_) set_keys(63);
   tics_ = 0;

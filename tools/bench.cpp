@@ -698,14 +698,8 @@ double crispy_ms(const Settings& s, const std::filesystem::path& iwad, const std
 // the mean ms/frame on one thread and on `cores`, interleaved frame by frame.
 std::pair<double, double> time_demo_views(const wad::Stack& wads, const level::Level& level, const std::string& map,
                                           const play::DoomDemo& doom, int cores) {
-  play::GameOptions o;
-  o.skill = doom.skill;
+  play::GameOptions o = play::game_options_for(wads, map, doom.skill);
   o.fast = doom.fast, o.respawn = doom.respawn, o.no_monsters = doom.no_monsters;
-  int episode = 0, number = 0;
-  o.commercial = std::sscanf(map.c_str(), "MAP%d", &number) == 1;
-  if (!o.commercial && std::sscanf(map.c_str(), "E%dM%d", &episode, &number) == 2) o.episode = episode;
-  o.map = number;
-  o.ultimate = !o.commercial && wads.map("E4M1").has_value();
   play::World world(play::map_from_wads(wads, map, level), level, o, play::Random{});
   const play::Demo demo = play::demo_from_doom(doom, level);
   auto one = render::make_renderer("bsp", {.threads = 1});

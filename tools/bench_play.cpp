@@ -32,16 +32,6 @@ std::vector<std::filesystem::path> freedoom_iwads() {
   return out;
 }
 
-play::GameOptions options_for(const wad::Stack& wads, const std::string& map, int skill) {
-  play::GameOptions o;
-  o.skill = skill;
-  int episode = 0, number = 0;
-  o.commercial = std::sscanf(map.c_str(), "MAP%d", &number) == 1;
-  if (!o.commercial && std::sscanf(map.c_str(), "E%dM%d", &episode, &number) == 2) o.episode = episode;
-  o.map = number;
-  o.ultimate = !o.commercial && wads.map("E4M1").has_value();
-  return o;
-}
 
 struct Awake {
   std::string map;
@@ -52,7 +42,7 @@ struct Awake {
 // A map's tics with every monster hunting an invulnerable player who stands still.
 Awake time_awake(const wad::Stack& wads, const std::filesystem::path& iwad, const std::string& map, int skill) {
   const level::Level level = bsp::open_level(bsp::LevelSource{{}, {iwad}, map}).level;
-  play::World world(play::map_from_wads(wads, map, level), level, options_for(wads, map, skill), play::Random{});
+  play::World world(play::map_from_wads(wads, map, level), level, play::game_options_for(wads, map, skill), play::Random{});
   world.apply_cheats(play::kToggleGod);
   Awake a{map, world.wake_monsters(), 0};
   const auto start = Clock::now();
@@ -110,7 +100,7 @@ void bench_play(int skill, const std::string& source_dir) {
       const std::string map = doom.map_name(commercial);
       const level::Level level = bsp::open_level(bsp::LevelSource{{}, {iwad}, map}).level;
       const play::Demo demo = play::demo_from_doom(doom, level);
-      play::GameOptions o = options_for(wads, map, doom.skill);
+      play::GameOptions o = play::game_options_for(wads, map, doom.skill);
       o.fast = doom.fast, o.respawn = doom.respawn, o.no_monsters = doom.no_monsters;
       const std::string stem = iwad.stem().string() + "_demo" + std::to_string(n);
       const auto trace = read_trace(std::filesystem::path(source_dir) / "tests/golden/doom_demos" / (stem + ".trace"));

@@ -25,7 +25,9 @@ Box box_at(Fixed x, Fixed y, Fixed radius) {
 
 // ---- position checks -----------------------------------------------------------
 
-bool World::teleport_move(Mobj* thing, Fixed x, Fixed y) {
+// The start of P_CheckPosition and P_TeleportMove: the thing's box at (x, y), and the
+// floor and ceiling under its centre before the lines it touches lower and raise them.
+void World::start_position_check(Mobj* thing, Fixed x, Fixed y) {
   tm_.thing = thing;
   tm_.flags = thing->flags;
   tm_.x = x;
@@ -37,6 +39,10 @@ bool World::teleport_move(Mobj* thing, Fixed x, Fixed y) {
   tm_.ceiling_z = ss->sector->ceiling_height;
   ++valid_count_;
   tm_.special_hits.clear();
+}
+
+bool World::teleport_move(Mobj* thing, Fixed x, Fixed y) {
+  start_position_check(thing, x, y);
   // Whatever shootable stands there is killed (only by players, except on MAP30).
   auto stomp = [&](Mobj* other) {
     if (!(other->flags & kShootable)) return true;
@@ -65,18 +71,7 @@ bool World::teleport_move(Mobj* thing, Fixed x, Fixed y) {
 }
 
 bool World::check_position(Mobj* thing, Fixed x, Fixed y) {
-  tm_.thing = thing;
-  tm_.flags = thing->flags;
-  tm_.x = x;
-  tm_.y = y;
-  tm_.bbox = box_at(x, y, thing->radius);
-  const Subsector* ss = map_.point_in_subsector(x, y);
-  tm_.ceiling_line = nullptr;
-  // The floor and ceiling under its centre, lowered and raised by the lines it touches.
-  tm_.floor_z = tm_.dropoff_z = ss->sector->floor_height;
-  tm_.ceiling_z = ss->sector->ceiling_height;
-  ++valid_count_;
-  tm_.special_hits.clear();
+  start_position_check(thing, x, y);
   if (tm_.flags & kNoclip) return true;
 
   auto check_thing = [&](Mobj* other) {

@@ -4,7 +4,9 @@
 #include "engine/play/world.h"
 
 #include <algorithm>
+#include <cstdio>
 
+#include "engine/play/dehacked.h"
 #include "engine/util/doom.h"
 
 namespace p3d::play {
@@ -25,6 +27,18 @@ bool doom2_only(int editor_number) {
 }
 
 }  // namespace
+
+GameOptions game_options_for(const wad::Stack& wads, const std::string& map_name, int skill) {
+  GameOptions o;
+  o.skill = skill;
+  int episode = 0, number = 0;
+  o.commercial = std::sscanf(map_name.c_str(), "MAP%d", &number) == 1;
+  if (!o.commercial && std::sscanf(map_name.c_str(), "E%dM%d", &episode, &number) == 2) o.episode = episode;
+  o.map = number;
+  o.ultimate = !o.commercial && wads.map("E4M1").has_value();
+  o.texts = dehacked_texts(wads);
+  return o;
+}
 
 World::World(Map map, const level::Level& level, const GameOptions& options, Random random, const Inventory* carried)
     : map_(std::move(map)), level_(level), options_(options), random_(random) {

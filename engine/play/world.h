@@ -234,6 +234,11 @@ constexpr uint64_t kSectorOrigin = uint64_t(1) << 40;
 
 enum class ExitKind : uint8_t { kNone, kNormal, kSecret };
 
+// Doom's game for a map of a WAD stack: Doom II's rules for MAPxx, Doom's (with the
+// fourth episode's when the WADs have E4M1) for ExMy, the map's numbers, the IWAD's
+// DEHACKED wording of the messages.
+GameOptions game_options_for(const wad::Stack& wads, const std::string& map_name, int skill);
+
 class World {
  public:
   // The level at its start (Doom's P_SetupLevel): things spawned in THINGS order,
@@ -346,6 +351,7 @@ class World {
   int block_y(Fixed y) const { return (y - map_.blockmap.origin_y) >> kMapBlockShift; }
 
   // ---- move.cpp (p_map.c)
+  void start_position_check(Mobj* thing, Fixed x, Fixed y);
   bool check_position(Mobj* thing, Fixed x, Fixed y);
   bool try_move(Mobj* thing, Fixed x, Fixed y);
   bool teleport_move(Mobj* thing, Fixed x, Fixed y);

@@ -82,15 +82,10 @@ Sync sync_of(const std::string& wad_file, std::span<const uint8_t> demo_bytes, c
   const bool commercial = wads.map("MAP01").has_value();
   const std::string map_name = demo.map_name(commercial);
   const level::Level level = bsp::open_level(bsp::LevelSource{{}, {wad}, map_name}).level;
-  GameOptions options;
-  options.skill = demo.skill;
+  GameOptions options = game_options_for(wads, map_name, demo.skill);
   options.fast = demo.fast;
   options.respawn = demo.respawn;
   options.no_monsters = demo.no_monsters;
-  options.commercial = commercial;
-  options.ultimate = !commercial && wads.map("E4M1").has_value();
-  options.episode = demo.episode;
-  options.map = demo.map;
   World world(map_from_wads(wads, map_name, level), level, options, Random{});
 
   const std::vector<TraceTic> trace = read_trace(test::source_dir() / "tests/golden/doom_demos" / (stem + ".trace"));

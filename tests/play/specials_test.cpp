@@ -961,12 +961,7 @@ TEST(Bosses, TheLastBossOfTheMapMovesItsTaggedSectors) {
                         Case{"freedoom1.wad", "E1M8", ThingType::kBruiser, 666, true}}) {
     const wad::Stack wads = bsp::read_wads({test::freedoom_path(c.wad)});
     const level::Level level = bsp::build_wad_map(wads, c.map, {}, nullptr);
-    GameOptions o;
-    o.commercial = c.map[0] == 'M';
-    o.ultimate = !o.commercial;
-    std::sscanf(c.map, o.commercial ? "MAP%d" : "E%*dM%d", &o.map);
-    o.episode = 1;
-    World w(map_from_wads(wads, c.map, level), level, o, Random{});
+    World w(map_from_wads(wads, c.map, level), level, game_options_for(wads, c.map, 3), Random{});
     w.apply_cheats(kToggleGod);
     const std::map<int, Fixed> before = floors_tagged(w, c.tag);
     ASSERT_FALSE(before.empty()) << c.map << " has sectors tagged " << c.tag;

@@ -190,22 +190,13 @@ struct FreedoomMap {
   std::string iwad, name;
 };
 
-GameOptions options_for(const wad::Stack& wads, const std::string& name) {
-  GameOptions o;
-  int episode = 0, number = 0;
-  o.commercial = std::sscanf(name.c_str(), "MAP%d", &number) == 1;
-  if (!o.commercial && std::sscanf(name.c_str(), "E%dM%d", &episode, &number) == 2) o.episode = episode;
-  o.map = number;
-  o.ultimate = !o.commercial && wads.map("E4M1").has_value();
-  return o;
-}
 
 // A Freedoom map as the game plays it.
 struct Freedoom {
   explicit Freedoom(const FreedoomMap& m)
       : wads(bsp::read_wads({test::freedoom_path(m.iwad)})),
         level(bsp::build_wad_map(wads, m.name, {}, nullptr)),
-        world(map_from_wads(wads, m.name, level), level, options_for(wads, m.name), Random{}) {}
+        world(map_from_wads(wads, m.name, level), level, game_options_for(wads, m.name, 3), Random{}) {}
   wad::Stack wads;
   level::Level level;
   World world;
@@ -745,7 +736,7 @@ TEST(Demo, AFreedoomDemoReplaysByteForByte) {
   source.wads = {path};
   source.map = map_name;
   const level::Level level = bsp::open_level(source).level;
-  GameOptions options = options_for(wads, map_name);
+  GameOptions options = game_options_for(wads, map_name, 3);
   options.skill = demo.skill;
   options.fast = demo.fast;
   options.respawn = demo.respawn;
