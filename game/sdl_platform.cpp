@@ -191,7 +191,7 @@ class Window {
     for (const Session::PlacedSound& s : sounds) session_.sound_clip(s.sound);  // decoded outside the lock
     SDL_LockAudioDevice(audio_);
     for (const Session::PlacedSound& s : sounds) mixer_->start(s.sound, s.origin, s.at, listener);
-    mixer_->update(listener);
+    mixer_->update(listener, [&](uint64_t origin) { return session_.sound_origin(origin); });
     SDL_UnlockAudioDevice(audio_);
   }
 

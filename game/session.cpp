@@ -293,6 +293,17 @@ const play::SoundClip* Session::sound_clip(play::Sound sound) {
 
 play::Listener Session::listener() const { return listener_at(pose_.pos, pose_.angle); }
 
+std::optional<geom::Vec2> Session::sound_origin(uint64_t origin) const {
+  if (origin >= play::kSectorOrigin) {
+    const size_t sector = size_t(origin - play::kSectorOrigin);
+    if (sector >= world_->map().sectors.size()) return std::nullopt;
+    const play::Sector& s = world_->map().sectors[sector];
+    return geom::Vec2(play::to_double(s.sound_x), play::to_double(s.sound_y));
+  }
+  if (const play::Mobj* mo = world_->thing(uint32_t(origin))) return geom::Vec2(play::to_double(mo->x), play::to_double(mo->y));
+  return std::nullopt;
+}
+
 void Session::say(const std::string& text) {
   message_ = text;
   message_tics_ = 4 * kTicRate;  // Doom's HU_MSGTIMEOUT

@@ -114,6 +114,9 @@ class Session {
   const play::SoundClip* sound_clip(play::Sound sound);
   // Where the player hears from.
   play::Listener listener() const;
+  // Where a sound's maker stands now (a sector's sound origin, or a thing), or nullopt
+  // once the thing is gone.
+  std::optional<geom::Vec2> sound_origin(uint64_t origin) const;
 
   // ---- rendering
   // Switches renderer; false (with a message) if it cannot draw this level. `announce`:

@@ -48,10 +48,19 @@ bool SoundMixer::start(play::Sound sound, uint64_t origin, std::optional<geom::V
   return true;
 }
 
-void SoundMixer::update(const play::Listener& listener) {
+void SoundMixer::update(const play::Listener& listener, const Whereabouts& where) {
   for (int c = 0; c < play::Channels::kCount; ++c) {
     Voice& v = voices_[size_t(c)];
     if (!channels_[c].busy()) continue;
+    if (where && v.at && channels_[c].origin != play::Channels::kNoOrigin) {
+      const std::optional<geom::Vec2> now = where(channels_[c].origin);
+      if (!now) {  // its thing is gone
+        channels_.stop(c);
+        v = {};
+        continue;
+      }
+      v.at = now;
+    }
     const std::optional<play::Heard> heard = v.clip && (v.position >> 32) < v.clip->samples.size()
                                                  ? place(v, listener)
                                                  : std::nullopt;

@@ -25,8 +25,12 @@ class SoundMixer {
   // tells sound makers apart (each makes one sound at a time). False when it is not
   // heard (too far, no channel, no clip).
   bool start(play::Sound sound, uint64_t origin, std::optional<geom::Vec2> at, const play::Listener& listener);
-  // Once a tic: sounds follow the listener, and finished or distant ones stop.
-  void update(const play::Listener& listener);
+  // Where a sound's maker is now: its place, or nullopt once it is gone (Doom stops the
+  // sound of a thing removed).
+  using Whereabouts = std::function<std::optional<geom::Vec2>(uint64_t origin)>;
+  // Once a tic: sounds follow their makers (when `where` is given) and the listener,
+  // and finished or distant ones stop (Doom's S_UpdateSounds).
+  void update(const play::Listener& listener, const Whereabouts& where = {});
   // Adds the channels' next samples to `stereo` (interleaved left, right), which
   // it first clears.
   void mix(std::span<int16_t> stereo);

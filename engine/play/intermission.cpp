@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "engine/play/dehacked.h"
+
 namespace p3d::play {
 
 namespace {
@@ -60,7 +62,9 @@ std::optional<IntermissionArt> IntermissionArt::load(const wad::Stack& wads, int
   a.sucks_ = picture(wads, "WISUCKS");
   for (int i = 0; i < 10; ++i) a.digits_.push_back(picture(wads, "WINUM" + std::to_string(i)));
   if (!a.background_ && !a.digits_[0]) return std::nullopt;
-  a.par_ = par_seconds(episode, map);
+  const auto pars = dehacked_pars(wads);  // the IWAD's own, as Chocolate Doom reads Freedoom's
+  const auto par = pars.find({episode, map});
+  a.par_ = par != pars.end() ? par->second : par_seconds(episode, map);
   return a;
 }
 

@@ -116,6 +116,12 @@ std::vector<const Mobj*> World::things() const {
   return out;
 }
 
+const Mobj* World::thing(uint32_t id) const {
+  for (const auto& t : thinkers_)
+    if (t->kind == Thinker::Kind::kMobj && static_cast<const Mobj&>(*t).id == id) return t->removed ? nullptr : &static_cast<const Mobj&>(*t);
+  return nullptr;
+}
+
 size_t World::thinker_count() const {
   return size_t(std::count_if(thinkers_.begin(), thinkers_.end(), [](const auto& t) { return !t->removed; }));
 }
@@ -296,6 +302,7 @@ void World::show() const {
     if (t->kind != Thinker::Kind::kMobj || t->removed) continue;
     const Mobj& mo = static_cast<const Mobj&>(*t);
     if (&mo == player_.mo) continue;  // the view's own body
+    if (mo.flags & kNosector) continue;  // in no sector's list: Doom never draws it (teleport destinations)
     level::ShownThing shown;
     shown.pos = {to_double(mo.x), to_double(mo.y)};
     shown.angle = double(mo.angle) * kDegreesPerAngle;

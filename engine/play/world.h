@@ -283,6 +283,8 @@ class World {
   // Every monster at once hunting the player, as if it had seen it (A_Look's waking:
   // the target set, the see state entered); for benchmarks and tests. Returns how many.
   int wake_monsters();
+  // The thing of this id (SoundEvent::origin), or nullptr once it is removed.
+  const Mobj* thing(uint32_t id) const;
   // Every thing, in thinker order (removed ones left out).
   std::vector<const Mobj*> things() const;
   size_t thinker_count() const;

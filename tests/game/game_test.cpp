@@ -322,6 +322,26 @@ TEST(SoundMixer, PlacesResamplesAndFrees) {
   EXPECT_EQ(rest.back(), 0);
 }
 
+// Sounds follow their makers (Doom's S_UpdateSounds): a sound from a thing that moves
+// to the other side pans with it, and stops when the thing is gone.
+TEST(SoundMixer, SoundsFollowTheirMakersAndStopWithThem) {
+  play::SoundClip clip{11025, std::vector<uint8_t>(4000, 255)};
+  SoundMixer mixer(44100, [&](play::Sound) { return &clip; });
+  const play::Listener east = listener_at({0, 0}, 0);
+  ASSERT_TRUE(mixer.start(play::Sound::kPosact, 7, geom::Vec2{0, 600}, east));  // on the left
+  std::vector<int16_t> left(2);
+  mixer.mix(left);
+  EXPECT_GT(left[0], left[1]);
+  std::optional<geom::Vec2> at = geom::Vec2{0, -600};  // the thing walked round to the right
+  mixer.update(east, [&](uint64_t origin) { return origin == 7 ? at : std::nullopt; });
+  std::vector<int16_t> right(2);
+  mixer.mix(right);
+  EXPECT_LT(right[0], right[1]) << "the right ear hears it now";
+  at.reset();  // removed
+  mixer.update(east, [&](uint64_t origin) { return origin == 7 ? at : std::nullopt; });
+  EXPECT_EQ(mixer.playing(), 0);
+}
+
 // A session on a WAD level places its sounds: a door's from the middle of the door
 // sector, and reads them from the WAD's lumps (a level without WADs is silent).
 TEST(Session, SoundsComeFromTheirSectorsAndTheWadsLumps) {
