@@ -193,6 +193,9 @@ struct Contact {
 };
 // Pairs of walls that cross or overlap: the max_count with the smallest (b, a), in that order.
 std::vector<Contact> find_contacts(const Source& source, size_t max_count);
+// The pair find_contacts(source, 1) gives, found by a sweep line in O(n log^2 n)
+// whatever the walls' layout (find_contacts takes it where its grid would be slow).
+std::optional<Contact> first_contact_by_sweep(const Source& source);
 struct OpenSector {
   int sector;
   geom::IPoint at;  // the open point at the smallest coordinates

@@ -2,9 +2,11 @@
 // walls cross or overlap, every sector is used and closed, heights and textures
 // make sense. Messages point at the line of the offending statement.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <set>
 #include <span>
 #include <string_view>
 #include <unordered_map>
@@ -109,8 +111,132 @@ void test_cell(const Source& src, const std::vector<uint32_t>& cell_walls, Conta
     for (size_t q = p + 1; q < walls.size(); ++q) contacts.test(walls[p], walls[q]);
 }
 
+// Whether any two of the first `count` walls cross or overlap, by a sweep line
+// (Shamos and Hoey): O(n log n) whatever the walls' layout. Walls become segments from
+// their lesser end to their greater (by x, then y: the sweep line leans by an
+// infinitesimal), kept in the order they cross the sweep line. A pair that is ever
+// adjacent in that order is tested; the first contact (leftmost point) always has a
+// pair adjacent around it before the sweep passes it, and before it every pair that
+// shares the line meets at most at an end, so their order is well defined.
+class SweepLine {
+ public:
+  explicit SweepLine(const Source& src) : src_(src), status_(Below{this}) {
+    const size_t n = src.walls.size();
+    ends_.resize(n);
+    for (uint32_t i = 0; i < n; ++i) {
+      IPoint a = src.point(src.walls[i].v1), b = src.point(src.walls[i].v2);
+      if (less(b, a)) std::swap(a, b);
+      ends_[i] = {a, b};
+    }
+  }
+
+  bool any_contact(size_t count) {
+    events_.clear();
+    for (uint32_t i = 0; i < count; ++i)
+      if (ends_[i][0] != ends_[i][1]) events_.push_back({ends_[i][0], i, true}), events_.push_back({ends_[i][1], i, false});
+    // At one point: walls leaving the sweep line first (their neighbours, then tested,
+    // must be), then walls joining it.
+    std::sort(events_.begin(), events_.end(), [](const Event& x, const Event& y) {
+      return less(x.at, y.at) || (x.at == y.at && std::tie(x.start, x.wall) < std::tie(y.start, y.wall));
+    });
+    status_.clear();
+    where_.assign(count, status_.end());
+    for (const Event& e : events_) {
+      if (e.start) {
+        const auto it = status_.insert(e.wall).first;
+        where_[e.wall] = it;
+        if (it != status_.begin() && bad(*std::prev(it), e.wall)) return true;
+        if (std::next(it) != status_.end() && bad(e.wall, *std::next(it))) return true;
+      } else {
+        const auto it = where_[e.wall];
+        const auto after = status_.erase(it);
+        if (after != status_.begin() && after != status_.end() && bad(*std::prev(after), *after)) return true;
+      }
+    }
+    return false;
+  }
+
+ private:
+  struct Event {
+    IPoint at;
+    uint32_t wall;
+    bool start;
+  };
+  static bool less(IPoint p, IPoint q) { return std::tie(p.x, p.y) < std::tie(q.x, q.y); }
+  bool bad(uint32_t a, uint32_t b) const {
+    const auto kind = geom::segment_contact(ends_[a][0], ends_[a][1], ends_[b][0], ends_[b][1]);
+    return kind == geom::SegmentContact::kCross || kind == geom::SegmentContact::kOverlap;
+  }
+  // Whether wall s lies below wall t where both cross the sweep line (meeting at most at
+  // an end): the later starting end against the other's line, or if it lies on that
+  // line, the other end; collinear walls by number.
+  struct Below {
+    const SweepLine* sweep;
+    bool operator()(uint32_t s, uint32_t t) const {
+      if (s == t) return false;
+      const auto& es = sweep->ends_[s];
+      const auto& et = sweep->ends_[t];
+      const bool s_later = !less(es[0], et[0]);
+      const auto& base = s_later ? et : es;
+      const auto& other = s_later ? es : et;
+      int o = geom::sign(geom::orient(base[0], base[1], other[0]));
+      if (o == 0) o = geom::sign(geom::orient(base[0], base[1], other[1]));
+      if (o == 0) return s < t;
+      return s_later ? o < 0 : o > 0;
+    }
+  };
+
+  const Source& src_;
+  std::vector<std::array<IPoint, 2>> ends_;  // per wall: its lesser end, its greater
+  std::vector<Event> events_;
+  std::set<uint32_t, Below> status_;
+  std::vector<std::set<uint32_t, Below>::iterator> where_;
+};
+
+}  // namespace
+
+// The least prefix of walls holding a contact (a binary search by sweeps), then the
+// earliest wall the last of it meets. O(n log^2 n).
+std::optional<Contact> first_contact_by_sweep(const Source& src) {
+  SweepLine sweep(src);
+  if (!sweep.any_contact(src.walls.size())) return std::nullopt;
+  size_t lo = 2, hi = src.walls.size();  // walls [0, hi) hold a contact; [0, lo - 1) do not
+  while (lo < hi) {
+    const size_t mid = lo + (hi - lo) / 2;
+    if (sweep.any_contact(mid)) hi = mid;
+    else lo = mid + 1;
+  }
+  const uint32_t b = uint32_t(hi - 1);
+  const Wall& wb = src.walls[b];
+  for (uint32_t a = 0; a < b; ++a) {
+    const Wall& wa = src.walls[a];
+    const auto kind = geom::segment_contact(src.point(wa.v1), src.point(wa.v2), src.point(wb.v1), src.point(wb.v2));
+    if (kind == geom::SegmentContact::kCross || kind == geom::SegmentContact::kOverlap) return Contact{a, b, kind};
+  }
+  return Contact{0, b, geom::SegmentContact::kCross};  // unreachable: the prefix holds a contact with b
+}
+
+namespace {
+
+// Whether the grid's cells (entries sorted by cell) hold so many pairs that testing
+// them would cost more than a sweep line.
+bool crowded(const std::vector<std::pair<uint64_t, uint32_t>>& entries, size_t walls) {
+  constexpr double kPairsPerWall = 64;
+  double pairs = 0;
+  for (size_t begin = 0; begin < entries.size();) {
+    size_t end = begin;
+    while (end < entries.size() && entries[end].first == entries[begin].first) ++end;
+    pairs += double(end - begin) * double(end - begin - 1) / 2;
+    begin = end;
+  }
+  return pairs > kPairsPerWall * double(walls);
+}
+
 // Candidate pairs come from a uniform grid: each wall is entered in the cells its
-// segment passes through, and walls sharing a cell are tested (test_cell).
+// segment passes through, and walls sharing a cell are tested (test_cell). A grid
+// whose cells hold many pairs (long parallel walls side by side) would be quadratic:
+// then a sweep line tells whether any contact exists (the valid level's answer), and
+// where the first is.
 std::vector<Contact> find_contacts_impl(const Source& src, size_t max_count) {
   const auto& walls = src.walls;
   const size_t n = walls.size();
@@ -151,6 +277,13 @@ std::vector<Contact> find_contacts_impl(const Source& src, size_t max_count) {
     }
   }
   std::sort(entries.begin(), entries.end());
+  if (crowded(entries, n)) {
+    if (max_count == 1) {
+      const std::optional<Contact> first = first_contact_by_sweep(src);
+      return first ? std::vector<Contact>{*first} : std::vector<Contact>{};
+    }
+    if (!SweepLine(src).any_contact(n)) return {};
+  }
 
   ContactList contacts(src, max_count);
   std::vector<uint32_t> cell_walls;

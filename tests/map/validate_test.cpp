@@ -76,6 +76,54 @@ TEST(Crossings, AgreeWithBruteForceAroundCrowdedPoints) {
   EXPECT_GT(overlaps, 100);
 }
 
+// The sweep line against brute force where degenerate cases abound: segments between
+// the points of a 7x7 lattice (shared ends, ends on other segments, collinear runs,
+// verticals), most of them added only if they meet the others at ends at most (the
+// layout of a valid level), a few anywhere.
+TEST(Crossings, SweepLineFindsTheFirstContactAmongDegenerateSegments) {
+  int with_contact = 0, without = 0;
+  for (uint64_t seed = 1; seed <= 400; ++seed) {
+    Rng rng(seed);
+    Source s;
+    const int64_t one = int64_t(geom::kFixedOne);
+    const auto lattice = [&] { return geom::IPoint{int64_t(rng.below(7)) * one, int64_t(rng.below(7)) * one}; };
+    const int walls = 4 + int(rng.below(40));
+    const bool stray = rng.below(2) == 0;
+    for (int k = 0; k < walls; ++k) {
+      const geom::IPoint a = lattice(), b = lattice();
+      if (a == b) continue;
+      add_segment(s, add_vertex(s, a), add_vertex(s, b));
+      const bool bad = !brute_force(s).empty();
+      if (bad && !(stray && rng.below(8) == 0)) s.walls.pop_back();
+    }
+    const std::vector<Contact> expected = brute_force(s);
+    const std::optional<Contact> found = first_contact_by_sweep(s);
+    ASSERT_EQ(found.has_value(), !expected.empty()) << "seed " << seed;
+    (found ? with_contact : without)++;
+    if (!found) continue;
+    EXPECT_EQ(std::tie(found->a, found->b, found->kind), std::tie(expected[0].a, expected[0].b, expected[0].kind)) << "seed " << seed;
+  }
+  EXPECT_GT(with_contact, 50);
+  EXPECT_GT(without, 50);
+}
+
+// Long parallel walls side by side share every cell of the grid: the crossing check
+// takes the sweep line there, and still names the first contact.
+TEST(Crossings, DenseParallelWallsAreCheckedBySweep) {
+  const int64_t one = int64_t(geom::kFixedOne);
+  Source s;
+  for (int i = 0; i < 3000; ++i)
+    add_segment(s, add_vertex(s, {0, 4 * i * one}), add_vertex(s, {100000 * one, (4 * i + 1) * one}));
+  EXPECT_TRUE(find_contacts(s, 1).empty());
+  add_segment(s, add_vertex(s, {50000 * one, -10 * one}),
+              add_vertex(s, {50001 * one, 30 * one}));  // crosses the first few
+  add_segment(s, add_vertex(s, {0, 8 * one}), add_vertex(s, {50000 * one, 8 * one + one / 2}));  // overlaps wall 2
+  const std::vector<Contact> expected = brute_force(s);
+  const std::vector<Contact> found = find_contacts(s, 1);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(std::tie(found[0].a, found[0].b, found[0].kind), std::tie(expected[0].a, expected[0].b, expected[0].kind));
+}
+
 // Open sectors against a plain count per (sector, point), on generated rooms with walls
 // dropped and vertices duplicated (two vertices at one point are one point).
 std::vector<OpenSector> open_sectors_brute_force(const Source& s) {
