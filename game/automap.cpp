@@ -93,9 +93,9 @@ void Automap::draw(render::Frame& frame, const level::Level& level, const level:
   };
 
   image::fill_rect(frame, 0, 0, frame.width, frame.height, image::rgba(0, 0, 0), settings.overlay ? 190 : 255);
-  std::vector<geom::Vec2> leaf = level::cell_at(level, camera.pos, bounds_);
-  for (geom::Vec2& p : leaf) p = screen(p);
-  image::fill_convex(frame, leaf, image::rgba(230, 200, 60), 70);
+  std::vector<geom::Vec2> cell = level::cell_at(level, camera.pos, bounds_);
+  for (geom::Vec2& p : cell) p = screen(p);
+  image::fill_convex(frame, cell, image::rgba(230, 200, 60), 70);
   if (settings.splitters)
     for (const level::Chord& c : chords_)
       if (!c.empty && visible(c.a, c.b)) image::draw_line(frame, screen(c.a), screen(c.b), image::rgba(70, 110, 220), 110);
@@ -116,6 +116,15 @@ void Automap::draw(render::Frame& frame, const level::Level& level, const level:
       const geom::Vec2 n = glm::length(d) > 0 ? geom::Vec2(-d.y, d.x) / glm::length(d) : geom::Vec2(0);
       image::draw_line(frame, screen(w.a) + n, screen(w.b) + n, colour);
     }
+  }
+  // The player's leaf: the fragments bounding its region, on their side facing it.
+  const level::Leaf& leaf = level.leaves[size_t(level.leaf_at(camera.pos))];
+  for (uint32_t i = leaf.first_fragment; i < leaf.first_fragment + leaf.fragment_count; ++i) {
+    const level::Fragment& f = level.fragments[i];
+    const geom::Vec2 a = screen(f.p0), b = screen(f.p1);
+    if (glm::length(b - a) == 0) continue;
+    const geom::Vec2 d = glm::normalize(b - a), inward = (f.side == 0 ? 2.0 : -2.0) * geom::Vec2(-d.y, d.x);
+    image::draw_line(frame, a + inward, b + inward, image::rgba(250, 220, 70));
   }
   for (size_t k = 0; k < draw_order.size(); ++k) {  // the last frame's fragments, in the order drawn
     if (draw_order[k] >= level.fragments.size()) continue;

@@ -1,5 +1,6 @@
 // The automap, its own screen as Doom's (or over the dimmed view): walls from above
-// around the player (north up), the BSP's splitting lines, the player's leaf, the
+// around the player (north up), the BSP's splitting lines, the player's leaf (its
+// cell, and the fragments bounding its region, drawn on their side facing it), the
 // view cone, the fragments the last frame drew, coloured in draw order, and the
 // things present (monsters red, keys in their colour, pickups green, the rest grey).
 // Doors are orange, locked doors in their key's colour, teleporters green and exits

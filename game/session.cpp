@@ -389,7 +389,8 @@ bool Session::reload() {
     return false;
   }
   set_keys(cards);
-  if (level_->sector_at(keep.pos) != level::kNone) spawn(keep.pos, keep.angle);  // else the ground is gone: the start
+  // Inside a sector still (Doom's rule would give even the void its leaf's sector); else the ground is gone: the start.
+  if (level::sector_at_brute_force(*level_, keep.pos) != level::kNone) spawn(keep.pos, keep.angle);
   if (watch_) watch_->rebase();
   if (!select_renderer(renderer_name_, false)) select_renderer("bsp", false);
   say("reloaded " + file_name);

@@ -270,11 +270,13 @@ inline std::string default_output(const bsp::LevelSource& source, const std::str
   return "out/" + stem + suffix;
 }
 
-// Warns (on stderr) about a camera standing outside every sector: its frame shows
-// only the void, which is rarely what was meant.
+// Warns (on stderr) about a camera standing outside every sector (in the void, which
+// Doom's rule gives the sector of its leaf): rarely what was meant.
 inline void warn_if_outside(const char* tool, const level::Level& level, const render::CameraSpec& camera) {
-  if (level.sectors.empty() || level.default_sector != level::kNone || level.sector_at(camera.pos) != level::kNone) return;
-  std::fprintf(stderr, "%s: warning: camera%s%s at (%g, %g) is outside every sector (the frame shows the void)\n", tool,
+  if (level.sectors.empty() || level.default_sector != level::kNone ||
+      level::sector_at_brute_force(level, camera.pos) != level::kNone)
+    return;
+  std::fprintf(stderr, "%s: warning: camera%s%s at (%g, %g) is outside every sector\n", tool,
                camera.name.empty() ? "" : " ", camera.name.c_str(), camera.pos.x, camera.pos.y);
 }
 

@@ -37,6 +37,8 @@ Stats stat_fields(const bsp::Stats& s) {
           {"splits", double(s.splits)},
           {"nodes", double(s.nodes)},
           {"leaves", double(s.leaves)},
+          {"segs", double(s.segs)},
+          {"empty_leaves", double(s.empty_leaves)},
           {"free_splits", double(s.free_splits)},
           {"max_depth", double(s.max_depth)},
           {"mean_depth", s.mean_depth},
@@ -160,8 +162,8 @@ int compile_one(Args& a, const bsp::LevelSource& source, Progress& progress) {
   if (!a.json.empty())
     outputs.add(a.json, "{\"stats\": " + stats_json(stat_fields(stats)) + ", \"time\": " + stats_json(times) + "}\n");
   outputs.commit();
-  std::printf("%s: %zu walls, %zu fragments, %zu nodes, depth %zu (mean %.1f) -> %s\n", name.c_str(), stats.walls,
-              stats.fragments, stats.nodes, stats.max_depth, stats.mean_depth, a.output.c_str());
+  std::printf("%s: %zu walls, %zu fragments, %zu nodes, %zu leaves, depth %zu (mean %.1f) -> %s\n", name.c_str(),
+              stats.walls, stats.fragments, stats.nodes, stats.leaves, stats.max_depth, stats.mean_depth, a.output.c_str());
   if (a.check) std::printf("%s: the BSP invariants hold\n", name.c_str());
   if (a.stats) std::printf("stats: %s\ntime: %s\n", statdump(stat_fields(stats)).c_str(), statdump(times).c_str());
   return 0;
@@ -176,8 +178,8 @@ int compile_all(Args& a, const bsp::LevelSource& source) {
   if (maps.empty()) throw Error(source.wads.back().string() + ": the WADs hold no maps");
   std::filesystem::create_directories(a.output);
   const bool terminal = ::isatty(2);
-  std::printf("%-6s %-28s %7s %9s %7s %9s %8s %9s\n", "map", "title", "walls", "fragments", "nodes", "depth", "warnings",
-              "ms");
+  std::printf("%-6s %-28s %7s %9s %7s %7s %9s %8s %9s\n", "map", "title", "walls", "fragments", "nodes", "leaves", "depth",
+              "warnings", "ms");
   size_t failed = 0, total_warnings = 0;
   double total_ms = 0;
   for (size_t i = 0; i < maps.size(); ++i) {
@@ -199,8 +201,8 @@ int compile_all(Args& a, const bsp::LevelSource& source) {
       if (title.size() > 28) title = title.substr(0, 27) + "~";
       char depth[32];
       std::snprintf(depth, sizeof depth, "%zu/%.1f", stats.max_depth, stats.mean_depth);
-      std::printf("%-6s %-28s %7zu %9zu %7zu %9s %8zu %9.1f\n", maps[i].c_str(), title.c_str(), stats.walls,
-                  stats.fragments, stats.nodes, depth, warnings.size(), ms);
+      std::printf("%-6s %-28s %7zu %9zu %7zu %7zu %9s %8zu %9.1f\n", maps[i].c_str(), title.c_str(), stats.walls,
+                  stats.fragments, stats.nodes, stats.leaves, depth, warnings.size(), ms);
     } catch (const std::exception& e) {
       if (terminal) std::fprintf(stderr, "\r%40s\r", "");
       std::fprintf(stderr, "%s\n", e.what());
@@ -229,13 +231,25 @@ int main(int argc, char** argv) {
   app.add_option("--candidates", a.options.greedy_candidates, "greedy: candidate splitters per cell")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
+  app.add_option("--every-below", a.options.greedy_every_below, "greedy: cells of fewer fragments try every one")
+      ->check(CLI::Range(0, 1 << 20))
+      ->capture_default_str();
   app.add_option("--sample", a.options.greedy_sample, "greedy: fragments scored per candidate")
       ->check(CLI::Range(1, 1 << 30))
       ->capture_default_str();
   app.add_option("--split-weight", a.options.split_weight, "greedy: cost of a split")
       ->check(cli::finite_range(0.0, 1e9))
       ->capture_default_str();
-  app.add_option("--balance-weight", a.options.balance_weight, "greedy: cost of a fragment of imbalance")
+  app.add_option("--balance-weight", a.options.balance_weight, "greedy: cost of a barrier (two-sided wall) of imbalance")
+      ->check(cli::finite_range(0.0, 1e9))
+      ->capture_default_str();
+  app.add_option("--plain-weight", a.options.plain_weight, "greedy: a wall that is no barrier, in barriers, in the balance")
+      ->check(cli::finite_range(0.0, 1e9))
+      ->capture_default_str();
+  app.add_option("--line-weight", a.options.line_weight, "greedy: gain per fragment on the splitter's line")
+      ->check(cli::finite_range(0.0, 1e9))
+      ->capture_default_str();
+  app.add_option("--peel-weight", a.options.peel_weight, "greedy: cost of a splitter leaving one side empty")
       ->check(cli::finite_range(0.0, 1e9))
       ->capture_default_str();
   app.add_option("--sliver-weight", a.options.sliver_weight, "greedy: cost of a split leaving a piece under 1/16 unit")

@@ -106,6 +106,19 @@ std::string overview_svg(const level::Level& level, const std::optional<ViewTrac
                                         : "stroke=\"#202020\" stroke-width=\"2.4\"";
     svg.line(w.a, w.b, style);
   }
+  // Each leaf's fragments, a stroke on their side facing its region, in the leaf's colour.
+  svg.raw("</g>\n<g id=\"leaf-fragments\">\n");
+  for (const level::Leaf& leaf : level.leaves)
+    for (uint32_t i = leaf.first_fragment; i < leaf.first_fragment + leaf.fragment_count; ++i) {
+      const level::Fragment& f = level.fragments[i];
+      const geom::Vec2 d = f.p1 - f.p0;
+      if (glm::length(d) == 0) continue;
+      const geom::Vec2 right = geom::Vec2(d.y, -d.x) / glm::length(d);  // the wall's front
+      const geom::Vec2 inward = right * ((f.side == 0 ? 2.5 : -2.5) / svg.px(1));
+      svg.line(f.p0 + inward, f.p1 + inward,
+               "stroke=\"" + (leaf.sector < 0 ? std::string("#909090") : hsl(double(Rng::mix(uint64_t(leaf.sector)) % 360), 60, 45)) +
+                   "\" stroke-width=\"1.6\"");
+    }
   svg.raw("</g>\n<g id=\"split-points\">\n");
   for (const level::Fragment& f : level.fragments) {
     if (f.cut[0] != level::kNone) svg.circle(f.p0, 2.2, "fill=\"#ff8000\"");

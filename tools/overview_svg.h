@@ -1,5 +1,6 @@
-// The level from above as SVG: convex leaves shaded by sector, the BSP's splitting
-// lines, walls, split points; optionally one camera's view cone, the order in which
+// The level from above as SVG: leaves' cells shaded by their sector, the BSP's
+// splitting lines, walls, each leaf's fragments (a stroke in its colour on their side
+// facing its convex region), split points; optionally one camera's view cone, the order in which
 // the front-to-back renderer drew fragments, and the columns each closed.
 #pragma once
 

@@ -1,19 +1,30 @@
-// BSP construction by auto-partition with exact arithmetic.
+// BSP construction by auto-partition with exact arithmetic, stopping at convex leaves.
 //
 // A fragment is a parameter range [t0, t1] of its source wall. Each end is an
 // original wall end or the crossing of the wall with an earlier splitter line
 // (its "cut"), so the side of every end relative to any splitter is decided
-// exactly by geom::side_of / side_of_crossing: no epsilon, no lost or doubled
-// pieces, and collinear fragments always land on the node of their line.
+// exactly by geom::side_of / side_of_crossing: no epsilon, no lost or doubled pieces.
 //
-// Index: Builder::run (the pipeline), choose_splitter (strategies),
-// partition (classify + split), make_leaf / leaf_sector (sector of a cell).
+// Fragments on a splitter's line stay at its node. A cell stops splitting when the
+// fragments inside it bound a convex region of one sector (convex.h): it becomes a
+// leaf holding them, Doom's subsector (its edges' fragments are its ancestors'). A
+// two-sided wall between two sectors never lies inside a leaf: it ends on a node's
+// line with a sector either side. So every point of a closed sector is located in a
+// leaf of that sector, and every other point gets its leaf's sector (Doom's rule).
+//
+// Index: Builder::run (the pipeline), split_or_leaf (leaf or splitter), choose_greedy /
+// score (strategies), partition (classify + split), make_leaf / edge_sector.
 #include "engine/bsp/build.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <numeric>
+#include <tuple>
 
+#include "engine/bsp/convex.h"
 #include "engine/geom/polygon.h"
+#include "engine/util/limits.h"
 #include "engine/util/rng.h"
 
 namespace p3d::bsp {
@@ -51,8 +62,14 @@ struct Frag {
   double t[2];
   uint32_t wall;
   int32_t cut[2];
-  bool on_boundary[2];  // this end lies on an ancestor's splitter line (free-split bookkeeping)
+  uint32_t line_number : 24;  // its wall's line (walls on one line share it; limits::kMaxWalls fits)
+  uint32_t on_boundary0 : 1;  // this end lies on an ancestor's splitter line (free-split bookkeeping)
+  uint32_t on_boundary1 : 1;
+  uint32_t either_side : 1;   // the side facing its cell's region: either, or 0 (a one-sided wall's front)
+
+  int side() const { return either_side ? -1 : 0; }
 };
+static_assert(limits::kMaxWalls <= (size_t{1} << 24), "a line number fits in Frag::line_number");
 static_assert(sizeof(Frag) == 64, "a fragment fills one cache line");
 
 // A convex cell vertex; the edge from it to the next vertex lies on node `node`'s
@@ -91,14 +108,22 @@ class Builder {
       std::vector<map::Vertex>().swap(consumable_->vertices);
     }
     lines_.reserve(out_.walls.size());
-    for (const level::Wall& w : out_.walls) lines_.push_back(w.line());
+    sectors_.reserve(out_.walls.size());
+    for (const level::Wall& w : out_.walls) {
+      lines_.push_back(w.line());
+      // A one-sided wall's back is the default sector (or the void); a plain segment has none.
+      sectors_.push_back(w.segment() ? std::array{kNeutral, kNeutral}
+                                     : std::array{w.sides[0].sector, w.two_sided() ? w.sides[1].sector : src_.default_sector});
+    }
+    number_lines();
     std::vector<uint32_t> order(out_.walls.size());
     for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
     if (opt_.strategy != Strategy::kFirst) rng_.shuffle(order);
     std::vector<Frag> all;
     all.reserve(order.size());
-    for (uint32_t i : order) all.push_back({lines_[i], {0.0, 1.0}, i, {level::kNone, level::kNone}, {false, false}});
-    std::vector<uint32_t>().swap(order);
+    for (uint32_t i : order)
+      all.push_back({lines_[i], {0.0, 1.0}, i, {level::kNone, level::kNone}, line_of_[i], 0, 0, !one_sided(i)});
+    std::vector<uint32_t>().swap(line_of_);    std::vector<uint32_t>().swap(order);
     // Room for a few splits, and for a node per fragment at most: a big map's vectors
     // are not copied as they grow (for a moment, twice their size). Room never
     // written is never given pages.
@@ -207,6 +232,35 @@ class Builder {
     return flags;
   }
 
+  // Walls on one line share a number (line_of_): a line's direction in lowest terms,
+  // pointing right (or up), and its offset, exact.
+  void number_lines() {
+    struct Key {
+      int64_t dx, dy, offset;
+      uint32_t wall;
+    };
+    std::vector<Key> keys;
+    keys.reserve(lines_.size());
+    for (uint32_t w = 0; w < lines_.size(); ++w) {
+      int64_t dx = lines_[w].d.x, dy = lines_[w].d.y;
+      const int64_t g = std::gcd(dx, dy);
+      dx /= g, dy /= g;
+      if (dx < 0 || (dx == 0 && dy < 0)) dx = -dx, dy = -dy;
+      keys.push_back({dx, dy, dx * lines_[w].a.y - dy * lines_[w].a.x, w});
+    }
+    std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
+      return std::tie(a.dx, a.dy, a.offset, a.wall) < std::tie(b.dx, b.dy, b.offset, b.wall);
+    });
+    line_of_.resize(lines_.size());
+    uint32_t line = 0;
+    for (size_t i = 0; i < keys.size(); ++i) {
+      if (i > 0 && std::tie(keys[i].dx, keys[i].dy, keys[i].offset) != std::tie(keys[i - 1].dx, keys[i - 1].dy, keys[i - 1].offset))
+        ++line;
+      line_of_[keys[i].wall] = line;
+    }
+    line_count_.assign(keys.empty() ? 0 : line + 1, 0);
+  }
+
   // ---- the tree ------------------------------------------------------------
   geom::BBox vertex_box() const {
     geom::BBox box;
@@ -227,18 +281,15 @@ class Builder {
       Task task = std::move(stack.back());
       stack.pop_back();
       max_depth_ = std::max<size_t>(max_depth_, task.depth);
-      if (task.frags.empty()) {
-        make_leaf(task);
-        continue;
-      }
-      const Frag& splitter = task.frags[choose_splitter(task.frags)];
+      const size_t splitter = split_or_leaf(task);
+      if (splitter == kLeaf) continue;
+      const Frag& f = task.frags[splitter];
       const int32_t node = static_cast<int32_t>(out_.nodes.size());
       link(task, node);
       out_.nodes.push_back({});
-      out_.nodes[node].splitter = splitter.wall;
-
-      const int32_t splitter_wall = static_cast<int32_t>(splitter.wall);
-      if (spans_cell(splitter)) ++free_splits_;  // it cannot cut anything: free
+      out_.nodes[node].splitter = f.wall;
+      const int32_t splitter_wall = static_cast<int32_t>(f.wall);
+      if (spans_cell(f)) ++free_splits_;  // it cannot cut anything: free
       std::vector<Frag> front, back;
       partition(task.frags, splitter_wall, node, front, back);
       std::vector<Frag>().swap(task.frags);
@@ -257,93 +308,219 @@ class Builder {
   void place_on_node(int32_t node, const Frag& f) {
     level::Node& n = out_.nodes[node];
     if (n.fragment_count++ == 0) n.first_fragment = static_cast<uint32_t>(out_.fragments.size());
-    out_.fragments.push_back({f.wall, {f.cut[0], f.cut[1]}, f.t[0], f.t[1]});
+    out_.fragments.push_back({f.wall, {f.cut[0], f.cut[1]}, f.t[0], f.t[1], 0});
     shortest_ = std::min(shortest_, (f.t[1] - f.t[0]) * wall_length(f.wall));
   }
 
-  void count_placed(const level::Node& n) {
-    placed_ += n.fragment_count;
-    pending_ -= n.fragment_count;
+  void count_placed(size_t fragments) {
+    placed_ += fragments;
+    pending_ -= fragments;
     if (opt_.progress && placed_ >= next_progress_) {
       next_progress_ = placed_ + 65536;
       opt_.progress(double(placed_) / double(placed_ + pending_));
     }
   }
 
-  // ---- splitter choice -----------------------------------------------------
-  // The position in `frags` of the fragment whose line splits the cell.
-  size_t choose_splitter(const std::vector<Frag>& frags) {
-    switch (opt_.strategy) {
-      case Strategy::kFirst:
-      case Strategy::kRandom:
-        return 0;
-      case Strategy::kFreeSplit:
-        for (size_t i = 0; i < frags.size(); ++i)
-          if (spans_cell(frags[i])) return i;
-        return 0;
-      case Strategy::kGreedy:
-        return choose_greedy(frags);
+  static constexpr size_t kLeaf = SIZE_MAX;
+  static constexpr size_t kNoFragment = SIZE_MAX;
+  static constexpr size_t kTestFirst = 48;  // cells this small are tested for a leaf before a search
+
+  // Makes the task's cell a leaf (returning kLeaf) when its fragments bound a convex
+  // region of one sector; otherwise returns the position of the fragment to split along.
+  size_t split_or_leaf(Task& task) {
+    const std::vector<Frag>& frags = task.frags;
+    if (frags.empty()) {
+      make_leaf(task, level::kNone);
+      return kLeaf;
     }
+    const Sectors sectors = cell_sectors(frags);
+    const bool one_sector = sectors.other == kNoFragment && sectors.barrier == kNoFragment;
+    const bool greedy = opt_.strategy == Strategy::kGreedy;
+    // Big cells are rarely leaves: a splitter the sample proves to divide the cell
+    // spares the exact test. Small ones are tested first (cheaper than a search).
+    const bool test_first = !greedy || frags.size() <= kTestFirst;
+    Choice chosen;
+    if (greedy && (!test_first || !one_sector)) {
+      chosen = choose_greedy(frags);
+      if (chosen.divides) return chosen.fragment;
+    }
+    const ConvexTest convex = convex_region(FragPieces{frags, *this}, convex_sides_, convex_order_);
+    if (convex.convex && one_sector) {
+      make_leaf(task, sectors.sector);
+      return kLeaf;
+    }
+    if (!greedy) {
+      const size_t pick = choose_simple(frags);
+      if (divides(frags, pick)) return pick;
+    } else if (chosen.fragment == kNoFragment) {
+      chosen = choose_greedy(frags);
+    }
+    // The best candidate, though it only peels its line's fragments off the cell, if it
+    // beat one that divides it.
+    if (chosen.fragment != kNoFragment && (chosen.divides || chosen.any_divides)) return chosen.fragment;
+    if (!convex.convex) return convex.witness;
+    // Convex, but a two-sided wall between two sectors lies inside the cell, or its
+    // walls face more than one sector (an unclosed sector): split along such a wall,
+    // which the node takes, the others all on one side (as ZDBSP shoves a seg behind).
+    return sectors.barrier != kNoFragment ? sectors.barrier : sectors.other;
+  }
+
+  // ---- sectors -------------------------------------------------------------
+  static constexpr int32_t kNeutral = -3;  // a plain segment: stands in whatever sector surrounds it
+
+  bool one_sided(uint32_t wall) const { return !out_.walls[wall].segment() && !out_.walls[wall].two_sided(); }
+  // A two-sided wall between two sectors (or a one-sided one with the default sector
+  // behind): no leaf may hold it, so it ends on a node's line with a sector either side.
+  bool barrier(uint32_t wall) const {
+    const auto& s = sectors_[wall];
+    return s[0] != kNeutral && s[1] != level::kNone && s[0] != s[1];
+  }
+
+  // The sector a cell's fragments face (their sides' but a barrier's are the same; a
+  // one-sided wall faces its front's), with a fragment facing another and a barrier.
+  struct Sectors {
+    int32_t sector = level::kNone;  // kNone: only plain segments
+    size_t other = kNoFragment;
+    size_t barrier = kNoFragment;
+  };
+  Sectors cell_sectors(const std::vector<Frag>& frags) const {
+    Sectors out;
+    for (size_t i = 0; i < frags.size(); ++i) {
+      const uint32_t w = frags[i].wall;
+      if (barrier(w)) {
+        if (out.barrier == kNoFragment) out.barrier = i;
+        continue;
+      }
+      const int32_t s = sectors_[w][0];
+      if (s == kNeutral) continue;
+      if (out.sector == level::kNone) out.sector = s;
+      else if (s != out.sector && out.other == kNoFragment) out.other = i;
+    }
+    return out;
+  }
+
+  // The cell's fragments for convex_region.
+  struct FragPieces {
+    const std::vector<Frag>& frags;
+    const Builder& builder;
+    size_t size() const { return frags.size(); }
+    const Line& line(size_t i) const { return frags[i].line; }
+    int side(size_t i) const { return frags[i].side(); }
+    int end_side(size_t i, int k, const Line& l) const { return builder.end_side(frags[i], k, l); }
+  };
+
+  // ---- splitter choice -----------------------------------------------------
+  static bool spans_cell(const Frag& f) { return f.on_boundary0 && f.on_boundary1; }
+
+  // first, random, freesplit: the first fragment (a spanning one for freesplit, if any).
+  size_t choose_simple(const std::vector<Frag>& frags) const {
+    if (opt_.strategy == Strategy::kFreeSplit)
+      for (size_t i = 0; i < frags.size(); ++i)
+        if (spans_cell(frags[i])) return i;
     return 0;
   }
 
-  static bool spans_cell(const Frag& f) { return f.on_boundary[0] && f.on_boundary[1]; }
+  // Whether fragment c's line leaves fragments on both of its sides (or c is a barrier,
+  // which must become a splitter anyway).
+  bool divides(const std::vector<Frag>& frags, size_t c) const {
+    if (barrier(frags[c].wall)) return true;
+    const Line& l = frags[c].line;
+    bool front = false, back = false;
+    for (const Frag& f : frags) {
+      const int s0 = end_side(f, 0, l), s1 = end_side(f, 1, l);
+      front |= s0 < 0 || s1 < 0;
+      back |= s0 > 0 || s1 > 0;
+      if (front && back) return true;
+    }
+    return false;
+  }
 
-  size_t choose_greedy(const std::vector<Frag>& frags) {
+  // Greedy: the sampled candidate of least cost, and whether the sample shows fragments
+  // on both sides of it (else it only takes its line's fragments off the cell).
+  struct Choice {
+    size_t fragment = kNoFragment;
+    bool divides = false;
+    bool any_divides = false;  // some candidate scored did
+  };
+  static constexpr uint32_t kScored = 1u << 31;  // line_count_'s mark: this line was scored
+  Choice choose_greedy(const std::vector<Frag>& frags) {
     const size_t m = frags.size();
-    if (m == 1) return 0;
-    const size_t k = std::min<size_t>(m, std::max(1, opt_.greedy_candidates));
+    const size_t k = m <= size_t(std::max(0, opt_.greedy_every_below)) ? m
+                                                                       : std::min<size_t>(m, std::max(1, opt_.greedy_candidates));
     const size_t samples = std::min<size_t>(m, std::max(1, opt_.greedy_sample));
     sample_.clear();
-    for (size_t i = 0; i < samples; ++i) sample_.add(frags[samples == m ? i : rng_.below(m)]);
+    for (size_t i = 0; i < samples; ++i) {
+      const Frag& f = frags[samples == m ? i : rng_.below(m)];
+      sample_.add(f, barrier(f.wall) ? 1.0 : opt_.plain_weight);
+    }
+    sample_weight_ = 0;
+    for (double w : sample_.weight) sample_weight_ += w;
+    // The fragments of the cell on each line (the node takes them): its walls counted by
+    // line. A line is scored once, whichever of its fragments is drawn.
+    for (const Frag& f : frags) ++line_count_[f.line_number];
+    const double per_line_fragment = opt_.line_weight * double(samples) / double(m);
 
-    size_t best = 0;
+    Choice best;
     double best_cost = INFINITY;
     for (size_t c = 0; c < k; ++c) {
       const size_t candidate = k == m ? c : rng_.below(m);
-      const std::optional<double> cost = score(frags[candidate].line, best_cost);
-      if (cost && *cost < best_cost) best_cost = *cost, best = candidate;
+      const Frag& f = frags[candidate];
+      uint32_t& count = line_count_[f.line_number];
+      if (count & kScored) continue;
+      bool divides = false;
+      const double bonus = per_line_fragment * double(count);
+      count |= kScored;
+      const std::optional<double> cost = score(f, best_cost + bonus, divides);
+      if (cost && *cost - bonus < best_cost) best_cost = *cost - bonus, best = {candidate, divides, best.any_divides};
+      best.any_divides |= cost && divides;
     }
+    for (const Frag& f : frags) line_count_[f.line_number] = 0;
     return best;
   }
 
   // The fragments a candidate splitter is scored against, laid out for the scoring
   // loop: each end's point where it is an original wall end (most are), else the
   // fragment itself for the exact crossing test; each wall's length for slivers,
-  // measured when first split.
+  // measured when first split; its weight in the balance.
   struct Sample {
     std::vector<IPoint> ends;        // 2 per fragment
     std::vector<const Frag*> frags;
     std::vector<uint8_t> cut;        // bit k: end k is a crossing
     std::vector<double> length;      // < 0: not measured yet
+    std::vector<double> weight;
 
-    void clear() { ends.clear(), frags.clear(), cut.clear(), length.clear(); }
+    void clear() { ends.clear(), frags.clear(), cut.clear(), length.clear(), weight.clear(); }
     size_t size() const { return frags.size(); }
-    void add(const Frag& f) {
+    void add(const Frag& f, double w) {
       const IPoint far{f.line.a.x + f.line.d.x, f.line.a.y + f.line.d.y};
       for (int k = 0; k < 2; ++k) ends.push_back(f.cut[k] != level::kNone ? IPoint{} : f.t[k] == 0 ? f.line.a : far);
       cut.push_back(uint8_t((f.cut[0] != level::kNone) | (f.cut[1] != level::kNone) << 1));
       frags.push_back(&f);
       length.push_back(-1);
+      weight.push_back(w);
     }
   };
 
-  // Greedy's cost of splitting along l (splits, imbalance, slivers), or nothing once
-  // it cannot come under `to_beat`.
-  std::optional<double> score(const Line& l, double to_beat) {
+  // Greedy's cost of splitting along the candidate's line: splits, the imbalance between
+  // the sides (barriers weigh most: each ends on a node of its own; walls that are not
+  // add to a leaf), slivers, and a peel (no fragment on one side); or nothing once it
+  // cannot come under `to_beat`. `divides` tells whether the sample shows fragments on
+  // both sides.
+  std::optional<double> score(const Frag& candidate, double to_beat, bool& divides) {
+    const Line& l = candidate.line;
     const size_t n = sample_.size();
-    int64_t front = 0, back = 0, splits = 0, slivers = 0;
+    double front = 0, back = 0, left = sample_weight_;
+    int64_t splits = 0, slivers = 0;
+    bool any_front = false, any_back = false;
     for (size_t i = 0; i < n; ++i) {
       // Stop once this candidate cannot win (the same choice, sooner): splits and
       // slivers only add, and the fragments left can close the imbalance by at most
-      // their number.
-      if (i % 8 == 0 && i > 0) {
-        const double left = double(n - i);
-        if (opt_.split_weight * double(splits) + opt_.sliver_weight * double(slivers) +
-                opt_.balance_weight * std::max(0.0, std::fabs(double(front - back)) - left) >=
-            to_beat)
-          return std::nullopt;
-      }
+      // their weight.
+      if (i % 8 == 0 && i > 0 &&
+          opt_.split_weight * double(splits) + opt_.sliver_weight * double(slivers) +
+                  opt_.balance_weight * std::max(0.0, std::fabs(front - back) - left) >=
+              to_beat)
+        return std::nullopt;
       const IPoint* e = &sample_.ends[2 * i];
       int s0 = geom::side_of(l, e[0]), s1 = geom::side_of(l, e[1]);
       if (sample_.cut[i]) {
@@ -351,9 +528,12 @@ class Builder {
         if (sample_.cut[i] & 1) s0 = end_side(f, 0, l);
         if (sample_.cut[i] & 2) s1 = end_side(f, 1, l);
       }
-      const bool any = (s0 | s1) != 0;
-      front += (s0 <= 0) & (s1 <= 0) & any;
-      back += (s0 >= 0) & (s1 >= 0) & any;
+      const double w = sample_.weight[i];
+      left -= w;
+      const bool to_front = s0 < 0 || s1 < 0, to_back = s0 > 0 || s1 > 0;
+      front += to_front ? w : 0.0;
+      back += to_back ? w : 0.0;
+      any_front |= to_front, any_back |= to_back;
       if (s0 * s1 < 0) {
         ++splits;
         const Frag& f = *sample_.frags[i];
@@ -363,8 +543,9 @@ class Builder {
         slivers += std::min(t - f.t[0], f.t[1] - t) * length < kSliverLength;
       }
     }
-    return opt_.split_weight * double(splits) + opt_.balance_weight * std::fabs(double(front - back)) +
-           opt_.sliver_weight * double(slivers);
+    divides = any_front && any_back;
+    return (divides ? 0.0 : opt_.peel_weight) + opt_.split_weight * double(splits) +
+           opt_.balance_weight * std::fabs(front - back) + opt_.sliver_weight * double(slivers);
   }
 
   // ---- exact classification ------------------------------------------------
@@ -400,8 +581,8 @@ class Builder {
         place_on_node(node, f);
         continue;
       }
-      if (s0 == 0) f.on_boundary[0] = true;
-      if (s1 == 0) f.on_boundary[1] = true;
+      if (s0 == 0) f.on_boundary0 = 1;
+      if (s1 == 0) f.on_boundary1 = 1;
       if (s0 <= 0 && s1 <= 0) {
         front.push_back(f);
       } else if (s0 >= 0 && s1 >= 0) {
@@ -412,7 +593,7 @@ class Builder {
         (s1 < 0 ? front : back).push_back(tail);
       }
     }
-    count_placed(out_.nodes[size_t(node)]);
+    count_placed(out_.nodes[size_t(node)].fragment_count);
   }
 
   // Cuts f where `cutter`'s line crosses it: f keeps [t0, t], the piece returned gets [t, t1].
@@ -423,10 +604,10 @@ class Builder {
     Frag tail = f;
     f.t[1] = t;
     f.cut[1] = cutter;
-    f.on_boundary[1] = true;
+    f.on_boundary1 = 1;
     tail.t[0] = t;
     tail.cut[0] = cutter;
-    tail.on_boundary[0] = true;
+    tail.on_boundary0 = 1;
     ++pending_;
     return tail;
   }
@@ -462,20 +643,39 @@ class Builder {
     return out.size() >= 3 ? out : Cell{};
   }
 
-  void make_leaf(const Task& task) {
+  // The task's fragments become the leaf's, facing the sides convex_region chose
+  // (convex_sides_). A leaf whose fragments face no sector (it holds none, or plain
+  // segments only) takes the sector of a wall along its edges facing it, or failing
+  // that (only segments near) one found by a ray cast once the tree is done.
+  void make_leaf(const Task& task, int32_t sector) {
     const int32_t leaf = static_cast<int32_t>(out_.leaves.size());
     link(task, level::leaf_child(leaf));
-    out_.leaves.push_back({level::kNone});
+    {
+      level::Leaf& l = out_.leaves.emplace_back();
+      l.sector = sector;
+      l.first_fragment = static_cast<uint32_t>(out_.fragments.size());
+      l.fragment_count = static_cast<uint32_t>(task.frags.size());
+    }
+    for (size_t i = 0; i < task.frags.size(); ++i) {
+      const Frag& f = task.frags[i];
+      out_.fragments.push_back({f.wall, {f.cut[0], f.cut[1]}, f.t[0], f.t[1], convex_sides_[i]});
+      shortest_ = std::min(shortest_, (f.t[1] - f.t[0]) * wall_length(f.wall));
+    }
+    count_placed(task.frags.size());
     leaf_depth_sum_ += task.depth;
-    if (!leaf_sector(task.cell, out_.leaves.back().sector)) {
+    if (sector == level::kNone && !edge_sector(task.cell, out_.leaves.back().sector)) {
       geom::Polygon poly;
       for (const CellVertex& v : task.cell) poly.push_back(v.p);
       unresolved_.push_back({leaf, poly.empty() ? Vec2(0) : geom::polygon_centroid(poly)});
     }
   }
 
-  // A convex leaf holds no wall, so a wall along one of its edges faces it directly.
-  bool leaf_sector(const Cell& cell, int32_t& sector) const {
+  // The sector of a wall lying along one of the cell's edges (on an ancestor's line), on
+  // its side facing the cell; behind a one-sided wall, its front's (Doom's rule: the
+  // void behind a wall is in the sector of the subsector holding its seg), unless
+  // another edge's wall faces the cell.
+  bool edge_sector(const Cell& cell, int32_t& sector) const {
+    int32_t behind = level::kNone;
     for (size_t i = 0; i < cell.size(); ++i) {
       if (cell[i].node == level::kNone) continue;
       const Vec2 mid = (cell[i].p + cell[(i + 1) % cell.size()].p) * 0.5;
@@ -491,16 +691,21 @@ class Builder {
         const Line& splitter = lines_[node.splitter];
         const bool same_direction = double(splitter.d.x) * e.x + double(splitter.d.y) * e.y > 0;
         const bool on_right_of_wall = cell[i].front == same_direction;
-        sector = w.sides[on_right_of_wall ? 0 : 1].sector;
-        if (sector == level::kNone) sector = src_.default_sector;
-        return true;
+        const int32_t faced = on_right_of_wall ? w.sides[0].sector : w.two_sided() ? w.sides[1].sector : src_.default_sector;
+        if (faced != level::kNone) {
+          sector = faced;
+          return true;
+        }
+        if (behind == level::kNone) behind = w.sides[0].sector;
       }
     }
-    return false;
+    sector = behind;
+    return behind != level::kNone;
   }
 
-  // Leaves bounded by no wall: the first wall a ray from inside meets tells the sector.
-  // A map of plain segments has only its default sector: no ray needed.
+  // Leaves facing no sector: the first wall a ray from inside meets tells the sector (its
+  // front's when the ray meets the back of a one-sided wall). A map of plain segments
+  // has only its default sector: no ray needed.
   void resolve_leaves_by_ray_cast() {
     for (const auto& [leaf, inside] : unresolved_)
       out_.leaves[leaf].sector = segments_only_ ? out_.default_sector : ray_cast_sector(inside);
@@ -520,16 +725,18 @@ class Builder {
         }
         if (w.segment()) return true;
         const bool right = geom::cross(w.b - w.a, origin - w.a) < 0;
-        sector = w.sides[right ? 0 : 1].sector;
+        sector = right ? w.sides[0].sector : w.two_sided() ? w.sides[1].sector : src_.default_sector;
+        if (sector == level::kNone) sector = w.sides[0].sector;  // behind a one-sided wall (Doom's rule, as edge_sector)
         found = true;
         return false;
       });
       if (ambiguous) continue;
-      return found && sector != level::kNone ? sector : out_.default_sector;
+      return found ? sector : out_.default_sector;
     }
     return out_.default_sector;
   }
 
+  // Children come after their parent: each node's box from its fragments' and its children's.
   void compute_bounding_boxes() {
     for (size_t i = out_.nodes.size(); i-- > 0;) {
       level::Node& n = out_.nodes[i];
@@ -539,12 +746,15 @@ class Builder {
         n.bbox.add(out_.fragments[k].p1);
       }
       for (int32_t c : n.child)
-        if (!level::is_leaf(c)) n.bbox.add(out_.nodes[c].bbox);
+        n.bbox.add(level::is_leaf(c) ? out_.leaves[size_t(level::leaf_index(c))].bbox : out_.nodes[size_t(c)].bbox);
     }
   }
 
+  // A hand-written map's sectors are closed: crossing parity tells whether the start is in one.
   void check_player_start() const {
-    if (!opt_.player_must_be_inside || out_.sectors.empty() || out_.sector_at(out_.player_start) != level::kNone) return;
+    if (!opt_.player_must_be_inside || out_.sectors.empty() ||
+        level::sector_at_brute_force(out_, out_.player_start) != level::kNone)
+      return;
     throw Error(src_.player.loc, "player start is outside every sector");
   }
 
@@ -559,6 +769,9 @@ class Builder {
     s.mean_depth = s.leaves ? double(leaf_depth_sum_) / s.leaves : 0;
     s.shortest_fragment = shortest_;
     s.ray_cast_leaves = segments_only_ ? 0 : unresolved_.size();
+    s.segs = 0;
+    for (const level::Fragment& f : out_.fragments) s.segs += out_.walls[f.wall].two_sided() ? 2 : 1;
+    s.empty_leaves = size_t(std::count_if(out_.leaves.begin(), out_.leaves.end(), [](const level::Leaf& l) { return l.fragment_count == 0; }));
   }
 
   const map::Source& src_;
@@ -566,8 +779,14 @@ class Builder {
   const Options& opt_;
   Rng rng_;
   std::vector<Line> lines_;                       // one per wall
+  std::vector<std::array<int32_t, 2>> sectors_;   // one per wall: its sides' sectors (kNeutral: a segment)
+  std::vector<uint32_t> line_of_;                 // one per wall, until its fragments carry it: its line
+  std::vector<uint32_t> line_count_;              // choose_greedy's scratch: per line, the cell's fragments on it
   Sample sample_;                                 // choose_greedy's scratch
+  double sample_weight_ = 0;                      // its fragments' weight in all
   std::vector<std::pair<int8_t, int8_t>> sides_;  // partition's scratch: each fragment's end sides
+  std::vector<int8_t> convex_sides_;              // convex_region's: each fragment's side facing the region
+  std::vector<uint32_t> convex_order_;
   level::Level out_;
   bool segments_only_ = false;
   std::vector<std::pair<int32_t, Vec2>> unresolved_;

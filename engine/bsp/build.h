@@ -1,5 +1,6 @@
 // The map compiler's core: source walls -> BSP auto-partition -> level::Level.
-// Splitters are always lines of input walls (auto-partitions, de Berg ch. 12).
+// Splitters are always lines of input walls (auto-partitions, de Berg ch. 12); a cell
+// whose walls bound a convex region of one sector is a leaf (Doom's subsector).
 #pragma once
 
 #include <cstdint>
@@ -17,6 +18,7 @@ enum class Strategy {
   kRandom,     // 2DRANDOMBSP: the first fragment after a random permutation
   kFreeSplit,  // random, but take a free split (a fragment spanning its cell) whenever one exists
   kGreedy,     // score k sampled candidates by splits, balance and slivers; take the best
+  // (first, random and freesplit take the first fragment that divides its cell)
 };
 
 std::optional<Strategy> parse_strategy(const std::string& name);
@@ -25,13 +27,18 @@ const char* strategy_name(Strategy s);
 struct Options {
   Strategy strategy = Strategy::kGreedy;
   uint64_t seed = 1;
-  // The defaults: on the 68 Freedoom maps, 32 candidates and a split weight of 8 made
-  // 6.3% fewer fragments than 8 and 4 and leaves 0.05 shallower on average (fewer and
-  // shallower on generated rooms, soups and grids too), for 1.0-1.5x the build time.
+  // The defaults: on the 68 Freedoom maps, beside ZDBSP's trees, these gave 0.96 of its
+  // segs, 1.04 times its subsectors as leaves and 0.995 of its mean leaf depth (geomeans;
+  // every map within 1.05), with fewer fragments and shallower trees than the previous
+  // defaults on generated rooms, soups and grids too (docs/benchmarks.md).
   int greedy_candidates = 32;    // k: candidate splitters sampled per cell
+  int greedy_every_below = 64;   // cells of fewer fragments try every one of them
   int greedy_sample = 128;       // fragments scored per candidate (all of them in smaller cells)
-  double split_weight = 8;       // cost of one split
-  double balance_weight = 1;     // cost of one fragment of imbalance between the sides
+  double split_weight = 12;      // cost of one split
+  double balance_weight = 2.25;  // cost of one barrier (a wall between two sectors) of imbalance between the sides
+  double plain_weight = 2.0 / 9; // a wall that is no barrier, in barriers, for the balance
+  double line_weight = 2;        // gain per fragment on the splitter's line (the node takes it from the cell)
+  double peel_weight = 4;        // cost of a splitter leaving no fragment on one side
   double sliver_weight = 64;     // cost of a split leaving a piece shorter than kSliverLength
   std::function<void(double fraction_done)> progress;  // called now and then during the build
   bool player_must_be_inside = true;  // a hand-written map's start must lie in a sector (imports only warn)
@@ -41,11 +48,13 @@ constexpr double kSliverLength = 1.0 / 16;  // map units
 
 struct Stats {
   size_t walls = 0, fragments = 0, splits = 0, nodes = 0, leaves = 0;
+  size_t segs = 0;               // Doom's count: a two-sided fragment is two segs (one per side)
+  size_t empty_leaves = 0;       // leaves holding no fragment (their cell's walls all lie on its edges)
   size_t free_splits = 0;        // nodes whose splitter cut nothing and spanned its cell
   size_t max_depth = 0;
   double mean_depth = 0;         // over leaves
   double shortest_fragment = 0;  // map units
-  size_t ray_cast_leaves = 0;    // leaves whose sector needed a ray cast rather than a bounding wall
+  size_t ray_cast_leaves = 0;    // leaves facing no sector (none, or plain segments only): found by a ray cast
 
   // de Berg's bound on the expected size of 2DRANDOMBSP: n + 2 n ln n.
   double random_bound() const;

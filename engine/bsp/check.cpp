@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/bsp/convex.h"
+
 namespace p3d::bsp {
 
 namespace {
@@ -17,17 +19,33 @@ int end_side(const Level& level, const Fragment& f, int k, const geom::Line& l) 
   return geom::side_of_crossing(l, w.line(), level.walls[f.cut[k]].line());
 }
 
+// A leaf's fragments, facing the sides the level says, for convex_region.
+struct LeafPieces {
+  const Level& level;
+  const level::Leaf& leaf;
+  std::vector<geom::Line> lines;
+  LeafPieces(const Level& l, const level::Leaf& lf) : level(l), leaf(lf) {
+    for (uint32_t i = 0; i < leaf.fragment_count; ++i) lines.push_back(level.walls[at(i).wall].line());
+  }
+  const Fragment& at(size_t i) const { return level.fragments[leaf.first_fragment + i]; }
+  size_t size() const { return leaf.fragment_count; }
+  const geom::Line& line(size_t i) const { return lines[i]; }
+  int side(size_t i) const { return at(i).side; }
+  int end_side(size_t i, int k, const geom::Line& l) const { return bsp::end_side(level, at(i), k, l); }
+};
+
 class Checker {
  public:
   Checker(const Level& level, size_t max_problems) : level_(level), max_(max_problems) {}
 
   std::vector<std::string> run() {
     check_coverage();
-    if (level_.nodes.empty()) {  // no walls: the whole plane is one leaf
-      if (!level_.walls.empty() || level_.leaves.size() != 1) problem("a tree without nodes must be one leaf and no walls");
-    } else {
-      check_tree();
+    if (level_.leaves.size() != level_.nodes.size() + 1) {
+      problem("the tree has " + std::to_string(level_.nodes.size()) + " nodes and " + std::to_string(level_.leaves.size()) +
+              " leaves");
+      return std::move(problems_);
     }
+    check_tree();
     return std::move(problems_);
   }
 
@@ -70,52 +88,96 @@ class Checker {
     return std::fabs(exact - f.t1) <= 4 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::fabs(exact));
   }
 
+  struct Constraint {
+    geom::Line line;
+    int side;  // -1: the subtree is in front (right), +1: behind (left)
+  };
+
   void check_tree() {
-    struct Constraint {
-      geom::Line line;
-      int side;  // -1: the subtree is in front (right), +1: behind (left)
-    };
     struct Item {
-      int32_t node;
+      int32_t child;
       size_t depth;
       Constraint from_parent;
     };
-    std::vector<Constraint> path;  // constraints of the current node's ancestors (depth-first order)
-    std::vector<Item> stack{{0, 0, {}}};
+    std::vector<Constraint> path;  // constraints of the current item's ancestors (depth-first order)
+    std::vector<Item> stack{{level_.root(), 0, {}}};
     while (!stack.empty()) {
       const Item item = stack.back();
       stack.pop_back();
       path.resize(item.depth == 0 ? 0 : item.depth - 1);
       if (item.depth > 0) path.push_back(item.from_parent);
-      const level::Node& n = level_.nodes[item.node];
+      if (level::is_leaf(item.child)) {
+        check_leaf(level::leaf_index(item.child), path);
+        continue;
+      }
+      const level::Node& n = level_.nodes[item.child];
       const geom::Line splitter = level_.walls[n.splitter].line();
+      const std::string node_name = "node " + std::to_string(item.child);
       for (const Constraint& c : path)
-        if (geom::same_line(c.line, splitter))
-          problem("node " + std::to_string(item.node) + " splits along the same line as an ancestor");
+        if (geom::same_line(c.line, splitter)) problem(node_name + " splits along the same line as an ancestor");
       for (uint32_t i = n.first_fragment; i < n.first_fragment + n.fragment_count; ++i) {
         const Fragment& f = level_.fragments[i];
-        const std::string name = "fragment " + std::to_string(i) + " of node " + std::to_string(item.node);
+        const std::string name = "fragment " + std::to_string(i) + " of " + node_name;
         if (end_side(level_, f, 0, splitter) != 0 || end_side(level_, f, 1, splitter) != 0)
           problem(name + " is off its node's splitter line");
-        for (const Constraint& c : path)
-          if (end_side(level_, f, 0, c.line) == -c.side || end_side(level_, f, 1, c.line) == -c.side)
-            problem(name + " lies on the wrong side of an ancestor's splitter");
-        if (!n.bbox.contains(f.p0, 1e-9) || !n.bbox.contains(f.p1, 1e-9))
-          problem("node " + std::to_string(item.node) + "'s bounding box misses " + name);
+        in_cell(f, path, name);
+        if (!n.bbox.contains(f.p0, 1e-9) || !n.bbox.contains(f.p1, 1e-9)) problem(node_name + "'s bounding box misses " + name);
       }
       for (int c = 0; c < 2; ++c) {
         const int32_t child = n.child[c];
-        if (level::is_leaf(child)) continue;
-        if (!n.bbox.contains(level_.nodes[child].bbox))
-          problem("node " + std::to_string(item.node) + "'s bounding box misses its child's");
+        const geom::BBox& box = level::is_leaf(child) ? level_.leaves[size_t(level::leaf_index(child))].bbox
+                                                      : level_.nodes[size_t(child)].bbox;
+        if (!n.bbox.contains(box)) problem(node_name + "'s bounding box misses its child's");
         stack.push_back({child, item.depth + 1, {splitter, c == 0 ? -1 : +1}});
       }
     }
   }
 
+  // Fragment f lies in the cell `path` bounds: on its side of every ancestor's splitter,
+  // each end an original one or a cut by an ancestor's line. Returns whether it lies on
+  // one of those lines (the cell's edge).
+  bool in_cell(const Fragment& f, const std::vector<Constraint>& path, const std::string& name) {
+    bool on_edge = false;
+    for (const Constraint& c : path) {
+      const int s0 = end_side(level_, f, 0, c.line), s1 = end_side(level_, f, 1, c.line);
+      if (s0 == -c.side || s1 == -c.side) problem(name + " lies on the wrong side of an ancestor's splitter");
+      on_edge |= s0 == 0 && s1 == 0;
+    }
+    for (int k = 0; k < 2; ++k) {
+      if (f.cut[k] == level::kNone) continue;
+      const geom::Line cut = level_.walls[f.cut[k]].line();
+      if (std::none_of(path.begin(), path.end(), [&](const Constraint& c) { return geom::same_line(c.line, cut); }))
+        problem(name + " is cut by a line that splits none of its ancestors");
+    }
+    return on_edge;
+  }
+
+  // The leaf's fragments lie inside its cell (not on its edges, whose fragments are its
+  // ancestors'), face its sector (no barrier among them), and bound a convex region.
+  void check_leaf(int32_t index, const std::vector<Constraint>& path) {
+    const level::Leaf& leaf = level_.leaves[size_t(index)];
+    const std::string leaf_name = "leaf " + std::to_string(index);
+    for (uint32_t i = leaf.first_fragment; i < leaf.first_fragment + leaf.fragment_count; ++i) {
+      const Fragment& f = level_.fragments[i];
+      const level::Wall& w = level_.walls[f.wall];
+      const std::string name = "fragment " + std::to_string(i) + " of " + leaf_name;
+      if (in_cell(f, path, name)) problem(name + " lies on an ancestor's line, not on its node");
+      if (w.segment()) continue;
+      if (!w.two_sided() && f.side != 0) problem(name + " faces the back of its one-sided wall");
+      const int behind = w.two_sided() ? w.sides[1].sector : level_.default_sector;
+      if (behind != level::kNone && behind != w.sides[0].sector) problem(name + " separates two sectors inside its leaf");
+      else if (w.sides[0].sector != leaf.sector) problem(name + " faces another sector than its leaf's");
+    }
+    // With the sides the level gives them (convex_region keeps a side that is given).
+    if (!convex_region(LeafPieces(level_, leaf), sides_, order_).convex)
+      problem(leaf_name + "'s fragments do not bound a convex region");
+  }
+
   const Level& level_;
   size_t max_;
   std::vector<std::string> problems_;
+  std::vector<int8_t> sides_;
+  std::vector<uint32_t> order_;
 };
 
 }  // namespace

@@ -118,7 +118,7 @@ level::Level build_wad_map(const wad::Stack& wads, const std::string& map, const
   level::Level level = build(std::move(imported.source), o, stats);  // its pictures move into the level
   if (warnings) {
     warnings->insert(warnings->end(), imported.warnings.begin(), imported.warnings.end());
-    if (!level.sectors.empty() && level.sector_at(level.player_start) == level::kNone)
+    if (!level.sectors.empty() && level::sector_at_brute_force(level, level.player_start) == level::kNone)
       warnings->push_back(player.str() + ": warning: the player start lies outside every sector");
   }
   return level;

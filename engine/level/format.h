@@ -19,10 +19,12 @@
 //                           2 x side }
 //              side = { i32 sector, i32 upper, i32 middle, i32 lower, f64 x offset, f64 y offset,
 //                       i32 part offsets (-1: none), i32 light }
-//     FRAGS    u32 n; n x { u32 wall, i32 cut0, i32 cut1, f64 t0, f64 t1 }
-//     NODES    u32 n; n x { u32 splitter wall, i32 front, i32 back, u32 first frag, u32 frag count,
-//                           f64 bbox min x, min y, max x, max y }
-//     LEAVES   u32 n; n x { i32 sector }
+//     FRAGS    u32 n; n x { u32 wall, i32 cut0, i32 cut1, f64 t0, f64 t1, u8 side (a leaf's: of its wall,
+//                           facing the leaf's region: 0 front, 1 back; a node's: 0) }
+//     NODES    u32 n; n x { u32 splitter wall, i32 front, i32 back, u32 first frag, u32 frag count (those on
+//                           its line), f64 bbox min x, min y, max x, max y }
+//     LEAVES   u32 n; n x { i32 sector, u32 first frag, u32 frag count (those inside its cell, bounding a
+//                           convex region) }; the nodes' and leaves' ranges tile the fragments
 //     THINGS   u32 n; n x { i32 type, f64 x, y, angle, u32 flags, i32 sprite frame (-1: none), i32 sector (-1: none) }
 //     ANIMS    u32 n; n x { i32 tics, i32 phase, u32 frames, frames x i32 texture }
 //     GRID     u32 present (0 or 1); if 1: u32 cols, u32 rows, f64 cell,
@@ -38,7 +40,7 @@
 namespace p3d::level::format {
 
 constexpr char kMagic[8] = {'P', '3', 'D', 'B', 'S', 'P', '\r', '\n'};
-constexpr uint32_t kVersion = 9;  // 9: the invulnerability map after the light maps
+constexpr uint32_t kVersion = 10;  // 10: leaves hold the fragments bounding their convex regions (subsectors)
 constexpr size_t kHeaderSize = 8 + 4 + 4 + 8 + 8;
 
 constexpr uint32_t tag(const char (&s)[5]) {
@@ -53,13 +55,13 @@ constexpr uint32_t kMeta = tag("META"), kPalette = tag("PALT"), kTextures = tag(
 constexpr size_t kSideRecord = 4 * 4 + 2 * 8 + 4 + 4;
 constexpr size_t kPartOffsetsRecord = 6 * 8;
 constexpr size_t kWallRecord = 4 * 8 + 4 * 4 + 2 * kSideRecord;
-constexpr size_t kFragmentRecord = 4 * 3 + 8 * 2;
+constexpr size_t kFragmentRecord = 4 * 3 + 8 * 2 + 1;
 constexpr size_t kNodeRecord = 4 * 5 + 8 * 4;
 constexpr size_t kSectorRecord = 4 + 8 * 2 + 4 * 5;
 constexpr size_t kThingRecord = 4 + 8 * 3 + 4 + 4 + 4;
 constexpr size_t kSpriteImageRecord = 4 * 3;
 constexpr size_t kSpriteFrameRecord = 4 + 8 * (4 + 1) + 1 + 1 + 8;
-constexpr size_t kLeafRecord = 4;
+constexpr size_t kLeafRecord = 4 * 3;
 constexpr size_t kTextureHeader = 4 + 4 + 4;
 constexpr size_t kGridCellBytes = 1 + 4 * 4;
 

@@ -168,9 +168,12 @@ void derive_geometry(Level& level) {
     const Wall& s = level.walls[n.splitter];
     n.origin = s.a;
     n.direction = s.b - s.a;
-    for (uint32_t i = n.first_fragment; i < n.first_fragment + n.fragment_count; ++i) {
-      const Wall& w = level.walls[level.fragments[i].wall];
-      level.fragments[i].same_direction = glm::dot(w.b - w.a, n.direction) > 0;
+  }
+  for (Leaf& l : level.leaves) {
+    l.bbox = BBox{};
+    for (uint32_t i = l.first_fragment; i < l.first_fragment + l.fragment_count; ++i) {
+      l.bbox.add(level.fragments[i].p0);
+      l.bbox.add(level.fragments[i].p1);
     }
   }
   measure_sprites(level);
@@ -179,7 +182,7 @@ void derive_geometry(Level& level) {
 void place_in_sectors(Level& level) {
   static std::atomic<uint64_t> generations{0};
   level.generation = ++generations;
-  if (level.nodes.empty() || level.leaves.empty()) return;
+  if (level.leaves.empty()) return;
   // Where every leaf holds one sector (a map of plain segments), so does every point.
   const bool one_sector = std::all_of(level.leaves.begin(), level.leaves.end(),
                                       [&](const Leaf& l) { return l.sector == level.leaves[0].sector; });
@@ -243,7 +246,7 @@ void animate_textures(const Level& level, State& state, uint64_t tic) {
 }
 
 int Level::leaf_at(Vec2 p) const {
-  int32_t c = 0;
+  int32_t c = root();
   while (!is_leaf(c)) {
     const Node& n = nodes[c];
     c = n.child[splitter_side(n, p) > 0 ? 1 : 0];
@@ -259,23 +262,41 @@ void ray_cast(const Level& level, Vec2 origin, Vec2 dir,
     double lo, hi;
     bool fragments;  // visit this node's fragments rather than its subtree
   };
-  std::vector<Item> stack{{0, 0.0, kInf, false}};
+  struct Hit {
+    double s, t;
+    uint32_t wall;
+  };
+  std::vector<Item> stack{{level.root(), 0.0, kInf, false}};
+  std::vector<Hit> hits;
+  // The hits of fragments [first, first + count), nearest first.
+  auto visit_fragments = [&](uint32_t first, uint32_t count) {
+    hits.clear();
+    for (uint32_t i = first; i < first + count; ++i) {
+      const Fragment& f = level.fragments[i];
+      const Wall& w = level.walls[f.wall];
+      const Vec2 e = w.b - w.a;
+      const double den = geom::cross(dir, e);
+      if (den == 0) continue;
+      const double s = geom::cross(w.a - origin, e) / den;
+      const double t = geom::cross(w.a - origin, dir) / den;
+      if (s > 0 && t >= f.t0 && t <= f.t1) hits.push_back({s, t, f.wall});
+    }
+    std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) { return a.s < b.s || (a.s == b.s && a.wall < b.wall); });
+    for (const Hit& h : hits)
+      if (!visit(h.wall, h.s, h.t)) return false;
+    return true;
+  };
   while (!stack.empty()) {
     const Item item = stack.back();
     stack.pop_back();
-    if (is_leaf(item.child)) continue;
+    if (is_leaf(item.child)) {  // its fragments bound a convex region: at most two hits
+      const Leaf& leaf = level.leaves[size_t(leaf_index(item.child))];
+      if (!visit_fragments(leaf.first_fragment, leaf.fragment_count)) return;
+      continue;
+    }
     const Node& n = level.nodes[item.child];
     if (item.fragments) {
-      for (uint32_t i = n.first_fragment; i < n.first_fragment + n.fragment_count; ++i) {
-        const Fragment& f = level.fragments[i];
-        const Wall& w = level.walls[f.wall];
-        const Vec2 e = w.b - w.a;
-        const double den = geom::cross(dir, e);
-        if (den == 0) continue;
-        const double s = geom::cross(w.a - origin, e) / den;
-        const double t = geom::cross(w.a - origin, dir) / den;
-        if (s > 0 && t >= f.t0 && t <= f.t1 && !visit(f.wall, s, t)) return;
-      }
+      if (!visit_fragments(n.first_fragment, n.fragment_count)) return;
       continue;
     }
     const double side = splitter_side(n, origin);
@@ -310,7 +331,7 @@ int sector_at_brute_force(const Level& level, Vec2 p) {
 
 std::vector<Vec2> cell_at(const Level& level, Vec2 p, const BBox& bounds) {
   geom::Polygon poly = geom::box_polygon(bounds);
-  int32_t c = 0;
+  int32_t c = level.root();
   while (!is_leaf(c) && !poly.empty()) {
     const Node& n = level.nodes[c];
     const bool back = splitter_side(n, p) > 0;
@@ -322,7 +343,7 @@ std::vector<Vec2> cell_at(const Level& level, Vec2 p, const BBox& bounds) {
 
 std::vector<Chord> node_chords(const Level& level, const BBox& bounds) {
   std::vector<Chord> chords(level.nodes.size());
-  std::vector<std::pair<int32_t, geom::Polygon>> stack{{0, geom::box_polygon(bounds)}};
+  std::vector<std::pair<int32_t, geom::Polygon>> stack{{level.root(), geom::box_polygon(bounds)}};
   while (!stack.empty()) {
     auto [child, poly] = std::move(stack.back());
     stack.pop_back();
@@ -350,7 +371,7 @@ std::vector<Chord> node_chords(const Level& level, const BBox& bounds) {
 
 std::vector<std::vector<Vec2>> leaf_cells(const Level& level, const BBox& bounds) {
   std::vector<std::vector<Vec2>> cells(level.leaves.size());
-  std::vector<std::pair<int32_t, geom::Polygon>> stack{{0, geom::box_polygon(bounds)}};
+  std::vector<std::pair<int32_t, geom::Polygon>> stack{{level.root(), geom::box_polygon(bounds)}};
   while (!stack.empty()) {
     auto [child, poly] = std::move(stack.back());
     stack.pop_back();

@@ -112,22 +112,23 @@ struct Wall {
   Vec2 at(double t) const { return a + (b - a) * t; }
 };
 
-// A piece [t0, t1] of a wall, lying on the splitter line of the node that holds it.
-// cut[k] is the wall whose line produced end k, or kNone for an original wall end.
+// A piece [t0, t1] of a wall: on the splitter line of the node that holds it, or inside
+// the cell of the leaf that holds it. cut[k] is the wall whose line produced end k (an
+// ancestor's splitter), or kNone for an original wall end.
 struct Fragment {
   uint32_t wall = 0;
   int32_t cut[2] = {kNone, kNone};
   double t0 = 0, t1 = 1;
+  int32_t side = 0;  // a leaf's: the side of its wall facing the leaf's region (0 front, 1 back); a node's: 0
   // Derived on load:
   Vec2 p0, p1;
-  bool same_direction = true;  // the wall runs the same way as its node's splitter
 };
 
 // Children: index >= 0 is a node, index < 0 is leaf ~index.
 struct Node {
   uint32_t splitter = 0;  // the wall whose line splits this node
   int32_t child[2] = {0, 0};  // [0] front (right of the splitter), [1] back (left)
-  uint32_t first_fragment = 0, fragment_count = 0;
+  uint32_t first_fragment = 0, fragment_count = 0;  // the fragments on its line
   BBox bbox;  // of every fragment in this subtree
   // Derived on load:
   Vec2 origin, direction;  // the splitter line in map units
@@ -137,8 +138,16 @@ inline bool is_leaf(int32_t child) { return child < 0; }
 inline int32_t leaf_index(int32_t child) { return ~child; }
 inline int32_t leaf_child(int32_t leaf) { return ~leaf; }
 
+// A leaf (Doom's subsector): a convex cell of the partition and the fragments inside
+// it, which bound a convex region of one sector (each lies on the side facing the
+// region of every other's line; those on the cell's edges are its ancestors'). Doom's
+// rule: every point of the cell, even one outside that region (behind a wall, in the
+// void), is in the leaf's sector.
 struct Leaf {
-  int32_t sector = kNone;  // the sector filling this convex cell, or kNone outside the map
+  int32_t sector = kNone;  // the cell's: its fragments', or its edges', or found by a ray cast (kNone: none)
+  uint32_t first_fragment = 0, fragment_count = 0;
+  // Derived on load:
+  BBox bbox;  // of its fragments (empty when it holds none)
 };
 
 // A picture shown for a thing: a texture and Doom's picture offsets. The thing's
@@ -195,7 +204,7 @@ struct Level {
   std::vector<Sector> sectors;
   std::vector<Wall> walls;  // in source order
   std::vector<PartOffsets> part_offsets;  // named by Side::parts
-  std::vector<Fragment> fragments;
+  std::vector<Fragment> fragments;  // node by node and leaf by leaf, as the tree was built
   std::vector<Node> nodes;  // preorder: node 0 is the root, children come after their parent
   std::vector<Leaf> leaves;
   std::vector<Thing> things;
@@ -226,8 +235,11 @@ struct Level {
   BBox bounds;              // of all walls
   uint64_t generation = 0;  // unique per finalize(): renderers key per-level caches on it
 
-  // Point location: descend the BSP. A point on a splitter goes to the front.
+  // Point location: descend the BSP. A point on a splitter goes to the front. Every point
+  // is in its leaf's sector (Doom's rule), outside the map too.
   int leaf_at(Vec2 p) const;
+  // The tree's root: node 0, or leaf 0 when the tree is a single leaf (its walls bound one convex region).
+  int32_t root() const { return nodes.empty() ? leaf_child(0) : 0; }
   int sector_at(Vec2 p) const { return leaves[leaf_at(p)].sector; }
 };
 
@@ -235,8 +247,8 @@ struct Level {
 void finalize(Level& level);
 // Level::light_indices, void_index and missing_index, from the palette and light maps.
 void derive_shading(Level& level);
-// The fields geometry alone decides: wall and fragment points, node lines, bounds,
-// sprite reaches.
+// The fields geometry alone decides: wall and fragment points, node lines, leaf boxes,
+// bounds, sprite reaches.
 void derive_geometry(Level& level);
 // The sectors plain segments and things stand in (by point location). Needs
 // derive_geometry and the leaves' sectors: call again after changing them.
@@ -318,13 +330,14 @@ Texture make_texture_from_columns(std::string name, int width, int height, std::
                                   std::vector<uint8_t> indices = {});
 
 // Walks the walls hit by the ray origin + s * dir (s > 0) in order of distance,
-// using the BSP. visit(wall, s, t) returns false to stop. Hits at a fragment's
-// end may be reported twice (once per fragment).
+// using the BSP (leaf by leaf, each leaf's hits sorted). visit(wall, s, t) returns
+// false to stop. Hits at a fragment's end may be reported twice (once per fragment).
 void ray_cast(const Level& level, Vec2 origin, Vec2 dir,
               const std::function<bool(uint32_t wall, double s, double t)>& visit);
 
 // The sector containing p by brute force: crossing parity of each sector's
-// boundary, no BSP. The oracle for point location.
+// boundary, no BSP. The oracle for point location inside closed sectors (outside
+// every sector it says the default sector, where Level::sector_at says its leaf's).
 int sector_at_brute_force(const Level& level, Vec2 p);
 
 // The convex cell of every leaf, clipped to `bounds` (for drawing and checks).

@@ -1,6 +1,6 @@
 // Bytes -> Level. Validates everything once so that the renderers can trust
-// every index: header, checksum, counts, ranges, tree structure, and that each
-// fragment lies exactly on its node's splitter line.
+// every index: header, checksum, counts, ranges, tree structure (the geometry of the
+// tree is bsp::check_invariants').
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -233,6 +233,8 @@ class Reader {
       f.cut[1] = in_.i32();
       f.t0 = finite("fragment t0");
       f.t1 = finite("fragment t1");
+      f.side = in_.u8();
+      if (f.side > 1) in_.fail("bad fragment side");
     }
   }
 
@@ -256,7 +258,12 @@ class Reader {
     section(format::kLeaves, "LEAF");
     const uint32_t n = in_.count(format::kLeafRecord, "leaves");
     level_.leaves.resize(n);
-    for (Leaf& l : level_.leaves) l.sector = in_.i32();
+    for (Leaf& l : level_.leaves) {
+      in_.at("LEAF", &l - level_.leaves.data());
+      l.sector = in_.i32();
+      l.first_fragment = in_.u32();
+      l.fragment_count = in_.u32();
+    }
   }
 
   void read_things() {
@@ -401,14 +408,19 @@ class Reader {
     }
   }
 
-  // A proper binary tree rooted at node 0 whose fragments partition the fragment
-  // array, each fragment exactly on its node's splitter line.
+  // A proper binary tree rooted at node 0 (or a single leaf), whose nodes' and leaves'
+  // fragment ranges tile the fragment array, each node's fragments exactly on its
+  // splitter line.
   void check_tree() const {
     const size_t nodes = level_.nodes.size(), leaves = level_.leaves.size();
     in_.at("NODE");
-    if (nodes == 0 || leaves != nodes + 1) in_.fail("tree has " + std::to_string(nodes) + " nodes and " +
-                                                     std::to_string(leaves) + " leaves");
+    if (leaves != nodes + 1) in_.fail("tree has " + std::to_string(nodes) + " nodes and " + std::to_string(leaves) + " leaves");
     std::vector<uint8_t> node_seen(nodes, 0), leaf_seen(leaves, 0), fragment_seen(level_.fragments.size(), 0);
+    auto claim = [&](uint32_t first, uint32_t count, const char* what) {
+      if (uint64_t(first) + count > level_.fragments.size()) in_.fail(std::string(what) + " fragment range out of bounds");
+      for (uint32_t f = first; f < first + count; ++f)
+        if (fragment_seen[f]++) in_.fail("fragment " + std::to_string(f) + " belongs to two nodes or leaves");
+    };
     for (size_t i = 0; i < nodes; ++i) {
       in_.at("NODE", int64_t(i));
       const Node& n = level_.nodes[i];
@@ -422,24 +434,25 @@ class Reader {
           if (node_seen[c]++) in_.fail("node " + std::to_string(c) + " has two parents");
         }
       }
-      if (uint64_t(n.first_fragment) + n.fragment_count > level_.fragments.size())
-        in_.fail("node fragment range out of bounds");
+      claim(n.first_fragment, n.fragment_count, "node");
       const geom::Line splitter = level_.walls[n.splitter].line();
-      for (uint32_t f = n.first_fragment; f < n.first_fragment + n.fragment_count; ++f) {
-        if (fragment_seen[f]++) in_.fail("fragment " + std::to_string(f) + " belongs to two nodes");
+      for (uint32_t f = n.first_fragment; f < n.first_fragment + n.fragment_count; ++f)
         if (!geom::same_line(splitter, level_.walls[level_.fragments[f].wall].line()))
           in_.fail("fragment " + std::to_string(f) + " is not on its node's splitter");
-      }
     }
     in_.at("NODE");
     for (size_t i = 1; i < nodes; ++i)
       if (!node_seen[i]) in_.fail("node " + std::to_string(i) + " is unreachable");
     in_.at("LEAF");
-    for (size_t i = 0; i < leaves; ++i)
+    for (size_t i = 0; i < leaves && nodes > 0; ++i)
       if (!leaf_seen[i]) in_.fail("leaf " + std::to_string(i) + " is unreachable");
+    for (const Leaf& l : level_.leaves) {
+      in_.at("LEAF", &l - level_.leaves.data());
+      claim(l.first_fragment, l.fragment_count, "leaf");
+    }
     in_.at("FRAG");
     for (size_t i = 0; i < fragment_seen.size(); ++i)
-      if (!fragment_seen[i]) in_.fail("fragment " + std::to_string(i) + " belongs to no node");
+      if (!fragment_seen[i]) in_.fail("fragment " + std::to_string(i) + " belongs to no node or leaf");
   }
 
   mutable ByteReader in_;

@@ -141,6 +141,7 @@ void write_payload(ByteWriter& out, const Level& level) {
     out.i32(f.cut[1]);
     out.f64(f.t0);
     out.f64(f.t1);
+    out.u8(uint8_t(f.side));
   }
 
   out.u32(format::kNodes);
@@ -159,7 +160,11 @@ void write_payload(ByteWriter& out, const Level& level) {
 
   out.u32(format::kLeaves);
   out.u32(static_cast<uint32_t>(level.leaves.size()));
-  for (const Leaf& l : level.leaves) out.i32(l.sector);
+  for (const Leaf& l : level.leaves) {
+    out.i32(l.sector);
+    out.u32(l.first_fragment);
+    out.u32(l.fragment_count);
+  }
 
   out.u32(format::kThings);
   out.u32(static_cast<uint32_t>(level.things.size()));
@@ -201,8 +206,8 @@ size_t encoded_size_estimate(const Level& level) {
   for (const Sector& s : level.sectors) bytes += 48 + s.name.size();
   for (const SpriteFrame& f : level.sprite_frames) bytes += 64 + f.name.size();
   bytes += 12 * level.sprite_images.size() + format::kWallRecord * level.walls.size() +
-           format::kPartOffsetsRecord * level.part_offsets.size() + 28 * level.fragments.size() +
-           52 * level.nodes.size() + 4 * level.leaves.size() + 40 * level.things.size();
+           format::kPartOffsetsRecord * level.part_offsets.size() + format::kFragmentRecord * level.fragments.size() +
+           format::kNodeRecord * level.nodes.size() + format::kLeafRecord * level.leaves.size() + 40 * level.things.size();
   if (level.grid) bytes += 24 + level.grid->solid.size() + level.grid->faces.size() * 4;
   for (const doom::TextureAnimation& a : level.animations) bytes += 12 + 4 * a.frames.size();
   return bytes;

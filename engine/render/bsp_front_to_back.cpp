@@ -1,17 +1,20 @@
 // The front-to-back BSP renderer (the survey's Algorithm 13, with Doom's sector
-// clipping): walk the tree nearest subtree first, draw each node's fragments into
-// the columns still open, set a column's bit in the W-bit array once it closes,
-// skip any subtree whose bounding box projects onto closed columns only, and stop
-// the walk the moment every column is closed. Things met on the way (attached to the
+// clipping): walk the tree nearest subtree first, draw each node's fragments (on its
+// splitter line, between its near and far subtrees) and each leaf's (in one step: they
+// bound a convex region, so none hides another but where those seen from behind,
+// entering the region, lie in front of the others: those go first) into the columns
+// still open, set a column's bit in the W-bit array once it closes, skip any subtree or
+// leaf whose bounding box projects onto closed columns only, and stop the walk the
+// moment every column is closed. Things met on the way (attached to the
 // nodes and leaves the walk reaches) are drawn as sprites at the end, farthest first.
 //
 // Things move, so they are attached to the tree anew for every frame (attach_things):
 // a sprite is a picture facing the viewer and may reach up to its frame's
 // SpriteFrame::reach sideways from its thing, across splitters. It attaches to the
 // deepest node whose cell holds that whole disc (or to the leaf, if one does), and
-// culling boxes grow to cover the discs of their subtree: a subtree is skipped only
-// when every column it could touch was closed by walls visited earlier, which lie in
-// front of every point of the subtree's cell. So culling never hides a sprite pixel.
+// culling boxes grow to cover the discs of their subtree: a subtree (or leaf) is
+// skipped only when every column it could touch was closed by walls visited earlier,
+// which lie in front of every point of its cell. So culling never hides a sprite pixel.
 //
 // The screen is split into column strips, each walked alone with its own W-bit array
 // (the columns outside it closed from the start), canvas and sprites, so strips draw
@@ -90,8 +93,8 @@ class BspFrontToBack final : public Renderer {
 
  private:
   struct Item {
-    int32_t child;
-    bool draw_fragments;  // draw this node's own fragments (its near subtree is done)
+    int32_t child;         // a node or a leaf (level::leaf_child)
+    bool draw_fragments;   // draw this node's own fragments (its near subtree is done)
   };
   // Things attached to a node or leaf: a range of attached_.
   struct ThingRange {
@@ -103,6 +106,7 @@ class BspFrontToBack final : public Renderer {
     Canvas canvas;
     ColumnMask mask;
     std::vector<Item> stack;
+    std::vector<uint32_t> facing;      // draw_leaf's scratch
     std::vector<uint32_t>* order = nullptr;
     std::vector<uint32_t> fragments_drawn;
     RenderStats stats;
@@ -114,7 +118,7 @@ class BspFrontToBack final : public Renderer {
     s.stats = {};
     s.fragments_drawn.clear();
     if (s.order) s.order->clear();
-    s.stack.assign(1, {0, false});
+    s.stack.assign(1, {level.root(), false});
     while (!s.stack.empty()) {
       if (s.mask.full()) {
         s.stats.early_exit = true;
@@ -122,23 +126,29 @@ class BspFrontToBack final : public Renderer {
       }
       const Item item = s.stack.back();
       s.stack.pop_back();
-      if (level::is_leaf(item.child)) {
-        add_sprites(leaf_things_[size_t(level::leaf_index(item.child))], s.canvas);
-        continue;
-      }
-      const level::Node& node = level.nodes[item.child];
       if (item.draw_fragments) {
-        draw_fragments(level, view, node, s);
+        const level::Node& node = level.nodes[size_t(item.child)];
+        draw_fragments(level, view, node.first_fragment, node.fragment_count, s);
         continue;
       }
-      // The culling box covers the subtree's fragments and the sprites of its things
-      // (attach_things): nothing visible is skipped.
-      const ColumnRange range = columns_of_box(view, cull_boxes_[size_t(item.child)]);
+      // The culling box covers the fragments and the sprites of the things of the
+      // subtree or leaf (attach_things): nothing visible is skipped.
+      const bool leaf = level::is_leaf(item.child);
+      const geom::BBox& box = leaf ? leaf_cull_boxes_[size_t(level::leaf_index(item.child))] : cull_boxes_[size_t(item.child)];
+      if (box.empty()) continue;  // a leaf holding nothing
+      const ColumnRange range = columns_of_box(view, box);
       if (range.empty() || s.mask.all_closed(range.x0, range.x1)) {
         ++s.stats.subtrees_culled;
         continue;
       }
+      if (leaf) {
+        const int32_t index = level::leaf_index(item.child);
+        add_sprites(leaf_things_[size_t(index)], s.canvas);
+        draw_leaf(level, view, level.leaves[size_t(index)], s);
+        continue;
+      }
       ++s.stats.nodes_visited;
+      const level::Node& node = level.nodes[size_t(item.child)];
       add_sprites(node_things_[size_t(item.child)], s.canvas);
       const int near = level::splitter_side(node, camera.pos) > 0 ? 1 : 0;
       s.stack.push_back({node.child[1 - near], false});
@@ -163,9 +173,9 @@ class BspFrontToBack final : public Renderer {
     owners_.clear();
     for (size_t i = 0; i < state.things.size(); ++i) {
       const level::ShownThing& t = state.things[i];
-      if (t.frame == level::kNone || nodes == 0) continue;
+      if (t.frame == level::kNone || leaves == 0) continue;
       const double reach = level.sprite_frames[size_t(t.frame)].reach;
-      int32_t c = 0;
+      int32_t c = level.root();
       while (!level::is_leaf(c)) {
         const level::Node& n = level.nodes[size_t(c)];
         const double side = level::splitter_side(n, t.pos) / glm::length(n.direction);  // signed distance, > 0 back
@@ -192,44 +202,71 @@ class BspFrontToBack final : public Renderer {
         box.add(t.pos + geom::Vec2(reach));
       }
     };
+    leaf_cull_boxes_.resize(leaves);
+    for (size_t i = 0; i < leaves; ++i) {
+      leaf_cull_boxes_[i] = level.leaves[i].bbox;
+      add_discs(leaf_things_[i], leaf_cull_boxes_[i]);
+    }
     cull_boxes_.resize(nodes);
     for (size_t i = nodes; i-- > 0;) {  // children come after their parent
       const level::Node& n = level.nodes[i];
       geom::BBox& box = cull_boxes_[i];
       box = n.bbox;
       add_discs(node_things_[i], box);
-      for (int32_t c : n.child) {
-        if (level::is_leaf(c))
-          add_discs(leaf_things_[size_t(level::leaf_index(c))], box);
-        else
-          box.add(cull_boxes_[size_t(c)]);
-      }
+      for (int32_t c : n.child)
+        box.add(level::is_leaf(c) ? leaf_cull_boxes_[size_t(level::leaf_index(c))] : cull_boxes_[size_t(c)]);
     }
   }
   ThingRange& range_of(int32_t child) {
     return level::is_leaf(child) ? leaf_things_[size_t(level::leaf_index(child))] : node_things_[size_t(child)];
   }
 
-  static void draw_fragments(const level::Level& level, const View& view, const level::Node& node, Strip& s) {
-    for (uint32_t i = node.first_fragment; i < node.first_fragment + node.fragment_count && !s.mask.full(); ++i) {
+  // A node's fragments: on one line, none hides another.
+  static void draw_fragments(const level::Level& level, const View& view, uint32_t first, uint32_t count, Strip& s) {
+    for (uint32_t i = first; i < first + count; ++i) {
+      const level::Wall& wall = level.walls[level.fragments[i].wall];
+      const int side = facing_side(wall, view.pos);
+      if (side < 0 || !visible_side(wall, side)) continue;  // edge-on, or the back of a one-sided wall
+      if (draw_fragment(level, view, i, side, s)) return;
+    }
+  }
+
+  // A leaf's fragments, in one step: those the camera sees from behind (two-sided walls
+  // and segments, where a ray enters the region) first, then those facing it (where a
+  // ray leaves it). Within each set none hides another (engine/bsp/convex.h).
+  static void draw_leaf(const level::Level& level, const View& view, const level::Leaf& leaf, Strip& s) {
+    s.facing.clear();
+    for (uint32_t i = leaf.first_fragment; i < leaf.first_fragment + leaf.fragment_count; ++i) {
       const level::Fragment& f = level.fragments[i];
       const level::Wall& wall = level.walls[f.wall];
       const int side = facing_side(wall, view.pos);
-      if (side < 0 || !visible_side(wall, side)) continue;  // edge-on, or the back of a one-sided wall
-      const ColumnRange range = columns_of_segment(view, f.p0, f.p1);
-      if (range.empty()) continue;
-      const WallProjector projector(view, wall.a, wall.b);
-      bool drew = false;
-      s.mask.for_each_open(range.x0, range.x1, [&](int x) {
-        double depth, t;
-        if (!projector.hit(x, depth, t) || !in_fragment(f, t)) return;
-        drew = true;
-        if (s.canvas.draw_wall(x, {f.wall, side, depth, t, int32_t(i)})) s.mask.close(x);
-      });
-      if (!drew) continue;
+      if (side < 0 || !visible_side(wall, side)) continue;
+      if (side == f.side) s.facing.push_back(i);
+      else if (draw_fragment(level, view, i, side, s)) return;
+    }
+    for (uint32_t i : s.facing)
+      if (draw_fragment(level, view, i, level.fragments[i].side, s)) return;
+  }
+
+  // Draws fragment i, seen from `side` of its wall, into the open columns; true once every column is closed.
+  static bool draw_fragment(const level::Level& level, const View& view, uint32_t i, int side, Strip& s) {
+    const level::Fragment& f = level.fragments[i];
+    const level::Wall& wall = level.walls[f.wall];
+    const ColumnRange range = columns_of_segment(view, f.p0, f.p1);
+    if (range.empty()) return false;
+    const WallProjector projector(view, wall.a, wall.b);
+    bool drew = false;
+    s.mask.for_each_open(range.x0, range.x1, [&](int x) {
+      double depth, t;
+      if (!projector.hit(x, depth, t) || !in_fragment(f, t)) return;
+      drew = true;
+      if (s.canvas.draw_wall(x, {f.wall, side, depth, t, int32_t(i)})) s.mask.close(x);
+    });
+    if (drew) {
       s.fragments_drawn.push_back(i);
       if (s.order) s.order->push_back(i);
     }
+    return s.mask.full();
   }
 
   // Sums over the strips; a fragment or a sprite drawn in several strips counts once,
@@ -263,10 +300,10 @@ class BspFrontToBack final : public Renderer {
   ThreadPool pool_;
   std::vector<Strip> strips_;
   // This frame's things on the tree (attach_things): per node and leaf a range of
-  // attached_ (indices in state.things), and per node its culling box.
+  // attached_ (indices in state.things), and per node and leaf its culling box.
   std::vector<ThingRange> node_things_, leaf_things_;
   std::vector<uint32_t> attached_;
-  std::vector<geom::BBox> cull_boxes_;
+  std::vector<geom::BBox> cull_boxes_, leaf_cull_boxes_;
   std::vector<std::pair<int32_t, uint32_t>> owners_;  // attach_things' scratch: (node or leaf_child, thing)
   std::vector<uint32_t> fragments_, things_;  // merged_stats' scratch
 };

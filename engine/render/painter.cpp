@@ -1,5 +1,7 @@
 // The painter's algorithm on the BSP (de Berg's PaintersAlgorithm): walk the tree
-// far subtree first and paint every visible fragment over whatever is behind it.
+// far subtree first and paint every visible fragment over whatever is behind it: a
+// node's between its far and near subtrees, a leaf's those facing the camera (on the
+// far side of its region) first, then those seen from behind (on its near side).
 // No occlusion array, so everything in the view cone is drawn: its overdraw is
 // what the front-to-back renderer saves. Only boxes outside the view cone are skipped.
 #include <algorithm>
@@ -29,14 +31,21 @@ class Painter final : public Renderer {
     if (order_) order_->clear();
     RenderStats stats;
 
-    stack_.assign(1, {0, false});
+    stack_.assign(1, {level.root(), false});
     while (!stack_.empty()) {
       const Item item = stack_.back();
       stack_.pop_back();
-      if (level::is_leaf(item.child)) continue;
-      const level::Node& node = level.nodes[item.child];
+      if (level::is_leaf(item.child)) {
+        paint_leaf(level, view, level.leaves[size_t(level::leaf_index(item.child))], stats);
+        continue;
+      }
+      const level::Node& node = level.nodes[size_t(item.child)];
       if (item.draw_fragments) {
-        paint_fragments(level, view, node, stats);
+        for (uint32_t i = node.first_fragment; i < node.first_fragment + node.fragment_count; ++i) {
+          const level::Wall& wall = level.walls[level.fragments[i].wall];
+          const int side = facing_side(wall, view.pos);
+          if (side >= 0 && visible_side(wall, side)) paint_fragment(level, view, i, side, stats);
+        }
         continue;
       }
       if (columns_of_box(view, node.bbox).empty()) {  // outside the view cone: not occlusion
@@ -62,36 +71,40 @@ class Painter final : public Renderer {
   }
 
  private:
-  struct Item {
-    int32_t child;
-    bool draw_fragments;
-  };
-
-  void paint_fragments(const level::Level& level, const View& view, const level::Node& node, RenderStats& stats) {
-    for (uint32_t i = node.first_fragment; i < node.first_fragment + node.fragment_count; ++i) {
-      const level::Fragment& f = level.fragments[i];
-      const level::Wall& wall = level.walls[f.wall];
-      const int side = facing_side(wall, view.pos);
-      if (side < 0 || !visible_side(wall, side)) continue;
-      const ColumnRange range = columns_of_segment(view, f.p0, f.p1);
-      if (range.empty()) continue;
-      const WallProjector projector(view, wall.a, wall.b);
-      bool drew = false;
-      for (int x = range.x0; x <= range.x1; ++x) {
-        double depth, t;
-        if (!projector.hit(x, depth, t) || !in_fragment(f, t)) continue;
-        const WallHit hit{f.wall, side, depth, t, int32_t(i)};
-        if (!painted_[x]) {  // the farthest hit of this column: first the view beyond it
-          painted_[x] = true;
-          if (wall.two_sided()) canvas_.paint_background(x, wall.sides[1 - side].sector);
-        }
-        canvas_.paint_wall(x, hit);
-        column_hits_[x].push_back(hit);
-        drew = true;
+  // Far to near: the fragments facing the camera (where rays leave the leaf's region),
+  // then those seen from behind (where they enter it).
+  void paint_leaf(const level::Level& level, const View& view, const level::Leaf& leaf, RenderStats& stats) {
+    for (int pass = 0; pass < 2; ++pass)
+      for (uint32_t i = leaf.first_fragment; i < leaf.first_fragment + leaf.fragment_count; ++i) {
+        const level::Fragment& f = level.fragments[i];
+        const level::Wall& wall = level.walls[f.wall];
+        const int side = facing_side(wall, view.pos);
+        if (side < 0 || !visible_side(wall, side) || (side == f.side) != (pass == 0)) continue;
+        paint_fragment(level, view, i, side, stats);
       }
-      stats.fragments_drawn += drew;
-      if (drew && order_) order_->push_back(i);
+  }
+
+  void paint_fragment(const level::Level& level, const View& view, uint32_t i, int side, RenderStats& stats) {
+    const level::Fragment& f = level.fragments[i];
+    const level::Wall& wall = level.walls[f.wall];
+    const ColumnRange range = columns_of_segment(view, f.p0, f.p1);
+    if (range.empty()) return;
+    const WallProjector projector(view, wall.a, wall.b);
+    bool drew = false;
+    for (int x = range.x0; x <= range.x1; ++x) {
+      double depth, t;
+      if (!projector.hit(x, depth, t) || !in_fragment(f, t)) continue;
+      const WallHit hit{f.wall, side, depth, t, int32_t(i)};
+      if (!painted_[x]) {  // the farthest hit of this column: first the view beyond it
+        painted_[x] = true;
+        if (wall.two_sided()) canvas_.paint_background(x, wall.sides[1 - side].sector);
+      }
+      canvas_.paint_wall(x, hit);
+      column_hits_[x].push_back(hit);
+      drew = true;
     }
+    stats.fragments_drawn += drew;
+    if (drew && order_) order_->push_back(i);
   }
 
   // The painter's hits arrive far to near; replaying them near to far through the
@@ -103,6 +116,10 @@ class Painter final : public Renderer {
   }
 
   Canvas canvas_;
+  struct Item {
+    int32_t child;        // a node or a leaf (level::leaf_child)
+    bool draw_fragments;  // paint this node's own fragments
+  };
   std::vector<Item> stack_;
   std::vector<bool> painted_;
   std::vector<std::vector<WallHit>> column_hits_;

@@ -1,6 +1,8 @@
 // The brute-force reference renderer, the oracle of the tests: for every column,
 // hit every wall, sort the hits by distance and hand them to the canvas nearest
-// first. No BSP anywhere, not even to find the camera's sector.
+// first. No BSP in what it draws; the camera's sector is the level's own (Doom's
+// rule, Level::sector_at: the sector of the leaf it stands in, which crossing parity
+// cannot tell in an unclosed sector or outside the map).
 #include <algorithm>
 
 #include "engine/render/draw.h"
@@ -18,7 +20,7 @@ class Reference final : public Renderer {
   RenderStats render(const level::Level& level, const level::State& state, const Camera& camera, Frame& frame,
                      Probe* probe) override {
     const View view(camera, frame.width, frame.height);
-    canvas_.begin(level, state, view, frame, level::sector_at_brute_force(level, camera.pos), probe);
+    canvas_.begin(level, state, view, frame, level.sector_at(camera.pos), probe);
 
     walls_.clear();
     for (uint32_t i = 0; i < level.walls.size(); ++i) {

@@ -141,7 +141,7 @@ class SphereTracer final : public Renderer {
                      Probe* probe) override {
     prepare(level);
     const View view(camera, frame.width, frame.height);
-    canvas_.begin(level, state, view, frame, level::sector_at_brute_force(level, camera.pos), probe);
+    canvas_.begin(level, state, view, frame, level.sector_at(camera.pos), probe);  // Doom's rule, as every renderer's
     RenderStats stats;
     for (int x = 0; x < view.width; ++x) stats.add_ray(trace(level, view, x));
     for (uint32_t i = 0; i < state.things.size(); ++i) canvas_.add_sprite(i);

@@ -130,10 +130,11 @@ TEST_F(LevelIo, RejectsDamagedFiles) {
   text[0] = 'w';
   EXPECT_EQ(decode_error(text), "x.bsp: not a compiled level (bad magic; compile maps with mapc)");
 
-  std::vector<uint8_t> version(good);
-  version[8] = 10;
-  EXPECT_EQ(decode_error(version), "x.bsp: compiled level version 10 is not supported (expected " +
-                                       std::to_string(format::kVersion) + "; recompile with mapc)");
+  std::vector<uint8_t> version(good);  // the last format, before leaves held fragments
+  version[8] = uint8_t(format::kVersion - 1);
+  EXPECT_EQ(decode_error(version), "x.bsp: compiled level version " + std::to_string(format::kVersion - 1) +
+                                       " is not supported (expected " + std::to_string(format::kVersion) +
+                                       "; recompile with mapc)");
 
   std::vector<uint8_t> truncated(good.begin(), good.begin() + good.size() / 2);
   EXPECT_NE(decode_error(truncated).find("x.bsp: truncated or padded file"), std::string::npos);
@@ -155,6 +156,9 @@ TEST_F(LevelIo, RejectsDamagedFiles) {
   reseal(cut);
   EXPECT_NE(decode_error(cut).find("x.bsp: truncated"), std::string::npos) << decode_error(cut);
 }
+
+// The first leaf holding fragments.
+Leaf& held_leaf(Level& l) { return *std::find_if(l.leaves.begin(), l.leaves.end(), [](const Leaf& x) { return x.fragment_count > 0; }); }
 
 // Edits that keep a valid checksum must still be caught by the structural checks.
 TEST_F(LevelIo, RejectsInconsistentStructure) {
@@ -187,6 +191,11 @@ TEST_F(LevelIo, RejectsInconsistentStructure) {
        },
        "is not on its node's splitter"},
       {"coordinate range", [](Level& l) { l.walls[0].p1.x = int64_t(1) << 40; }, "x.bsp: section WALL, record 0: wall coordinate out of range"},
+      {"fragment side", [](Level& l) { l.fragments[3].side = 2; }, "x.bsp: section FRAG, record 3: bad fragment side"},
+      {"leaf range", [](Level& l) { l.leaves.back().fragment_count = 1u << 30; }, "leaf fragment range out of bounds"},
+      {"fragment in a node and a leaf", [](Level& l) { held_leaf(l).first_fragment = l.nodes[0].first_fragment; },
+       "belongs to two nodes or leaves"},
+      {"fragment in none", [](Level& l) { held_leaf(l).fragment_count = 0; }, "belongs to no node or leaf"},
   };
   for (const Case& c : cases) {
     Level copy = *level_;

@@ -120,7 +120,7 @@ void random_walks(const level::Level& level, uint64_t seed, int walks, int tics,
       for (int attempt = 0; attempt < 1000; ++attempt) {
         const Vec2 q{rng.uniform(level.bounds.min.x, level.bounds.max.x),
                      rng.uniform(level.bounds.min.y, level.bounds.max.y)};
-        const int sector = level.sector_at(q);
+        const int sector = level::sector_at_brute_force(level, q);  // inside a sector, not the void
         if (sector == level::kNone) continue;
         bool clear = true;
         for (const level::Wall& wall : level.walls) clear = clear && !segment_meets_box(wall.a, wall.b, q, kRadius + 1);

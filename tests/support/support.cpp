@@ -26,7 +26,7 @@ render::Camera random_camera(const level::Level& level, Rng& rng) {
   const bool has_sectors = std::any_of(level.walls.begin(), level.walls.end(), [](const level::Wall& w) { return !w.segment(); });
   for (int attempt = 0;; ++attempt) {
     const geom::Vec2 p{rng.uniform(level.bounds.min.x, level.bounds.max.x), rng.uniform(level.bounds.min.y, level.bounds.max.y)};
-    const int sector = level.sector_at(p);
+    const int sector = level::sector_at_brute_force(level, p);  // inside a sector (Doom's rule gives one to any point)
     if (has_sectors && sector == level::kNone && attempt < 1000) continue;
     render::Camera c = render::camera_at(level, p, rng.uniform(0, 360), rng.uniform(8, 72), rng.uniform(60, 120));
     return c;

@@ -274,6 +274,33 @@ TEST(Import, UnclosedSectorsAreKept) {
   EXPECT_TRUE(bsp::check_invariants(b.level).empty());
 }
 
+// Doom's rule for a sector left open: every point is in its subsector's sector. Here B
+// lacks its east wall: inside B, and out past where the wall would be, a camera stands
+// in a sector (the floor and ceiling the tree puts there), and every renderer draws
+// what the reference draws, to the bit.
+TEST(Import, UnclosedSectorsGiveEveryPointItsLeafsSector) {
+  TestMap m = two_rooms();
+  m.lines.erase(m.lines.begin() + 5);  // B's east wall
+  const Built b = build(m);
+  const level::Level& l = b.level;
+  EXPECT_EQ(l.sector_at({400, 128}), l.walls[4].sides[0].sector) << "inside B";
+  for (const geom::Vec2 p : {geom::Vec2{400, 128}, geom::Vec2{530, 128}, geom::Vec2{700, 40}, geom::Vec2{600, 300}}) {
+    ASSERT_NE(l.sector_at(p), level::kNone) << p.x << "," << p.y;
+    for (double angle = 0; angle < 360; angle += 45) {
+      const render::Camera camera = render::camera_at(l, p, angle);
+      render::Frame expected(96, 60);
+      render::make_renderer("reference")->render(l, camera, expected);
+      for (const std::string& name : render::renderer_names()) {
+        const auto renderer = render::make_renderer(name);
+        if (!renderer->supports(l)) continue;
+        render::Frame frame(96, 60);
+        renderer->render(l, camera, frame);
+        EXPECT_EQ(frame.pixels, expected.pixels) << name << " at " << p.x << "," << p.y << " angle " << angle;
+      }
+    }
+  }
+}
+
 TEST(Import, ZeroLengthLinesAreDropped) {
   TestMap m = two_rooms();
   m.lines.push_back({0, 0, 1, 0, 0, 0});
