@@ -231,9 +231,6 @@ int main(int argc, char** argv) {
   app.add_option("--candidates", a.options.greedy_candidates, "greedy: candidate splitters per cell")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
-  app.add_option("--every-below", a.options.greedy_every_below, "greedy: cells of fewer fragments try every one")
-      ->check(CLI::Range(0, 1 << 20))
-      ->capture_default_str();
   app.add_option("--sample", a.options.greedy_sample, "greedy: fragments scored per candidate")
       ->check(CLI::Range(1, 1 << 30))
       ->capture_default_str();

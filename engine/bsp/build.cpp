@@ -445,8 +445,7 @@ class Builder {
   static constexpr uint32_t kScored = 1u << 31;  // line_count_'s mark: this line was scored
   Choice choose_greedy(const std::vector<Frag>& frags) {
     const size_t m = frags.size();
-    const size_t k = m <= size_t(std::max(0, opt_.greedy_every_below)) ? m
-                                                                       : std::min<size_t>(m, std::max(1, opt_.greedy_candidates));
+    const size_t k = std::min<size_t>(m, std::max(1, opt_.greedy_candidates));
     const size_t samples = std::min<size_t>(m, std::max(1, opt_.greedy_sample));
     sample_.clear();
     for (size_t i = 0; i < samples; ++i) {

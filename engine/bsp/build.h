@@ -32,7 +32,6 @@ struct Options {
   // every map within 1.05), with fewer fragments and shallower trees than the previous
   // defaults on generated rooms, soups and grids too (docs/benchmarks.md).
   int greedy_candidates = 32;    // k: candidate splitters sampled per cell
-  int greedy_every_below = 64;   // cells of fewer fragments try every one of them
   int greedy_sample = 128;       // fragments scored per candidate (all of them in smaller cells)
   double split_weight = 12;      // cost of one split
   double balance_weight = 2.25;  // cost of one barrier (a wall between two sectors) of imbalance between the sides
