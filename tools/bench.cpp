@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <functional>
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -365,9 +366,9 @@ bool on_path(const std::string& program) {
   return false;
 }
 
-// ZDBSP's nodes for one map: segs, and the mean depth of its subsectors (as our leaves).
+// ZDBSP's nodes for one map: segs, subsectors (as our leaves) and their mean depth.
 struct PeerTree {
-  size_t segs = 0;
+  size_t segs = 0, subsectors = 0;
   double mean_depth = 0;
 };
 PeerTree read_peer_tree(const std::filesystem::path& wad_path, const std::string& map) {
@@ -398,6 +399,7 @@ PeerTree read_peer_tree(const std::filesystem::path& wad_path, const std::string
       }
     }
   }
+  t.subsectors = leaves;
   t.mean_depth = leaves ? double(depth_sum) / double(leaves) : 0;
   return t;
 }
@@ -493,11 +495,12 @@ void bench_wad(const Settings& s) {
               source.wads.back().filename().c_str(), s.runs);
   const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
   report.print("| map | lines | mapc ms | zdbsp ms | mapc / zdbsp | segs (2-sided x2) | zdbsp segs | segs / zdbsp | "
-              "depth | zdbsp depth | bsp ms/frame %dx%d | fps | sprites / frame | without things ms | with / without | "
+              "leaves | zdbsp subsectors | leaves / zdbsp | mean depth | zdbsp mean depth | depth / zdbsp | "
+              "bsp ms/frame %dx%d | fps | sprites / frame | without things ms | with / without | "
               "%d threads ms | 1920x1080, %d threads ms |\n",
               s.width, s.height, cores, cores);
-  report.print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  std::vector<double> time_ratios, seg_ratios, frame_ms, sprite_ratios, threads_ms, hd_ms;
+  report.print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  std::vector<double> time_ratios, seg_ratios, leaf_ratios, depth_ratios, frame_ms, sprite_ratios, threads_ms, hd_ms;
   for (const std::string& map : maps) {
     bsp::Stats stats;
     const level::Level level = bsp::build_wad_map(wads, map, {}, nullptr, &stats);
@@ -525,21 +528,35 @@ void bench_wad(const Settings& s) {
     const level::State state = level::start_state(level, s.skill);  // things drawn, as t.with_things_ms
     threads_ms.push_back(time_threads(level, state, cameras, s.width, s.height, cores, s.repeat).second);
     hd_ms.push_back(time_threads(level, state, cameras, 1920, 1080, cores, s.repeat).second);
-    if (zdbsp) time_ratios.push_back(ours_ms / peer_ms), seg_ratios.push_back(double(segs) / double(tree.segs));
-    report.print("| %s | %zu | %s | %s | %s | %zu | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", map.c_str(),
-                stats.walls, fixed(ours_ms, 1).c_str(), zdbsp ? fixed(peer_ms, 1).c_str() : "n/a",
-                zdbsp ? fixed(ours_ms / peer_ms, 2).c_str() : "n/a", segs, zdbsp ? std::to_string(tree.segs).c_str() : "n/a",
-                zdbsp ? fixed(double(segs) / double(tree.segs), 3).c_str() : "n/a", fixed(stats.mean_depth, 1).c_str(),
-                zdbsp ? fixed(tree.mean_depth, 1).c_str() : "n/a", fixed(t.with_things_ms, 3).c_str(),
+    if (zdbsp) {
+      time_ratios.push_back(ours_ms / peer_ms), seg_ratios.push_back(double(segs) / double(tree.segs));
+      leaf_ratios.push_back(double(stats.leaves) / double(tree.subsectors));
+      depth_ratios.push_back(stats.mean_depth / tree.mean_depth);
+    }
+    const auto peer_cell = [&](const std::string& text) { return zdbsp ? text : std::string("n/a"); };
+    report.print("| %s | %zu | %s | %s | %s | %zu | %s | %s | %zu | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
+                map.c_str(), stats.walls, fixed(ours_ms, 1).c_str(), peer_cell(fixed(peer_ms, 1)).c_str(),
+                peer_cell(fixed(ours_ms / peer_ms, 2)).c_str(), segs, peer_cell(std::to_string(tree.segs)).c_str(),
+                peer_cell(fixed(double(segs) / double(tree.segs), 3)).c_str(), stats.leaves,
+                peer_cell(std::to_string(tree.subsectors)).c_str(),
+                peer_cell(fixed(double(stats.leaves) / double(tree.subsectors), 3)).c_str(), fixed(stats.mean_depth, 2).c_str(),
+                peer_cell(fixed(tree.mean_depth, 2)).c_str(), peer_cell(fixed(stats.mean_depth / tree.mean_depth, 3)).c_str(),
+                fixed(t.with_things_ms, 3).c_str(),
                 fixed(1000 / t.with_things_ms, 0).c_str(), fixed(t.sprites, 1).c_str(),
                 fixed(t.without_things_ms, 3).c_str(), fixed(t.ratio, 2).c_str(), fixed(threads_ms.back(), 3).c_str(),
                 fixed(hd_ms.back(), 3).c_str());
     std::fflush(stdout);
   }
-  report.print("| geomean | | | | %s | | | %s | | | %s | | | | %s | %s | %s |\n",
-              zdbsp ? fixed(geomean(time_ratios), 2).c_str() : "n/a", zdbsp ? fixed(geomean(seg_ratios), 3).c_str() : "n/a",
-              fixed(geomean(frame_ms), 3).c_str(), fixed(geomean(sprite_ratios), 2).c_str(),
-              fixed(geomean(threads_ms), 3).c_str(), fixed(geomean(hd_ms), 3).c_str());
+  const auto peer_mean = [&](const std::vector<double>& v) { return zdbsp ? fixed(geomean(v), 3) : std::string("n/a"); };
+  report.print("| geomean | | | | %s | | | %s | | | %s | | | %s | %s | | | | %s | %s | %s |\n",
+              zdbsp ? fixed(geomean(time_ratios), 2).c_str() : "n/a", peer_mean(seg_ratios).c_str(),
+              peer_mean(leaf_ratios).c_str(), peer_mean(depth_ratios).c_str(), fixed(geomean(frame_ms), 3).c_str(),
+              fixed(geomean(sprite_ratios), 2).c_str(), fixed(geomean(threads_ms), 3).c_str(), fixed(geomean(hd_ms), 3).c_str());
+  if (zdbsp && !maps.empty()) {
+    const auto worst = [](const std::vector<double>& v) { return fixed(*std::max_element(v.begin(), v.end()), 3); };
+    report.print("| worst map | | | | | | | %s | | | %s | | | %s | | | | | | | |\n", worst(seg_ratios).c_str(),
+                worst(leaf_ratios).c_str(), worst(depth_ratios).c_str());
+  }
   std::filesystem::remove_all(dir);
 }
 
@@ -586,35 +603,36 @@ void bench_hostile(const Settings& s) {
     write_file_atomically(dir / (std::string(name) + ".png"), read_file_bytes(textures / (std::string(name) + ".png")));
   report.print("\n### Hostile levels: mapc's time and memory (whole process)\n\n");
   report.print("| level | walls | outcome | seconds | CPU seconds | peak MB | bytes per wall |\n|---|---:|---|---:|---:|---:|---:|\n");
+  // Each level's text is made just before its compile, so that bench stays small when
+  // it forks (see run_measured); an empty text: the file is written already.
   struct Case {
     std::string name, file;
     size_t walls;
-    std::string text;
+    std::function<std::string()> text;
   };
   std::vector<Case> cases = {
-      {"convex sector of 100,000 walls", "convex.map", 100000, circle_text(100000, 400000, false)},
-      {"convex sector of 1,000,000 walls", "convex1m.map", 1000000, circle_text(1000000, 2000000, false)},
-      {"60,000 walls meeting at one point", "star.map", 60000, circle_text(60000, 1000000, true)},
-      {"fan of 200,000 walls", "fan.map", 200000, circle_text(200000, 1000000, true)},
-      {"100,000 near-parallel slivers", "slivers.map", 100000, slivers_text(100000)},
+      {"convex sector of 100,000 walls", "convex.map", 100000, [] { return circle_text(100000, 400000, false); }},
+      {"convex sector of 1,000,000 walls", "convex1m.map", 1000000, [] { return circle_text(1000000, 2000000, false); }},
+      {"60,000 walls meeting at one point", "star.map", 60000, [] { return circle_text(60000, 1000000, true); }},
+      {"fan of 200,000 walls", "fan.map", 200000, [] { return circle_text(200000, 1000000, true); }},
+      {"100,000 near-parallel slivers", "slivers.map", 100000, [] { return slivers_text(100000); }},
   };
   // Generated by mapgen, in its own process: bench stays small (see run_measured).
   for (const char* kind : {"rooms", "soup"}) {
     const std::string file = std::string(kind) + ".map";
     run_process({(own_directory() / "mapgen").string(), kind, "--walls", "1000000", "-o", (dir / file).string()});
-    cases.push_back({std::string(kind) + " of 1,000,000 walls", file, 1000000, ""});
+    cases.push_back({std::string(kind) + " of 1,000,000 walls", file, 1000000, nullptr});
   }
   map::GridOptions o;
   for (const char* name : {"brick", "stone", "metal", "wood", "tech", "tiles", "ceiling"}) o.texture_files.push_back(std::string(name) + ".png");
   o.cols = o.rows = limits::kMaxGridSide;
   for (const char* kind : {"maze", "arena"}) {
     o.kind = kind;
-    cases.push_back({std::string(kind) + " of 4096x4096 tiles", std::string(kind) + ".grid", 0, map::generate_grid_text(o)});
+    cases.push_back({std::string(kind) + " of 4096x4096 tiles", std::string(kind) + ".grid", 0, [o] { return map::generate_grid_text(o); }});
   }
   const std::string mapc = (own_directory() / "mapc").string();
   for (Case& c : cases) {
-    if (!c.text.empty()) write_file_atomically(dir / c.file, c.text);
-    c.text.clear();
+    if (c.text) write_file_atomically(dir / c.file, c.text());
     const Measured m = run_measured({mapc, (dir / c.file).string(), "-o", (dir / "out.bsp").string()});
     std::string walls = c.walls ? std::to_string(c.walls) : "";
     if (m.status == 0) walls = std::to_string(level::read(dir / "out.bsp").walls.size());

@@ -27,10 +27,10 @@ const char* strategy_name(Strategy s);
 struct Options {
   Strategy strategy = Strategy::kGreedy;
   uint64_t seed = 1;
-  // The defaults: on the 68 Freedoom maps, beside ZDBSP's trees, these gave 0.96 of its
-  // segs, 1.04 times its subsectors as leaves and 0.995 of its mean leaf depth (geomeans;
-  // every map within 1.05), with fewer fragments and shallower trees than the previous
-  // defaults on generated rooms, soups and grids too (docs/benchmarks.md).
+  // The defaults: on the 68 Freedoom maps, beside ZDBSP's trees, these gave 0.91 of its
+  // segs, 1.04 times its subsectors as leaves and 0.998 of its mean leaf depth (geomeans;
+  // every map's depth within 1.04), with fewer fragments and shallower trees than the
+  // previous defaults on generated rooms, soups and grids too (docs/benchmarks.md).
   int greedy_candidates = 32;    // k: candidate splitters sampled per cell
   int greedy_sample = 128;       // fragments scored per candidate (all of them in smaller cells)
   double split_weight = 12;      // cost of one split
