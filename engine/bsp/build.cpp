@@ -258,7 +258,6 @@ class Builder {
         ++line;
       line_of_[keys[i].wall] = line;
     }
-    line_count_.assign(keys.empty() ? 0 : line + 1, 0);
   }
 
   // ---- the tree ------------------------------------------------------------
@@ -333,14 +332,19 @@ class Builder {
       make_leaf(task, level::kNone);
       return kLeaf;
     }
-    const Sectors sectors = cell_sectors(frags);
-    const bool one_sector = sectors.other == kNoFragment && sectors.barrier == kNoFragment;
     const bool greedy = opt_.strategy == Strategy::kGreedy;
     // Big cells are rarely leaves: a splitter the sample proves to divide the cell
-    // spares the exact test. Small ones are tested first (cheaper than a search).
+    // spares the exact test and the look at every fragment's sectors (a cache miss
+    // each). Small ones are tested first (cheaper than a search).
     const bool test_first = !greedy || frags.size() <= kTestFirst;
     Choice chosen;
-    if (greedy && (!test_first || !one_sector)) {
+    if (!test_first) {
+      chosen = choose_greedy(frags);
+      if (chosen.divides) return chosen.fragment;
+    }
+    const Sectors sectors = cell_sectors(frags);
+    const bool one_sector = sectors.other == kNoFragment && sectors.barrier == kNoFragment;
+    if (greedy && test_first && !one_sector) {
       chosen = choose_greedy(frags);
       if (chosen.divides) return chosen.fragment;
     }
@@ -442,7 +446,6 @@ class Builder {
     bool divides = false;
     bool any_divides = false;  // some candidate scored did
   };
-  static constexpr uint32_t kScored = 1u << 31;  // line_count_'s mark: this line was scored
   Choice choose_greedy(const std::vector<Frag>& frags) {
     const size_t m = frags.size();
     const size_t k = std::min<size_t>(m, std::max(1, opt_.greedy_candidates));
@@ -454,26 +457,25 @@ class Builder {
     }
     sample_weight_ = 0;
     for (double w : sample_.weight) sample_weight_ += w;
-    // The fragments of the cell on each line (the node takes them): its walls counted by
-    // line. A line is scored once, whichever of its fragments is drawn.
-    for (const Frag& f : frags) ++line_count_[f.line_number];
-    const double per_line_fragment = opt_.line_weight * double(samples) / double(m);
 
     Choice best;
     double best_cost = INFINITY;
+    scored_lines_.clear();
     for (size_t c = 0; c < k; ++c) {
       const size_t candidate = k == m ? c : rng_.below(m);
       const Frag& f = frags[candidate];
-      uint32_t& count = line_count_[f.line_number];
-      if (count & kScored) continue;
+      // A line is scored once, whichever of its fragments is drawn.
+      if (std::find(scored_lines_.begin(), scored_lines_.end(), f.line_number) != scored_lines_.end()) continue;
+      scored_lines_.push_back(f.line_number);
+      // The node takes the cell's fragments on its line: as many as the sample shows
+      // (all of them when the sample is the cell), counted by line number rather than
+      // by a look at every fragment of a big cell.
+      const double bonus = opt_.line_weight * double(std::count(sample_.line.begin(), sample_.line.end(), f.line_number));
       bool divides = false;
-      const double bonus = per_line_fragment * double(count);
-      count |= kScored;
       const std::optional<double> cost = score(f, best_cost + bonus, divides);
       if (cost && *cost - bonus < best_cost) best_cost = *cost - bonus, best = {candidate, divides, best.any_divides};
       best.any_divides |= cost && divides;
     }
-    for (const Frag& f : frags) line_count_[f.line_number] = 0;
     return best;
   }
 
@@ -487,8 +489,9 @@ class Builder {
     std::vector<uint8_t> cut;        // bit k: end k is a crossing
     std::vector<double> length;      // < 0: not measured yet
     std::vector<double> weight;
+    std::vector<uint32_t> line;      // its line's number
 
-    void clear() { ends.clear(), frags.clear(), cut.clear(), length.clear(), weight.clear(); }
+    void clear() { ends.clear(), frags.clear(), cut.clear(), length.clear(), weight.clear(), line.clear(); }
     size_t size() const { return frags.size(); }
     void add(const Frag& f, double w) {
       const IPoint far{f.line.a.x + f.line.d.x, f.line.a.y + f.line.d.y};
@@ -497,6 +500,7 @@ class Builder {
       frags.push_back(&f);
       length.push_back(-1);
       weight.push_back(w);
+      line.push_back(f.line_number);
     }
   };
 
@@ -780,7 +784,7 @@ class Builder {
   std::vector<Line> lines_;                       // one per wall
   std::vector<std::array<int32_t, 2>> sectors_;   // one per wall: its sides' sectors (kNeutral: a segment)
   std::vector<uint32_t> line_of_;                 // one per wall, until its fragments carry it: its line
-  std::vector<uint32_t> line_count_;              // choose_greedy's scratch: per line, the cell's fragments on it
+  std::vector<uint32_t> scored_lines_;            // choose_greedy's scratch: the lines scored in this cell
   Sample sample_;                                 // choose_greedy's scratch
   double sample_weight_ = 0;                      // its fragments' weight in all
   std::vector<std::pair<int8_t, int8_t>> sides_;  // partition's scratch: each fragment's end sides
