@@ -44,6 +44,18 @@ ConvexTest convex_region(const Pieces& pieces, std::vector<int8_t>& sides, std::
   const size_t n = pieces.size();
   sides.assign(n, 0);
   if (n == 0) return {true, 0};
+  // Most cells tested are not convex, and show it at once: a piece whose line has
+  // pieces strictly on both of its sides, whichever side faces the region. O(k).
+  constexpr size_t kQuickLines = 2;
+  for (size_t i = 0; i < std::min(n, kQuickLines); ++i) {
+    bool left = false, right = false;
+    for (size_t j = 0; j < n && !(left && right); ++j)
+      for (int k = 0; k < 2; ++k) {
+        const int side = pieces.end_side(j, k, pieces.line(i));
+        left |= side > 0, right |= side < 0;
+      }
+    if (left && right) return {false, i};
+  }
   // Probe points for the pieces free to face either way: two ends of piece 0 and an end
   // of any piece off its line. Three points not on one line, so every line misses one;
   // a probe off a piece's line is another piece's, and in a convex set it lies on the
