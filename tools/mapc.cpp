@@ -234,24 +234,22 @@ int main(int argc, char** argv) {
   app.add_option("--sample", a.options.greedy_sample, "greedy: fragments scored per candidate")
       ->check(CLI::Range(1, 1 << 30))
       ->capture_default_str();
-  app.add_option("--split-weight", a.options.split_weight, "greedy: cost of a split")
-      ->check(cli::finite_range(0.0, 1e9))
-      ->capture_default_str();
-  app.add_option("--balance-weight", a.options.balance_weight, "greedy: cost of a barrier (two-sided wall) of imbalance")
-      ->check(cli::finite_range(0.0, 1e9))
-      ->capture_default_str();
-  app.add_option("--plain-weight", a.options.plain_weight, "greedy: a wall that is no barrier, in barriers, in the balance")
-      ->check(cli::finite_range(0.0, 1e9))
-      ->capture_default_str();
-  app.add_option("--line-weight", a.options.line_weight, "greedy: gain per fragment on the splitter's line")
-      ->check(cli::finite_range(0.0, 1e9))
-      ->capture_default_str();
-  app.add_option("--peel-weight", a.options.peel_weight, "greedy: cost of a splitter leaving one side empty")
-      ->check(cli::finite_range(0.0, 1e9))
-      ->capture_default_str();
-  app.add_option("--sliver-weight", a.options.sliver_weight, "greedy: cost of a split leaving a piece under 1/16 unit")
-      ->check(cli::finite_range(0.0, 1e9))
-      ->capture_default_str();
+  // Greedy's weights, each a finite cost of its own.
+  struct Weight {
+    const char* name;
+    const char* help;
+    double* value;
+  };
+  const Weight weights[] = {
+      {"--split-weight", "greedy: cost of a split", &a.options.split_weight},
+      {"--balance-weight", "greedy: cost of a barrier (two-sided wall) of imbalance", &a.options.balance_weight},
+      {"--plain-weight", "greedy: a wall that is no barrier, in barriers, in the balance", &a.options.plain_weight},
+      {"--line-weight", "greedy: gain per fragment on the splitter's line", &a.options.line_weight},
+      {"--peel-weight", "greedy: cost of a splitter leaving one side empty", &a.options.peel_weight},
+      {"--sliver-weight", "greedy: cost of a split leaving a piece under 1/16 unit", &a.options.sliver_weight},
+  };
+  for (const Weight& w : weights)
+    app.add_option(w.name, *w.value, w.help)->check(cli::finite_range(0.0, 1e9))->capture_default_str();
   app.add_flag("--stats", a.stats, "print tree statistics (a statdump line) and times (apart)");
   app.add_option("--json", a.json, "with --stats: also write them as JSON, with the same names");
   app.add_flag("--check", a.check, "verify the BSP invariants exactly before writing");
