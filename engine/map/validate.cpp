@@ -19,6 +19,12 @@ namespace {
 
 using geom::IPoint;
 
+// The contacts the check refuses: walls that cross, or overlap along a line (meeting at
+// an end, or an end on the other's inside, is allowed).
+bool refused(geom::SegmentContact kind) {
+  return kind == geom::SegmentContact::kCross || kind == geom::SegmentContact::kOverlap;
+}
+
 // The max_count contacts with the smallest (later, earlier) walls, kept in a max-heap
 // on that key; walls are tested exactly.
 class ContactList {
@@ -33,7 +39,7 @@ class ContactList {
     if (!wanted(a, b)) return;
     const Wall &wa = src_.walls[a], &wb = src_.walls[b];
     const auto kind = geom::segment_contact(src_.point(wa.v1), src_.point(wa.v2), src_.point(wb.v1), src_.point(wb.v2));
-    if (kind == geom::SegmentContact::kCross || kind == geom::SegmentContact::kOverlap) add({a, b, kind});
+    if (refused(kind)) add({a, b, kind});
   }
   void add(const Contact& c) {
     if (std::any_of(best_.begin(), best_.end(), [&](const Contact& o) { return o.a == c.a && o.b == c.b; })) return;
@@ -120,7 +126,7 @@ void test_cell(const Source& src, const std::vector<uint32_t>& cell_walls, Conta
 // shares the line meets at most at an end, so their order is well defined.
 class SweepLine {
  public:
-  explicit SweepLine(const Source& src) : src_(src), status_(Below{this}) {
+  explicit SweepLine(const Source& src) : status_(Below{this}) {
     const size_t n = src.walls.size();
     ends_.resize(n);
     for (uint32_t i = 0; i < n; ++i) {
@@ -164,8 +170,7 @@ class SweepLine {
   };
   static bool less(IPoint p, IPoint q) { return std::tie(p.x, p.y) < std::tie(q.x, q.y); }
   bool bad(uint32_t a, uint32_t b) const {
-    const auto kind = geom::segment_contact(ends_[a][0], ends_[a][1], ends_[b][0], ends_[b][1]);
-    return kind == geom::SegmentContact::kCross || kind == geom::SegmentContact::kOverlap;
+    return refused(geom::segment_contact(ends_[a][0], ends_[a][1], ends_[b][0], ends_[b][1]));
   }
   // Whether wall s lies below wall t where both cross the sweep line (meeting at most at
   // an end): the later starting end against the other's line, or if it lies on that
@@ -186,7 +191,6 @@ class SweepLine {
     }
   };
 
-  const Source& src_;
   std::vector<std::array<IPoint, 2>> ends_;  // per wall: its lesser end, its greater
   std::vector<Event> events_;
   std::set<uint32_t, Below> status_;
@@ -211,7 +215,7 @@ std::optional<Contact> first_contact_by_sweep(const Source& src) {
   for (uint32_t a = 0; a < b; ++a) {
     const Wall& wa = src.walls[a];
     const auto kind = geom::segment_contact(src.point(wa.v1), src.point(wa.v2), src.point(wb.v1), src.point(wb.v2));
-    if (kind == geom::SegmentContact::kCross || kind == geom::SegmentContact::kOverlap) return Contact{a, b, kind};
+    if (refused(kind)) return Contact{a, b, kind};
   }
   return Contact{0, b, geom::SegmentContact::kCross};  // unreachable: the prefix holds a contact with b
 }
