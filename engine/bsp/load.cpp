@@ -8,6 +8,7 @@
 #include "engine/play/things.h"
 #include "engine/util/error.h"
 #include "engine/util/file.h"
+#include "engine/wad/doom_segs.h"
 
 namespace p3d::bsp {
 
@@ -116,6 +117,7 @@ level::Level build_wad_map(const wad::Stack& wads, const std::string& map, const
   o.player_must_be_inside = false;
   const FileLoc player = imported.source.player.loc;
   level::Level level = build(std::move(imported.source), o, stats);  // its pictures move into the level
+  wad::attach_doom_data(wads, wad::normalize_name(map), level);  // to draw by Doom's rules
   if (warnings) {
     warnings->insert(warnings->end(), imported.warnings.begin(), imported.warnings.end());
     if (!level.sectors.empty() && level::sector_at_brute_force(level, level.player_start) == level::kNone)

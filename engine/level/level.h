@@ -215,6 +215,26 @@ struct Level {
   int default_sector = kNone;
   int sky_texture = kNone;
   std::vector<doom::TextureAnimation> animations;  // textures shown in turn, in place of each other
+  // Doom's segs of each wall side as the WAD's node builder cut its LINEDEF (its SEGS and
+  // VERTEXES), along the side from its start, for drawing by Doom's rules: filled when a
+  // WAD map is compiled in this run (bsp::build_wad_map), not kept in compiled files;
+  // empty: each side is one seg from its own start.
+  struct DoomSeg {
+    double t0 = 0, t1 = 1;        // the part of the wall it covers (the wall's parameter, 0 at p1)
+    int32_t v1x = 0, v1y = 0;     // its first vertex in 16.16 (the side's start, or a split point as Doom rounded it)
+    int32_t v2x = 0, v2y = 0;     // its last vertex, likewise
+    uint32_t angle = 0;           // its direction, a binary angle
+    int32_t offset = 0;           // its distance along the LINEDEF from the side's start, 16.16
+  };
+  std::vector<DoomSeg> doom_segs;          // grouped by wall side, each side's in order of t0
+  std::vector<uint32_t> doom_seg_start;    // per wall side (wall * 2 + side), and one more: empty or walls * 2 + 1
+  // Doom's wall columns as R_DrawColumn reads them, 128 rows each (its texel row is
+  // & 127): a column only one patch covers is the patch's own column, and past its
+  // post the bytes that follow it in the lump; other columns run on into the next
+  // composed one (the tutti-frutti of textures under 128 rows). Per texture the first
+  // of its columns in doom_columns (kNone: none), filled with doom_segs.
+  std::vector<int64_t> doom_column_start;
+  std::vector<uint8_t> doom_columns;
   // Paletted levels (WAD art): the palette, and limits::kStoredMaps maps of its colours
   // (map m of index i at [m * kPaletteSize + i]): kLightMaps shaded, map 0 full bright,
   // then Doom's invulnerability map (kInverseMap). Both empty:

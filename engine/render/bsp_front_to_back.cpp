@@ -54,7 +54,7 @@ class BspFrontToBack final : public Renderer {
 
   RenderStats render(const level::Level& level, const level::State& state, const Camera& camera, Frame& frame,
                      Probe* probe) override {
-    const View view(camera, frame.width, frame.height);
+    const View view(camera, frame.width, frame.height, level);
     const int camera_sector = level.sector_at(camera.pos);
     // The order fragments drew in is one walk's: a probe asking for it gets one strip.
     const bool one_walk = probe && probe->want_order;
@@ -70,13 +70,23 @@ class BspFrontToBack final : public Renderer {
       Strip& s = strips_[size_t(i)];
       s.x0 = i * strip_width;
       s.x1 = std::min(view.width, s.x0 + strip_width);
-      s.canvas.begin(level, state, view, frame, camera_sector, probe, s.x0, s.x1);
+      s.canvas.begin(level, state, view, frame, camera_sector, probe, s.x0, s.x1,
+                     i > 0 ? &strips_[size_t(i) - 1].canvas : nullptr);
       s.order = one_walk ? &probe->order : nullptr;
-      walk(level, view, camera, s);
+      walk(level, state, view, camera, s);
       // A frame that keeps Doom's 8-bit screen: each strip copies its own indices, from
       // its own cache, with no second dispatch (5% of a frame on two threads).
-      if (frame.indexed()) s.canvas.resolve(0, view.height);
+      if (frame.indexed() && !s.canvas.waiting()) s.canvas.resolve(0, view.height);
     });
+    // Under Doom's rules a flat's span may begin in a strip to the left: the strips draw
+    // their flats and layers once every strip's walk is done (Canvas::finish_strip).
+    if (strips_[0].canvas.waiting())
+      pool_.run(strips, [&](int i) {
+        Strip& s = strips_[size_t(i)];
+        s.canvas.finish_strip();
+        s.canvas.count_into(s.stats);
+        if (frame.indexed()) s.canvas.resolve(0, view.height);
+      });
     // Paletted levels drawn in colours: the strips drew palette indices
     // (Canvas::resolve); the colours are written in bands of whole rows, which the
     // caches fetch as streams.
@@ -112,13 +122,18 @@ class BspFrontToBack final : public Renderer {
     RenderStats stats;
   };
 
-  void walk(const level::Level& level, const View& view, const Camera& camera, Strip& s) {
+  void walk(const level::Level& level, const level::State& state, const View& view, const Camera& camera, Strip& s) {
     s.mask.reset(view.width);
     s.mask.close_outside(s.x0, s.x1);
     s.stats = {};
     s.fragments_drawn.clear();
     if (s.order) s.order->clear();
     s.stack.assign(1, {level.root(), false});
+    // Doom's rules clip a sprite by the walls' silhouettes, not by what the walk culls:
+    // every thing goes to the canvas, as in the reference.
+    const bool every_thing = view.doom != nullptr;
+    if (every_thing)
+      for (uint32_t i = 0; i < state.things.size(); ++i) s.canvas.add_sprite(i);
     while (!s.stack.empty()) {
       if (s.mask.full()) {
         s.stats.early_exit = true;
@@ -143,13 +158,13 @@ class BspFrontToBack final : public Renderer {
       }
       if (leaf) {
         const int32_t index = level::leaf_index(item.child);
-        add_sprites(leaf_things_[size_t(index)], s.canvas);
+        if (!every_thing) add_sprites(leaf_things_[size_t(index)], s.canvas);
         draw_leaf(level, view, level.leaves[size_t(index)], s);
         continue;
       }
       ++s.stats.nodes_visited;
       const level::Node& node = level.nodes[size_t(item.child)];
-      add_sprites(node_things_[size_t(item.child)], s.canvas);
+      if (!every_thing) add_sprites(node_things_[size_t(item.child)], s.canvas);
       const int near = level::splitter_side(node, camera.pos) > 0 ? 1 : 0;
       s.stack.push_back({node.child[1 - near], false});
       s.stack.push_back({item.child, true});

@@ -144,7 +144,7 @@ void Canvas::prepare_frame(const level::Level& level, Frame& frame) {
 }
 
 void Canvas::begin(const level::Level& level, const level::State& state, const View& view, Frame& frame,
-                   int camera_sector, Probe* probe, int x0, int x1) {
+                   int camera_sector, Probe* probe, int x0, int x1, const Canvas* left) {
   level_ = &level;
   state_ = &state;
   view_ = &view;
@@ -175,6 +175,15 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
     }
   }
   planes_.begin(x0_, x1_, view.height);
+  doom_ = view.doom;
+  left_ = left;
+  doom_waiting_ = painting_planes_ = false;
+  if (doom_) {
+    if (++doom_stamp_ == 0) doom_sides_.clear(), doom_stamp_ = 1;
+    const doom::Angle angle = (view.fangle - play::kAngle90) >> play::kAngleToFineShift;
+    base_x_scale_ = play::fixed_div(play::kFineSine[angle + play::kFineAngles / 4], doom_->centerxfrac);
+    base_y_scale_ = -play::fixed_div(play::kFineSine[angle], doom_->centerxfrac);
+  }
   painted_index_.clear();
   painted_count_ = 0;
   tabulate_sky_rows();
@@ -242,7 +251,24 @@ void Canvas::finish() {
     Column& c = columns_[x];
     planes_to_horizon(x, c.top, c.bottom, c.sector);
   }
+  if (doom_ && !doom_->crispy) {  // vanilla's spans step from their first column: in a strip, perhaps another strip's
+    doom_gather_spans();
+    if (x0_ > 0 || x1_ < view_->width) {
+      doom_waiting_ = true;
+      return;
+    }
+    doom_draw_spans();
+    draw_layers();
+    return;
+  }
   planes_.for_each_span([this](const PlaneKey& key, int y, int xa, int xb) { plane_pixels(key, y, xa, xb); });
+  draw_layers();
+}
+
+void Canvas::finish_strip() {
+  if (!doom_waiting_) return;
+  doom_waiting_ = false;
+  doom_draw_spans();
   draw_layers();
 }
 
@@ -283,6 +309,7 @@ bool Canvas::draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom
     top = bottom;
     return false;
   }
+  if (doom_) return draw_hit_doom(x, hit, near, top, bottom);
   const level::SectorState& s = state_->sectors[near];
   const double scale = view_->d / hit.depth;
   auto row = [&](double z) { return view_->row_at(view_->half_h - (z - view_->eye) * scale); };
@@ -346,6 +373,7 @@ void Canvas::choose_fill_colors() {
 void Canvas::fill_span(int x, int y0, int y1, Fill fill) {
   if (y0 >= y1 || dry_) return;
   count(x, y0, y1);
+  if (painting_planes_) mark_painted(x, y0, y1, kNoPlane);
   if (indexed_) {
     uint8_t* out = index_pixel(x, y0);
     for (int y = y0; y < y1; ++y, out += index_pitch_) *out = fill_indices_[size_t(fill)];
@@ -382,6 +410,7 @@ void Canvas::wall_span(int x, int y0, int y1, const Part& part, const WallHit& h
   if (y0 >= y1 || dry_) return;
   if (part.texture == kNone) return fill_span(x, y0, y1, Fill::kMissingTexture);
   count(x, y0, y1);
+  if (painting_planes_) mark_painted(x, y0, y1, kNoPlane);  // a wall with no sector, under Doom's rules
   const level::Wall& w = level_->walls[hit.wall];
   const level::Side& side = w.sides[hit.side];
   const level::Texture& tex = level_->textures[part.texture];
@@ -500,6 +529,7 @@ uint32_t Canvas::lit(const level::Texture& tex, size_t texel, int light_map) con
 constexpr double kSpriteNearDepth = 4;  // Doom's MINZ: nearer things are not drawn
 
 void Canvas::add_sprite(uint32_t thing) {
+  if (doom_) return doom_add_sprite(thing);
   const level::ShownThing& t = state_->things[thing];
   if (t.frame == level::kNone) return;
   const double depth = view_->depth_of(t.pos);
@@ -595,6 +625,8 @@ uint32_t Canvas::fuzz_colour(uint32_t colour) {
 }
 
 void Canvas::draw_layers() {
+  if (painting_planes_) draw_painted_planes();
+  if (doom_) return doom_draw_layers();
   // Farthest first; equal depths by thing index, a total order whatever the order things were added in.
   std::sort(sprites_.begin(), sprites_.end(), [](const Sprite& a, const Sprite& b) {
     return a.depth != b.depth ? a.depth > b.depth : a.thing < b.thing;
@@ -649,7 +681,8 @@ void Canvas::plane_span(int x, int y0, int y1, int sector, bool ceiling) {
   const int texture = state_->shown(ceiling ? s.ceiling_texture : s.floor_texture);
   if (texture == kSky) return sky_span(x, y0, y1);
   count(x, y0, y1);
-  const PlaneKey key{ceiling ? s.ceiling : s.floor, texture, light_start(s.light, 0)};
+  // Doom's visplanes are of one light level (0..255); ours of one light map.
+  const PlaneKey key{ceiling ? s.ceiling : s.floor, texture, doom_ ? s.light : light_start(s.light, 0)};
   if (painting_)
     plane_column(key, x, y0, y1);
   else
@@ -711,6 +744,7 @@ void indexed_pow2_row(uint8_t* out, int n, uint32_t u, uint32_t du, uint32_t v, 
 
 // Pixels [xa, xb) of row y of a plane: one light map for the row.
 void Canvas::plane_pixels(const PlaneKey& key, int y, int xa, int xb) {
+  if (doom_) return doom_plane_pixels(key, y, xa, xb, xa);
   const level::Texture& tex = level_->textures[key.texture];
   const PlaneRow row = plane_row(key, y);
   if (indexed_ && tex.pow2_width && tex.pow2_height)
@@ -742,6 +776,11 @@ void Canvas::plane_pixels(const PlaneKey& key, int y, int xa, int xb) {
 // The painter's column of a plane: the same pixels as plane_pixels gives by rows, from
 // the plane's rows, each computed once a frame (painted_rows).
 void Canvas::plane_column(const PlaneKey& key, int x, int y0, int y1) {
+  if (painting_planes_) {  // Doom's rules: drawn as spans at the end (draw_painted_planes)
+    auto [it, added] = painted_index_.try_emplace(key, painted_keys_.size());
+    if (added) painted_keys_.push_back(key);
+    return mark_painted(x, y0, y1, uint32_t(it->second));
+  }
   const level::Texture& tex = level_->textures[key.texture];
   const PlaneRow* rows = painted_rows(key, y0, y1);
   uint32_t* out = pixel(x, y0);
@@ -774,6 +813,22 @@ constexpr double kSkyColumns = 1024, kSkyMidRow = 100, kDoomProjection = 160;
 void Canvas::tabulate_sky_rows() {
   if (level_->sky_texture == kNone) return sky_rows_.clear();
   const level::Texture& tex = level_->textures[level_->sky_texture];
+  if (view_->doom) {  // Doom's: texel row (skytexturemid + (y - centery) * iscale) >> 16, & 127
+    const doom::Tables& t = *view_->doom;
+    doom_sky_rows_.resize(size_t(view_->height));
+    for (int y = 0; y < view_->height; ++y) {
+      const uint32_t v = uint32_t(kSkyMidRow * doom::kFracUnit) + uint32_t(y - t.centery) * uint32_t(t.sky_iscale);
+      if (t.crispy) {  // Crispy's: wrapped at the texture's height
+        doom_sky_rows_[size_t(y)] = int(level::floor_mod(int64_t(int32_t(v)), int64_t(tex.height) << doom::kFracBits) >> doom::kFracBits);
+        continue;
+      }
+      const int row = int((v >> doom::kFracBits) & 127);
+      const bool doom_rows = size_t(level_->sky_texture) < level_->doom_column_start.size() &&
+                             level_->doom_column_start[size_t(level_->sky_texture)] >= 0;
+      doom_sky_rows_[size_t(y)] = doom_rows || row < tex.height ? row : row % tex.height;
+    }
+    return;
+  }
   // The rows depend only on these: a game's or a benchmark's frames reuse them.
   const SkyKey key{tex.height, view_->d, view_->half_h, view_->height, view_->half_w, view_->width};
   if (key == sky_key_ && sky_rows_.size() == size_t(view_->height)) return;
@@ -801,6 +856,8 @@ void Canvas::sky_span(int x, int y0, int y1) {
   if (dry_) return;
   if (level_->sky_texture == kNone) return fill_span(x, y0, y1, Fill::kVoid);
   count(x, y0, y1);
+  if (painting_planes_) mark_painted(x, y0, y1, kNoPlane);
+  if (doom_) return doom_sky_span(x, y0, y1);
   const level::Texture& tex = level_->textures[level_->sky_texture];
   const double angle = view_->angle + sky_angles_[size_t(x)];
   const int64_t u = to_int(angle / (2 * M_PI) * kSkyColumns);

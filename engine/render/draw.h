@@ -36,8 +36,10 @@ class Canvas {
   // own only the columns [x0, x1) of the frame (a strip drawn by its own thread): it then
   // draws nothing outside them, and the probe's arrays must have been sized already
   // (prepare_probe), since other strips fill them at the same time.
+  // A strip's canvas under Doom's rules also names the canvas of the strip to its left
+  // (its flats' spans may begin there: see finish_strip).
   void begin(const level::Level& level, const level::State& state, const View& view, Frame& frame, int camera_sector,
-             Probe* probe, int x0 = 0, int x1 = INT32_MAX);
+             Probe* probe, int x0 = 0, int x1 = INT32_MAX, const Canvas* left = nullptr);
   static void prepare_probe(const View& view, Probe* probe);
   // Sizes the frame's indices when it keeps them and the level is drawn in indices;
   // like prepare_probe, done by begin() for a canvas that owns the whole frame.
@@ -47,6 +49,7 @@ class Canvas {
   void draw_directly() {
     indexed_ = false;
     frame_->indices.clear();
+    if (doom_) start_painted_planes();
   }
 
   // Front to back: draws what the hit shows in the column's open rows and narrows
@@ -71,6 +74,12 @@ class Canvas {
   // sector, out to the horizon, draws the floors and ceilings filed so far as rows,
   // then draws the layers (see draw_layers).
   void finish();
+  // For a strip (a canvas of some columns): after every strip of the frame has finished,
+  // what finish() left for later under Doom's rules, where a flat's span steps from its
+  // first column, which may lie in a strip to the left: the flats and the layers. A
+  // no-op under our rules, and for a canvas of the whole frame.
+  void finish_strip();
+  bool waiting() const { return doom_waiting_; }  // finish() left work to finish_strip()
   // Writes rows [y0, y1) of the canvas's columns into the frame, after finish(), when
   // it drew palette indices (a no-op otherwise): the indices themselves when the frame
   // keeps them, else their colours. Strips may resolve rows in any order.
@@ -125,9 +134,52 @@ class Canvas {
     double top;                   // world height of the picture's top row
     int light_map;                // 0 (full bright) .. 31
     bool fuzz;                    // Doom's shadow (MF_SHADOW)
+    // Doom's rules (R_ProjectSprite): its scale, texel column at unclipped column x_start
+    // and step per column, and the height of its top above the eye.
+    doom::Fixed scale = 0, start_frac = 0, x_step = 0, texture_mid = 0, gz = 0, gzt = 0;
+    int x_start = 0;
+    doom::Fixed gx = 0, gy = 0;
+  };
+  // Doom's rules: one side of a wall as this frame's view sets it up (R_StoreWallRange),
+  // made on first use in a frame (stamp).
+  struct DoomSide {
+    uint32_t stamp = 0;
+    doom::Seg seg;
+    doom::Fixed v1x = 0, v1y = 0, v2x = 0, v2y = 0;  // the seg's first vertex, the side's end (R_PointOnSegSide)
+    doom::Fixed low_scale = 0, high_scale = 0;       // its scales at the ends of its columns (drawsegs)
+    doom::WallPrecision precision;                   // its largest scale and edge bits (Crispy's wiggle fix)
   };
 
   bool draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom);
+  // Doom's rules (draw_doom.cpp): R_StoreWallRange and R_RenderSegLoop for one column.
+  bool draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& bottom);
+  const DoomSide& doom_side(uint32_t wall, int side, double t);
+  // Rows [y0, y1) of a wall column as R_DrawColumn draws them: texel row
+  // ((mid + (y - centery) * iscale) >> 16) & 127, column `column` & Doom's width mask.
+  void doom_wall_rows(int x, int y0, int y1, int texture, doom::Fixed mid, int32_t column, uint32_t iscale, int map);
+  void crispy_wall_rows(int x, int y0, int y1, const level::Texture& tex, int u, doom::Fixed v0, uint32_t iscale, int map);
+  // Pixels [xa, xb) of row y of a flat, its span stepping from column `start` <= xa.
+  void doom_plane_pixels(const PlaneKey& key, int y, int xa, int xb, int start);
+  void crispy_plane_pixels(const PlaneKey& key, int y, int xa, int xb);
+  // The flats as spans: gathered from the planes filed (doom_gather_spans), each span
+  // merged with its neighbours of the same plane, then drawn (doom_draw_spans), a span
+  // at the strip's left edge from where it begins in the strips to the left.
+  void doom_gather_spans();
+  void doom_draw_spans();
+  // The painter's flats: the plane each pixel shows last (painted_plane_), drawn at the
+  // end as spans of equal planes.
+  void start_painted_planes();
+  void mark_painted(int x, int y0, int y1, uint32_t id);
+  void draw_painted_planes();
+  void doom_sky_span(int x, int y0, int y1);
+  void doom_add_sprite(uint32_t thing);
+  void doom_draw_layers();
+  void doom_draw_masked(int x, const Step& step);
+  // R_DrawMaskedColumn: rows of texture column u from its opaque runs, the picture's
+  // top at screen position top_screen (16.16), clipped to [top, bottom).
+  bool doom_masked_column(int x, int top, int bottom, const level::Texture& tex, int u, doom::Fixed top_screen,
+                          doom::Fixed scale, uint32_t iscale, doom::Fixed mid, int light_map, uint64_t& counter,
+                          bool fuzz);
   void close(int x, const WallHit& hit);
   void near_plane(int x, int y0, int y1, int sector, bool ceiling);
   void plane_span(int x, int y0, int y1, int sector, bool ceiling);
@@ -222,6 +274,29 @@ class Canvas {
   uint32_t fill_colors_[2] = {};
   uint8_t fill_indices_[2] = {};
   uint64_t pixels_ = 0, closed_count_ = 0, masked_pixels_ = 0, sprites_drawn_ = 0, sprite_pixels_ = 0;
+  // Doom's rules (View::doom), when the view follows them: the tables, the flats'
+  // stepping across the screen (basexscale, baseyscale), each wall side's seg.
+  const doom::Tables* doom_ = nullptr;
+  doom::Fixed base_x_scale_ = 0, base_y_scale_ = 0;
+  uint32_t doom_stamp_ = 0;
+  std::vector<DoomSide> doom_sides_;
+  std::vector<int> doom_sky_rows_;
+  static constexpr uint32_t kNoPlane = UINT32_MAX;
+  struct DoomSpan {
+    const PlaneKey* key;
+    int xa, xb;
+  };
+  std::vector<DoomSpan> doom_spans_;         // this frame's flat spans, row by row
+  std::vector<uint32_t> doom_row_first_;     // per row, and one more: its first span in doom_spans_
+  std::vector<int> doom_span_y_;             // doom_gather_spans' scratch: each span's row
+  std::vector<DoomSpan> doom_span_scratch_;
+  const Canvas* left_ = nullptr;             // the strip to the left (begin)
+  bool doom_waiting_ = false;                // finish() left the flats and layers to finish_strip()
+  std::vector<uint32_t> painted_plane_;      // the painter's: per pixel, its plane in painted_keys_, or kNoPlane
+  std::vector<PlaneKey> painted_keys_;
+  bool painting_planes_ = false;
+  std::vector<uint8_t> masked_done_;  // doom_draw_layers: per step of every column, drawn
+  std::vector<uint32_t> masked_first_;  // the first step of each column in masked_done_
   bool dry_ = false;       // clip_wall: compute rows, write nothing
   bool painting_ = false;  // paint_wall, paint_background: draw planes at once
 };

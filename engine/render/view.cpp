@@ -7,12 +7,14 @@ namespace {
 // Camera-space point: x = lateral (right), y = depth (forward).
 Vec2 to_camera(const View& v, Vec2 p) { return {v.lateral_of(p), v.depth_of(p)}; }
 
-// Widens [lo, hi] (in screen x) to whole columns, one extra on each side, clamped to the screen.
+// Widens [lo, hi] (in screen x) to whole columns, one extra on each side (more under
+// Doom's rules, whose rays stray from the column centres), clamped to the screen.
 ColumnRange to_columns(const View& v, double lo, double hi) {
-  lo = std::clamp(lo, -2.0, v.width + 2.0);
-  hi = std::clamp(hi, -2.0, v.width + 2.0);
-  return {std::max(0, static_cast<int>(floor_to_int(lo - 0.5)) - 1),
-          std::min(v.width - 1, static_cast<int>(ceil_to_int(hi - 0.5)) + 1)};
+  const int extra = 1 + (v.doom ? v.doom->ray_slack : 0);
+  lo = std::clamp(lo, -2.0 - extra, v.width + 2.0 + extra);
+  hi = std::clamp(hi, -2.0 - extra, v.width + 2.0 + extra);
+  return {std::max(0, static_cast<int>(floor_to_int(lo - 0.5)) - extra),
+          std::min(v.width - 1, static_cast<int>(ceil_to_int(hi - 0.5)) + extra)};
 }
 
 // Projects a camera-space polygon clipped to depth >= near; empty if nothing is in front.

@@ -1,12 +1,16 @@
 // The projection shared by every renderer, so that they agree to the last bit:
 // column x is sampled at x + 0.5, its ray is forward*d + right*((x+0.5) - W/2)
 // with d = (W/2) / tan(fov/2); row y is sampled at y + 0.5 below the horizon H/2.
+// On a WAD level at a 90-degree view, Doom's rules instead (doom_rules.h): column x
+// looks along Doom's xtoviewangle[x], its ray forward*d + right*(d * lateral[x]), and
+// the view's position and angle are also kept in Doom's 16.16 and binary angles.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 
 #include "engine/render/camera.h"
+#include "engine/render/doom_rules.h"
 #include "engine/util/rounding.h"
 
 namespace p3d::render {
@@ -21,7 +25,11 @@ struct View {
   Vec2 forward, right;    // unit vectors; right is forward turned clockwise
   double d = 1;           // projection distance in pixels
   double half_w = 0, half_h = 0;
-  Vec2 ray0;              // ray of column 0; ray(x) = ray0 + right * x
+  Vec2 ray0;              // ray of column 0; ray(x) = ray0 + right * x (our rules)
+  // Doom's rules: the tables of this size, and the view in Doom's numbers; nullptr: ours.
+  const doom::Tables* doom = nullptr;
+  doom::Fixed fx = 0, fy = 0, fz = 0;  // viewx, viewy, viewz
+  doom::Angle fangle = 0;              // viewangle
 
   View(const Camera& camera, int w, int h) : width(w), height(h), pos(camera.pos), eye(camera.z) {
     angle = std::fmod(camera.angle, 360.0) * (M_PI / 180);  // any angle: the sky's texture column stays in range
@@ -32,8 +40,21 @@ struct View {
     d = half_w / std::tan(camera.fov * (M_PI / 360));
     ray0 = forward * d + right * (0.5 - half_w);
   }
+  // The view of a level: Doom's rules for a WAD level (its art is paletted) seen over
+  // Doom's 90 degrees, within the range Doom's 16.16 holds; ours otherwise.
+  View(const Camera& camera, int w, int h, const level::Level& level) : View(camera, w, h) {
+    constexpr double kDoomRange = 32000;
+    if (!level.paletted() || camera.fov != 90 || w < 2 || h < 2 || std::fabs(camera.pos.x) > kDoomRange ||
+        std::fabs(camera.pos.y) > kDoomRange || std::fabs(camera.z) > kDoomRange)
+      return;
+    doom = &doom::tables(w, h);
+    fx = doom::to_fixed(camera.pos.x);
+    fy = doom::to_fixed(camera.pos.y);
+    fz = doom::to_fixed(camera.z);
+    fangle = doom::to_angle(camera.angle);
+  }
 
-  Vec2 ray(int x) const { return ray0 + right * double(x); }
+  Vec2 ray(int x) const { return doom ? forward * d + right * (d * doom->lateral[size_t(x)]) : ray0 + right * double(x); }
   double depth_of(Vec2 p) const { return glm::dot(p - pos, forward); }
   double lateral_of(Vec2 p) const { return glm::dot(p - pos, right); }
 
@@ -55,16 +76,22 @@ struct View {
 // room's corner exactly one wall is hit, and no renderer can pick a different one.
 // Every renderer hits walls through this, so they agree.
 struct WallProjector {
-  double side0[2] = {0, 0}, side_dx[2] = {0, 0};  // cross(ray(x), end - pos) = side0 + side_dx * x; < 0: right
+  // cross(ray(x), end - pos) = side0 + side_dx * x (ours), side0 + side_dx * lateral[x]
+  // (Doom's rules: side0 is then the forward ray's); < 0: right.
+  double side0[2] = {0, 0}, side_dx[2] = {0, 0};
   double end_depth[2] = {0, 0};                   // each end's depth along the view direction
+  const double* lateral = nullptr;                // Doom's rules: View::doom->lateral scaled by d
 
   WallProjector() = default;
   WallProjector(const View& v, Vec2 a, Vec2 b) {
     const Vec2 ends[2] = {a, b};
+    const Vec2 base = v.doom ? v.forward * v.d : v.ray0;
+    const Vec2 across = v.doom ? v.right * v.d : v.right;
+    if (v.doom) lateral = v.doom->lateral.data();
     for (int i = 0; i < 2; ++i) {
       const Vec2 rel = ends[i] - v.pos;
-      side0[i] = geom::cross(v.ray0, rel);
-      side_dx[i] = geom::cross(v.right, rel);
+      side0[i] = geom::cross(base, rel);
+      side_dx[i] = geom::cross(across, rel);
       end_depth[i] = v.depth_of(ends[i]);
     }
   }
@@ -73,7 +100,8 @@ struct WallProjector {
   // crosses the segment; false when it passes beside it, runs along it, or meets it
   // behind the near plane.
   bool hit(int x, double& depth, double& t) const {
-    const double s0 = side0[0] + side_dx[0] * x, s1 = side0[1] + side_dx[1] * x;
+    const double at = lateral ? lateral[x] : double(x);
+    const double s0 = side0[0] + side_dx[0] * at, s1 = side0[1] + side_dx[1] * at;
     if ((s0 < 0) == (s1 < 0)) return false;  // both ends on one side (an end on the ray counts as left)
     t = s0 / (s0 - s1);
     // Interpolated from the nearer end, so a hit exactly at an end has exactly that end's depth.
@@ -83,7 +111,7 @@ struct WallProjector {
   }
 
   // Which end lies right of column x's ray (only meaningful for a hit): 0 for a, 1 for b.
-  int right_end(int x) const { return side0[0] + side_dx[0] * x < 0 ? 0 : 1; }
+  int right_end(int x) const { return side0[0] + side_dx[0] * (lateral ? lateral[x] : double(x)) < 0 ? 0 : 1; }
 };
 
 // Whether wall b hides wall a just right of a column's ray, where both are hit at

@@ -183,6 +183,16 @@ std::optional<IndexedImage> Art::texture(std::string_view name, std::vector<std:
   if (it == textures_.end()) return std::nullopt;
   const TextureDef& def = it->second;
   IndexedImage img(def.width, def.height);
+  // Doom's R_GenerateLookup: a column that only one patch covers is that patch's own
+  // column, drawn from the patch's first row whatever the patch's place up or down;
+  // only columns of several patches are composed with the patches' places.
+  std::vector<uint8_t> patches_over(size_t(def.width), 0);
+  for (const PatchPlacement& p : def.patches) {
+    const DecodedPatch& decoded = this->patch(p.patch);
+    if (!decoded.image) continue;
+    for (int x = std::max(0, p.x); x < std::min(def.width, p.x + decoded.image->width); ++x)
+      patches_over[size_t(x)] = uint8_t(std::min(2, patches_over[size_t(x)] + 1));
+  }
   for (const PatchPlacement& p : def.patches) {
     const DecodedPatch& decoded = this->patch(p.patch);
     if (!decoded.image) {
@@ -190,18 +200,30 @@ std::optional<IndexedImage> Art::texture(std::string_view name, std::vector<std:
       continue;
     }
     const IndexedImage& patch = *decoded.image;
-    // The patch's columns and rows that land on the canvas; its holes keep what is below.
-    const int y0 = std::max(0, -p.y), y1 = std::min(patch.height, def.height - p.y);
+    // The patch's columns that land on the canvas; its holes keep what is below.
     const int x0 = std::max(0, -p.x), x1 = std::min(patch.width, def.width - p.x);
-    if (y1 <= y0) continue;
     for (int x = x0; x < x1; ++x) {
-      const uint8_t* from = &patch.indices[patch.at(x, y0)];
-      const uint8_t* shows = &patch.opaque[patch.at(x, y0)];
-      uint8_t* to = &img.indices[img.at(p.x + x, p.y + y0)];
-      uint8_t* covered = &img.opaque[img.at(p.x + x, p.y + y0)];
-      for (int i = 0; i < y1 - y0; ++i) {
-        to[i] = shows[i] ? from[i] : to[i];
-        covered[i] |= shows[i];
+      const bool alone = patches_over[size_t(p.x + x)] == 1;
+      const int py = alone ? 0 : p.y;
+      // Each run of opaque rows (a post) goes down at its place; one that begins above
+      // the texture's top is cut to fit but, as R_DrawColumnInCache copies it, from its
+      // own first row.
+      const uint8_t* opaque = &patch.opaque[patch.at(x, 0)];
+      for (int t = 0; t < patch.height;) {
+        if (!opaque[t]) {
+          ++t;
+          continue;
+        }
+        int end = t;
+        while (end < patch.height && opaque[end]) ++end;
+        const int position = py + t;
+        const int first = position < 0 ? 0 : position;                 // texture row
+        const int count = std::min(end - t + std::min(position, 0), def.height - first);
+        for (int i = 0; i < count; ++i) {
+          img.indices[img.at(p.x + x, first + i)] = patch.indices[patch.at(x, t + i)];
+          img.opaque[img.at(p.x + x, first + i)] = 1;
+        }
+        t = end;
       }
     }
   }

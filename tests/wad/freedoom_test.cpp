@@ -110,6 +110,7 @@ void check_wad(const std::string& file, size_t cameras_per_map, Tally& t) {
     const level::State start = level::start_state(level);
     const render::Camera at_start = render::camera_at(level, level.player_start, level.player_angle);
     compare_camera(level, start, at_start, 160, 100, t, what + " player start");
+    compare_camera(level, start, at_start, 320, 200, t, what + " player start at Doom's size");  // vanilla's rules
     {  // palette indices resolved at the end, or colours at once: the same frame
       level::Level in_colours = level;
       in_colours.light_indices.clear();
@@ -120,7 +121,8 @@ void check_wad(const std::string& file, size_t cameras_per_map, Tally& t) {
     }
     Rng rng(std::hash<std::string>()(map) & 0xFFFF);
     for (size_t i = 0; i < cameras_per_map; ++i) {
-      const render::Camera c = test::random_camera(level, rng);
+      render::Camera c = test::random_camera(level, rng);
+      if (i % 2) c.fov = 90;  // Doom's rules
       const int w = 48 + int(rng.below(64)), h = 30 + int(rng.below(40));
       compare_camera(level, start, c, w, h, t, what + " camera " + std::to_string(i));
     }
@@ -130,7 +132,8 @@ void check_wad(const std::string& file, size_t cameras_per_map, Tally& t) {
     set_everything_going(world);
     for (int tic = 0; tic < 40; ++tic) world.tick({});
     for (size_t i = 0; i < cameras_per_map / 2; ++i) {
-      const render::Camera c = test::random_camera(level, rng);
+      render::Camera c = test::random_camera(level, rng);
+      if (i % 2) c.fov = 90;
       compare_camera(level, world.state(), c, 64, 40, t, what + " moving camera " + std::to_string(i));
     }
   }

@@ -687,7 +687,7 @@ TEST(Import, SpritesTurnAsDoomTurnsThem) {
     const render::Camera camera{eye, 24, k * 45.0 + 180, 90};
     render::Frame frame(64, 40);
     renderer->render(level, camera, frame);
-    const int left = int(image::red(frame.at(29, 20))), right = int(image::red(frame.at(34, 20)));
+    const int left = int(image::red(frame.at(30, 20))), right = int(image::red(frame.at(33, 20)));
     EXPECT_EQ(left, 20 * picture[k] + (mirrored[k] ? 1 : 0)) << "seen from " << k * 45 << " degrees";
     EXPECT_EQ(right, 20 * picture[k] + (mirrored[k] ? 0 : 1)) << "seen from " << k * 45 << " degrees";
   }

@@ -157,14 +157,18 @@ TEST(Art, CompositeTexturesFlatsAndSkies) {
   EXPECT_EQ(sky_texture_name("MAP21"), "SKY3");
 }
 
-// Two patches on one canvas, each partly off it, the second with holes over the first:
-// every texel against a composition done here pixel by pixel. A flat is its lump's rows.
-TEST(Art, PatchesLandWhereTheyArePlacedAndFlatsAreRows) {
+// Two patches on one canvas, each partly off it, the second with holes over the first
+// in one column: every texel against a composition done here post by post, by Doom's
+// rules (R_GenerateLookup, R_DrawColumnInCache): a column only one patch covers is that
+// patch's column from the texture's top, whatever the patch's place up or down; in a
+// column of several, each post lands at its place, one reaching above the top cut to
+// fit but from its own first row. A flat is its lump's rows.
+TEST(Art, PatchesLandAsDoomComposesThemAndFlatsAreRows) {
   struct Placed {
     IndexedImage image;
     int x, y;
   };
-  std::vector<Placed> patches = {{IndexedImage(4, 6), -1, -2}, {IndexedImage(5, 5), 6, 7}};
+  std::vector<Placed> patches = {{IndexedImage(4, 6), -1, -2}, {IndexedImage(5, 5), 2, 7}};
   for (size_t k = 0; k < patches.size(); ++k)
     for (int y = 0; y < patches[k].image.height; ++y)
       for (int x = 0; x < patches[k].image.width; ++x) {
@@ -206,19 +210,29 @@ TEST(Art, PatchesLandWhereTheyArePlacedAndFlatsAreRows) {
   const auto duo = art.texture("DUO", problems);
   ASSERT_TRUE(duo);
   EXPECT_TRUE(problems.empty());
-  for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x) {
-      int want = -1;  // transparent
-      for (const Placed& p : patches) {
-        const int px = x - p.x, py = y - p.y;
-        if (px >= 0 && py >= 0 && px < p.image.width && py < p.image.height && p.image.opaque[p.image.at(px, py)])
-          want = p.image.indices[p.image.at(px, py)];
-      }
-      EXPECT_EQ(duo->opaque[duo->at(x, y)], want >= 0) << x << "," << y;
-      if (want >= 0) {
-        EXPECT_EQ(duo->indices[duo->at(x, y)], want) << x << "," << y;
+  for (int x = 0; x < kW; ++x) {
+    std::vector<int> want(kH, -1);  // transparent
+    int over = 0;
+    for (const Placed& p : patches) over += x >= p.x && x < p.x + p.image.width;
+    for (const Placed& p : patches) {
+      const int px = x - p.x;
+      if (px < 0 || px >= p.image.width) continue;
+      for (int t = 0; t < p.image.height;) {  // each post: a run of opaque rows
+        int end = t;
+        while (end < p.image.height && p.image.opaque[p.image.at(px, end)]) ++end;
+        const int at = (over == 1 ? 0 : p.y) + t;
+        for (int i = std::max(0, -at); i < end - t && std::max(at, 0) + i - std::max(0, -at) < kH; ++i)
+          want[size_t(std::max(at, 0) + i - std::max(0, -at))] = p.image.indices[p.image.at(px, t + i - std::max(0, -at))];
+        t = std::max(end, t + 1);
       }
     }
+    for (int y = 0; y < kH; ++y) {
+      EXPECT_EQ(duo->opaque[duo->at(x, y)], want[size_t(y)] >= 0) << x << "," << y;
+      if (want[size_t(y)] >= 0) {
+        EXPECT_EQ(duo->indices[duo->at(x, y)], want[size_t(y)]) << x << "," << y;
+      }
+    }
+  }
   const auto ramp = art.flat("RAMP", problems);
   ASSERT_TRUE(ramp);
   for (int y = 0; y < 64; y += 7)

@@ -1,0 +1,660 @@
+// The canvas under Doom's rules (View::doom: WAD levels at a 90-degree view): the
+// pixels Chocolate Doom draws, from its own arithmetic (doom_rules.h), each still a
+// function of the surface and its place alone, so every renderer draws the same.
+//
+// - Walls (R_StoreWallRange, R_RenderSegLoop): the column's scale (R_ScaleFromGlobalAngle
+//   at Doom's column angle), rows by its 20.12 edges (rows whose top lies within the
+//   wall), texel rows by R_DrawColumn's 16.16 stepping from the texture's pegged height
+//   (& 127), texel columns by rw_offset - tan * rw_distance (& the texture's width mask),
+//   light by scalelight, ceiling and floor rows as Doom marks them.
+// - Flats (R_MapPlane, R_DrawSpan): each span steps from its first column in Doom's
+//   packed 6.10 position; light by zlight.
+// - The sky (R_DrawPlanes): Doom's column angle >> 22, rows by its 16.16 step.
+// - Sprites (R_ProjectSprite, R_DrawVisSprite, R_DrawMaskedColumn) and masked middle
+//   textures (R_RenderMaskedSegRange), clipped by Doom's drawseg rules (R_DrawSprite):
+//   a wall is behind a sprite when its scales are all smaller, or some are and the
+//   sprite stands on the wall's near side; silhouettes as Doom keeps them.
+#include <algorithm>
+#include <bit>
+#include <climits>
+
+#include "engine/render/draw.h"
+
+namespace p3d::render {
+
+using doom::Angle;
+using doom::Fixed;
+using doom::kFracBits;
+using doom::kFracUnit;
+using level::kNone;
+using level::kSky;
+using play::fixed_div;
+using play::fixed_mul;
+using play::kAngle90;
+using play::kAngleToFineShift;
+using play::kFineAngles;
+using play::kFineSine;
+
+namespace {
+
+constexpr int kHeightUnit = 1 << doom::kHeightBits;
+
+Fixed fixed_of(double v) { return doom::to_fixed(v); }
+Fixed fixed_of(int64_t fine) { return Fixed(fine * (kFracUnit / 256)); }  // a 1/256-unit coordinate
+
+// Doom's texture width mask: the largest power of two within the width, less one.
+int width_mask(int width) { return int(std::bit_floor(unsigned(std::max(width, 1)))) - 1; }
+
+// Doom's texel row within a column of `height` rows: (v >> 16) & 127, and for our
+// textures of other heights, that row wrapped to the texture.
+inline size_t doom_row(uint32_t v, int height) {
+  const uint32_t row = (v >> kFracBits) & 127;
+  return row < uint32_t(height) ? row : row % uint32_t(height);
+}
+
+}  // namespace
+
+// The seg of a wall side at parameter t: one of Doom's (Level::doom_segs), or the
+// whole side from its start.
+const Canvas::DoomSide& Canvas::doom_side(uint32_t wall, int side, double t) {
+  const level::Level& l = *level_;
+  const size_t side_index = size_t(wall) * 2 + size_t(side);
+  size_t index = l.doom_segs.size() + side_index;  // the side as one seg
+  const level::Level::DoomSeg* seg = nullptr;
+  if (side_index + 1 < l.doom_seg_start.size()) {
+    const uint32_t first = l.doom_seg_start[side_index], end = l.doom_seg_start[side_index + 1];
+    if (first < end) {
+      // The last seg starting at or before t (the first when none does).
+      uint32_t i = first;
+      while (i + 1 < end && l.doom_segs[i + 1].t0 <= t) ++i;
+      index = i;
+      seg = &l.doom_segs[i];
+    }
+  }
+  if (doom_sides_.size() < l.doom_segs.size() + l.walls.size() * 2)
+    doom_sides_.resize(l.doom_segs.size() + l.walls.size() * 2);
+  DoomSide& d = doom_sides_[index];
+  if (d.stamp == doom_stamp_) return d;
+  d.stamp = doom_stamp_;
+  const level::Wall& w = l.walls[wall];
+  const geom::IPoint p1 = side == 0 ? w.p1 : w.p2, p2 = side == 0 ? w.p2 : w.p1;
+  d.v2x = fixed_of(p2.x), d.v2y = fixed_of(p2.y);
+  Angle angle;
+  Fixed offset = 0, end_x = d.v2x, end_y = d.v2y;  // the seg's own end
+  if (seg) {
+    d.v1x = seg->v1x, d.v1y = seg->v1y, angle = seg->angle, offset = seg->offset;
+    end_x = seg->v2x, end_y = seg->v2y;
+  } else {
+    d.v1x = fixed_of(p1.x), d.v1y = fixed_of(p1.y);
+    angle = doom::seg_angle(double(p2.x - p1.x), double(p2.y - p1.y));
+  }
+  const doom::Tables& tb = *doom_;
+  const int sector = w.sides[side].sector;
+  d.precision = sector != kNone ? doom::wall_precision(tb, int64_t(state_->sectors[size_t(sector)].ceiling) -
+                                                               int64_t(state_->sectors[size_t(sector)].floor))
+                                : doom::WallPrecision{};
+  if (tb.crispy) {  // measured from the split points put back onto the wall's line
+    const Fixed ax = fixed_of(p1.x), ay = fixed_of(p1.y);
+    auto onto_line = [&](Fixed& x, Fixed& y) {
+      if ((x != ax || y != ay) && (x != d.v2x || y != d.v2y))
+        doom::crispy_onto_line(x, y, ax, ay, play::wrap_sub(d.v2x, ax), play::wrap_sub(d.v2y, ay));
+    };
+    Fixed sx = d.v1x, sy = d.v1y;
+    onto_line(sx, sy);
+    onto_line(end_x, end_y);
+    d.seg = doom::make_crispy_seg(view_->fx, view_->fy, view_->fangle, sx, sy, end_x, end_y, angle);
+  } else {
+    d.seg = doom::make_seg(tb, view_->fx, view_->fy, view_->fangle, d.v1x, d.v1y, angle);
+  }
+  d.seg.offset = play::wrap_add(d.seg.offset, offset);
+  // Its drawseg's scales: at the first and last columns Doom gives the whole side.
+  int x1, x2;
+  doom::seg_columns(tb, view_->fx, view_->fy, view_->fangle, fixed_of(p1.x), fixed_of(p1.y), d.v2x, d.v2y, x1, x2);
+  if (x1 < x2) {
+    const Fixed max = d.precision.max_scale;
+    const Fixed a = doom::scale_at(tb, d.seg, view_->fangle, x1, max), b = doom::scale_at(tb, d.seg, view_->fangle, x2 - 1, max);
+    d.low_scale = std::min(a, b), d.high_scale = std::max(a, b);
+  } else {
+    d.low_scale = d.high_scale = 0;
+  }
+  return d;
+}
+
+// R_StoreWallRange and one column of R_RenderSegLoop. [top, bottom) are the open rows:
+// Doom's ceilingclip + 1 and floorclip.
+bool Canvas::draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& bottom) {
+  const level::Wall& w = level_->walls[hit.wall];
+  const level::Side& side = w.sides[hit.side];
+  const doom::Tables& t = *doom_;
+  const DoomSide& ds = doom_side(hit.wall, hit.side, hit.t);
+  const Fixed scale = doom::scale_at(t, ds.seg, view_->fangle, x, ds.precision.max_scale);
+  const level::SectorState& s = state_->sectors[near];
+  const int far = w.two_sided() ? w.sides[1 - hit.side].sector : kNone;
+  const level::SectorState* b = far != kNone ? &state_->sectors[far] : nullptr;
+  const Fixed viewz = view_->fz;
+  const Fixed front_ceiling = fixed_of(s.ceiling), front_floor = fixed_of(s.floor);
+  Fixed worldtop = front_ceiling - viewz;
+  const Fixed worldbottom = front_floor - viewz;
+  Fixed worldhigh = 0, worldlow = 0;
+  bool mark_ceiling = true, mark_floor = true, top_part = false, bottom_part = false;
+  if (b) {
+    worldhigh = fixed_of(b->ceiling) - viewz;
+    worldlow = fixed_of(b->floor) - viewz;
+    if (s.ceiling_texture == kSky && b->ceiling_texture == kSky) worldtop = worldhigh;  // the sky hack
+    mark_floor = worldlow != worldbottom || b->floor_texture != s.floor_texture || b->light != s.light;
+    mark_ceiling = worldhigh != worldtop || b->ceiling_texture != s.ceiling_texture || b->light != s.light;
+    if (b->ceiling <= s.floor || b->floor >= s.ceiling) mark_ceiling = mark_floor = true;  // a closed door
+    top_part = worldhigh < worldtop;
+    bottom_part = worldlow > worldbottom;
+  }
+  // The texture column and light, shared by the tiers.
+  const Fixed column = play::wrap_add(doom::texture_column(t, ds.seg, x),
+                                      fixed_of(side.x_offset + state_->scroll(hit.wall, hit.side)));
+  const uint32_t iscale = 0xFFFFFFFFu / uint32_t(scale);
+  const int light = side.light != kNone ? side.light : s.light;
+  const int map = fixed_or(doom::wall_map(t, doom::start_map(light, w.contrast, 0), scale));
+  const Fixed row_offset = fixed_of(side.y_offset);
+  auto column_of = [&](int part) {
+    return int32_t(play::wrap_add(column, fixed_of(level_->part_x(side, part))) >> kFracBits);
+  };
+  auto mid_of = [&](int part, Fixed mid) { return play::wrap_add(mid, row_offset + fixed_of(level_->part_y(side, part))); };
+  auto height_of = [&](int part) {
+    const int texture = state_->texture(hit.wall, hit.side, part);
+    return texture >= 0 ? Fixed(level_->textures[size_t(texture)].height) << kFracBits : 0;
+  };
+  // A wall edge's row: centery - world * scale, in fixed point of `bits` fraction bits
+  // (vanilla's 20.12 in 32 bits; Crispy's in 64, fewer bits for taller sectors).
+  const int bits = ds.precision.height_bits, shift = kFracBits - bits;
+  const int64_t unit = int64_t(1) << bits;
+  auto edge = [&](Fixed world) -> int64_t {
+    if (!t.crispy) return play::wrap_sub(t.centeryfrac >> 4, fixed_mul(world >> 4, scale));
+    return (int64_t(t.centeryfrac) >> shift) - ((int64_t(world >> shift) * scale) >> kFracBits);
+  };
+  auto row_up = [&](Fixed world) { return int(std::clamp<int64_t>((edge(world) + unit - 1) >> bits, INT_MIN / 2, INT_MAX / 2)); };
+  auto row_down = [&](Fixed world) { return int(std::clamp<int64_t>(edge(world) >> bits, INT_MIN / 2, INT_MAX / 2)); };
+
+  const int ceiling_clip = top - 1, floor_clip = bottom;
+  int yl = row_up(worldtop);
+  if (yl < ceiling_clip + 1) yl = ceiling_clip + 1;
+  int ceiling_end = ceiling_clip + 1;  // the rows the ceiling took
+  if (mark_ceiling) {
+    const int y1 = ceiling_end = std::min(yl, floor_clip);
+    if (view_->eye < s.ceiling || s.ceiling_texture == kSky)
+      plane_span(x, ceiling_clip + 1, y1, near, true);
+    else
+      fill_span(x, ceiling_clip + 1, y1, Fill::kVoid);  // Doom marks nothing: we fill it
+  }
+  int yh = row_down(worldbottom);
+  if (yh >= floor_clip) yh = floor_clip - 1;
+  // Where a wall's edges cross (its top row below its bottom one) both planes claim the
+  // rows between: the ceiling keeps them, as Doom draws its ceilings after its floors.
+  const int floor_start = mark_floor ? std::max(yh + 1, ceiling_end) : floor_clip;
+  if (mark_floor) {
+    if (view_->eye > s.floor)
+      plane_span(x, floor_start, floor_clip, near, false);
+    else
+      fill_span(x, floor_start, floor_clip, Fill::kVoid);
+  }
+
+  const int upper = state_->shown(state_->texture(hit.wall, hit.side, level::kUpperPart));
+  const int middle = state_->shown(state_->texture(hit.wall, hit.side, level::kMiddlePart));
+  const int lower = state_->shown(state_->texture(hit.wall, hit.side, level::kLowerPart));
+  if (!b) {
+    if (middle == kNone) {
+      planes_to_horizon(x, yl, yh + 1, near);
+    } else {
+      const Fixed mid = (w.flags & level::kUnpegLower) ? front_floor + height_of(level::kMiddlePart) - viewz : worldtop;
+      doom_wall_rows(x, yl, yh + 1, middle, mid_of(level::kMiddlePart, mid), column_of(level::kMiddlePart), iscale,
+                     map);
+    }
+    top = bottom;
+    return false;
+  }
+  int new_ceiling = ceiling_clip, new_floor = floor_clip;
+  if (top_part && upper != kNone) {
+    int mid = row_down(worldhigh);
+    if (mid >= floor_clip) mid = floor_clip - 1;
+    if (mid >= yl) {
+      const Fixed texture_mid =
+          (w.flags & level::kUnpegUpper) ? worldtop : fixed_of(b->ceiling) + height_of(level::kUpperPart) - viewz;
+      // An upper part reaching below the floor's first row: Doom draws its planes last.
+      doom_wall_rows(x, yl, std::min(mid + 1, floor_start), upper, mid_of(level::kUpperPart, texture_mid),
+                     column_of(level::kUpperPart), iscale, map);
+      new_ceiling = mid;
+    } else {
+      new_ceiling = yl - 1;
+    }
+  } else if (mark_ceiling) {
+    new_ceiling = yl - 1;
+  }
+  if (bottom_part && lower != kNone) {
+    int mid = row_up(worldlow);
+    if (mid <= new_ceiling) mid = new_ceiling + 1;
+    if (mid <= yh) {
+      const Fixed texture_mid = (w.flags & level::kUnpegLower) ? worldtop : worldlow;
+      doom_wall_rows(x, mid, yh + 1, lower, mid_of(level::kLowerPart, texture_mid), column_of(level::kLowerPart),
+                     iscale, map);
+      new_floor = mid;
+    } else {
+      new_floor = yh + 1;
+    }
+  } else if (mark_floor) {
+    new_floor = yh + 1;
+  }
+  top = new_ceiling + 1;
+  bottom = std::max(new_floor, top);  // crossed: the opening is closed
+  return middle != kNone && top < bottom;
+}
+
+void Canvas::doom_wall_rows(int x, int y0, int y1, int texture, Fixed mid, int32_t column, uint32_t iscale, int map) {
+  if (y0 >= y1 || dry_) return;
+  if (texture == kNone) return fill_span(x, y0, y1, Fill::kMissingTexture);
+  count(x, y0, y1);
+  if (painting_planes_) mark_painted(x, y0, y1, kNoPlane);
+  const level::Texture& tex = level_->textures[size_t(texture)];
+  const int u = column & width_mask(tex.width);
+  uint32_t v = uint32_t(mid) + uint32_t(y0 - doom_->centery) * iscale;
+  if (doom_->crispy) return crispy_wall_rows(x, y0, y1, tex, u, Fixed(v), iscale, map);
+  // Doom's own 128 rows of the column when the level has them, else the column wrapped.
+  const int64_t doom_start = size_t(texture) < level_->doom_column_start.size() ? level_->doom_column_start[size_t(texture)] : kNone;
+  const uint8_t* source = doom_start >= 0 ? level_->doom_columns.data() + doom_start + int64_t(u) * 128
+                                          : tex.indices.data() + size_t(u) * size_t(tex.height);
+  const int h = doom_start >= 0 ? 128 : tex.height;
+  auto draw = [&](auto* out, size_t pitch, const auto* lit) {
+    if ((h & (h - 1)) == 0) {
+      const uint32_t mask = uint32_t(std::min(h, 128) - 1);
+      for (int y = y0; y < y1; ++y, out += pitch, v += iscale) *out = lit[source[(v >> kFracBits) & mask]];
+    } else {
+      for (int y = y0; y < y1; ++y, out += pitch, v += iscale) *out = lit[source[doom_row(v, h)]];
+    }
+  };
+  if (indexed_) return draw(index_pixel(x, y0), index_pitch_, level_->light_indices.data() + size_t(map) * limits::kPaletteSize);
+  draw(pixel(x, y0), size_t(view_->width), level_->light_maps.data() + size_t(map) * limits::kPaletteSize);
+}
+
+// Crispy Doom's R_DrawColumn: texel rows wrap at the texture's own height (its
+// tutti-frutti fix), the column as composed.
+void Canvas::crispy_wall_rows(int x, int y0, int y1, const level::Texture& tex, int u, Fixed v0, uint32_t iscale,
+                              int map) {
+  const uint8_t* source = tex.indices.data() + size_t(u) * size_t(tex.height);
+  const int64_t period = int64_t(tex.height) << kFracBits;
+  const bool pow2 = (tex.height & (tex.height - 1)) == 0;
+  int64_t v = pow2 ? 0 : level::floor_mod(int64_t(v0), period);
+  uint32_t v32 = uint32_t(v0);
+  const uint32_t mask = uint32_t(tex.height - 1);
+  auto draw = [&](auto* out, size_t pitch, const auto* lit) {
+    if (pow2) {
+      for (int y = y0; y < y1; ++y, out += pitch, v32 += iscale) *out = lit[source[(v32 >> kFracBits) & mask]];
+      return;
+    }
+    for (int y = y0; y < y1; ++y, out += pitch) {
+      *out = lit[source[v >> kFracBits]];
+      v = level::floor_mod(v + int64_t(iscale), period);
+    }
+  };
+  if (indexed_) return draw(index_pixel(x, y0), index_pitch_, level_->light_indices.data() + size_t(map) * limits::kPaletteSize);
+  draw(pixel(x, y0), size_t(view_->width), level_->light_maps.data() + size_t(map) * limits::kPaletteSize);
+}
+
+// Crispy Doom's R_MapPlane: each pixel's texel from its column's distance from the
+// centre column, so that a span's start does not matter. Crispy skips the centre row
+// (it draws nothing there): it is drawn as the row below.
+void Canvas::crispy_plane_pixels(const PlaneKey& key, int y, int xa, int xb) {
+  const doom::Tables& t = *doom_;
+  const level::Texture& tex = level_->textures[size_t(key.texture)];
+  const Fixed height = std::abs(play::wrap_sub(fixed_of(key.height), view_->fz));
+  const int dy = std::max(1, std::abs(t.centery - y));
+  const Fixed distance = fixed_mul(height, t.yslope[size_t(y)]);
+  const Fixed view_cos = play::cosine(view_->fangle), view_sin = play::sine(view_->fangle);
+  const uint32_t xstep = uint32_t(fixed_mul(view_sin, height) / dy), ystep = uint32_t(fixed_mul(view_cos, height) / dy);
+  const uint32_t dx = uint32_t(xa - t.centerx);
+  uint32_t xfrac = uint32_t(view_->fx) + uint32_t(fixed_mul(view_cos, distance)) + dx * xstep;
+  uint32_t yfrac = 0u - uint32_t(view_->fy) - uint32_t(fixed_mul(view_sin, distance)) + dx * ystep;
+  const int map = fixed_or(doom::flat_map(t, doom::start_map(key.light, 0, 0), distance));
+  // Doom's flats are 64 x 64, row-major; ours column-major, of any size.
+  const bool flat64 = tex.width == 64 && tex.height == 64;
+  auto texel = [&](uint32_t fx, uint32_t fy) -> size_t {
+    const uint32_t u = (fx >> kFracBits) & 63, v = (fy >> kFracBits) & 63;
+    return flat64 ? size_t(u << 6 | v) : size_t(tex.wrap_u(u)) * size_t(tex.height) + size_t(tex.wrap_v(v));
+  };
+  const uint8_t* indices = tex.indices.data();
+  auto draw = [&](auto* out, const auto* lit) {
+    for (int x = xa; x < xb; ++x, xfrac += xstep, yfrac += ystep) *out++ = lit[indices[texel(xfrac, yfrac)]];
+  };
+  if (indexed_) return draw(index_pixel(xa, y), level_->light_indices.data() + size_t(map) * limits::kPaletteSize);
+  draw(pixel(xa, y), level_->light_maps.data() + size_t(map) * limits::kPaletteSize);
+}
+
+// R_MapPlane and R_DrawSpan: pixels [xa, xb) of row y of a span from column start.
+void Canvas::doom_plane_pixels(const PlaneKey& key, int y, int xa, int xb, int start) {
+  const doom::Tables& t = *doom_;
+  if (t.crispy) return crispy_plane_pixels(key, y, xa, xb);
+  const level::Texture& tex = level_->textures[size_t(key.texture)];
+  const Fixed height = std::abs(play::wrap_sub(fixed_of(key.height), view_->fz));
+  const Fixed distance = fixed_mul(height, t.yslope[size_t(y)]);
+  const Fixed xstep = fixed_mul(distance, base_x_scale_), ystep = fixed_mul(distance, base_y_scale_);
+  const Fixed length = fixed_mul(distance, t.distscale[size_t(start)]);
+  const Angle angle = (view_->fangle + t.xtoviewangle[size_t(start)]) >> kAngleToFineShift;
+  const Fixed xfrac = play::wrap_add(view_->fx, fixed_mul(kFineSine[angle + kFineAngles / 4], length));
+  const Fixed yfrac = play::wrap_sub(play::wrap_sub(0, view_->fy), fixed_mul(kFineSine[angle], length));
+  const int map = fixed_or(doom::flat_map(t, doom::start_map(key.light, 0, 0), distance));
+  const uint32_t step = ((uint32_t(xstep) << 10) & 0xFFFF0000u) | ((uint32_t(ystep) >> 6) & 0xFFFFu);
+  uint32_t position = (((uint32_t(xfrac) << 10) & 0xFFFF0000u) | ((uint32_t(yfrac) >> 6) & 0xFFFFu)) +
+                      step * uint32_t(xa - start);
+  // Doom's flats are 64 x 64, row-major; ours column-major, of any size.
+  const bool flat64 = tex.width == 64 && tex.height == 64;
+  auto texel = [&](uint32_t p) -> size_t {
+    const uint32_t u = p >> 26, v = (p >> 10) & 63;
+    return flat64 ? size_t(u << 6 | v) : size_t(tex.wrap_u(u)) * size_t(tex.height) + size_t(tex.wrap_v(v));
+  };
+  const uint8_t* indices = tex.indices.data();
+  if (indexed_) {
+    const uint8_t* lit = level_->light_indices.data() + size_t(map) * limits::kPaletteSize;
+    uint8_t* out = index_pixel(xa, y);
+    for (int x = xa; x < xb; ++x, position += step) *out++ = lit[indices[texel(position)]];
+    return;
+  }
+  const uint32_t* lit = level_->light_maps.data() + size_t(map) * limits::kPaletteSize;
+  uint32_t* out = pixel(xa, y);
+  for (int x = xa; x < xb; ++x, position += step) *out++ = lit[indices[texel(position)]];
+}
+
+// The planes filed this frame as spans, row by row, each the whole run of one plane
+// (equal keys) in its row: PlaneSpans' spans of one key that touch are joined.
+void Canvas::doom_gather_spans() {
+  const int h = view_->height;
+  doom_span_scratch_.clear();
+  doom_span_y_.clear();
+  planes_.for_each_span([this](const PlaneKey& key, int y, int xa, int xb) {
+    doom_span_scratch_.push_back({&key, xa, xb});
+    doom_span_y_.push_back(y);
+  });
+  doom_row_first_.assign(size_t(h) + 1, 0);
+  for (int y : doom_span_y_) ++doom_row_first_[size_t(y) + 1];
+  for (int y = 0; y < h; ++y) doom_row_first_[size_t(y) + 1] += doom_row_first_[size_t(y)];
+  doom_spans_.resize(doom_span_scratch_.size());
+  std::vector<uint32_t>& next = masked_first_;  // scratch: where each row's next span goes
+  next.assign(doom_row_first_.begin(), doom_row_first_.end());
+  for (size_t i = 0; i < doom_span_scratch_.size(); ++i) doom_spans_[next[size_t(doom_span_y_[i])]++] = doom_span_scratch_[i];
+  // Each row's spans left to right, touching ones of one key joined.
+  size_t out = 0;
+  for (int y = 0; y < h; ++y) {
+    const auto first = doom_spans_.begin() + std::ptrdiff_t(doom_row_first_[size_t(y)]);
+    const auto end = doom_spans_.begin() + std::ptrdiff_t(doom_row_first_[size_t(y) + 1]);
+    std::sort(first, end, [](const DoomSpan& a, const DoomSpan& b) { return a.xa < b.xa; });
+    doom_row_first_[size_t(y)] = uint32_t(out);
+    for (auto it = first; it != end; ++it) {
+      if (out > doom_row_first_[size_t(y)] && doom_spans_[out - 1].xb == it->xa && *doom_spans_[out - 1].key == *it->key)
+        doom_spans_[out - 1].xb = it->xb;
+      else
+        doom_spans_[out++] = *it;
+    }
+  }
+  doom_row_first_[size_t(h)] = uint32_t(out);
+  doom_spans_.resize(out);
+}
+
+// Draws the spans; one that starts at this strip's left edge starts where its run of
+// the same plane begins in the strips to the left (their spans are gathered: finish()).
+void Canvas::doom_draw_spans() {
+  for (int y = 0; y < view_->height; ++y) {
+    for (uint32_t i = doom_row_first_[size_t(y)]; i < doom_row_first_[size_t(y) + 1]; ++i) {
+      const DoomSpan& s = doom_spans_[i];
+      int start = s.xa;
+      if (s.xa == x0_) {
+        for (const Canvas* c = left_; c; c = c->left_) {
+          const uint32_t first = c->doom_row_first_[size_t(y)], end = c->doom_row_first_[size_t(y) + 1];
+          if (first == end) break;
+          const DoomSpan& last = c->doom_spans_[end - 1];
+          if (last.xb != c->x1_ || !(*last.key == *s.key)) break;
+          start = last.xa;
+          if (last.xa != c->x0_) break;
+        }
+      }
+      doom_plane_pixels(*s.key, y, s.xa, s.xb, start);
+    }
+  }
+}
+
+void Canvas::start_painted_planes() {
+  painting_planes_ = true;
+  painted_keys_.clear();
+  painted_plane_.assign(size_t(view_->width) * size_t(view_->height), kNoPlane);
+}
+
+void Canvas::mark_painted(int x, int y0, int y1, uint32_t id) {
+  for (int y = y0; y < y1; ++y) painted_plane_[size_t(y) * size_t(view_->width) + size_t(x)] = id;
+}
+
+// The painter's flats: the spans of each row are its runs of one plane.
+void Canvas::draw_painted_planes() {
+  painting_planes_ = false;
+  const int w = view_->width;
+  for (int y = 0; y < view_->height; ++y) {
+    const uint32_t* row = painted_plane_.data() + size_t(y) * size_t(w);
+    for (int x = 0; x < w;) {
+      int end = x + 1;
+      while (end < w && row[end] == row[x]) ++end;
+      if (row[x] != kNoPlane) doom_plane_pixels(painted_keys_[row[x]], y, x, end, x);
+      x = end;
+    }
+  }
+}
+
+// R_DrawPlanes' sky: texture column (viewangle + xtoviewangle[x]) >> 22, rows from
+// Doom's skytexturemid by its step, full bright.
+void Canvas::doom_sky_span(int x, int y0, int y1) {
+  const level::Texture& tex = level_->textures[size_t(level_->sky_texture)];
+  const Angle angle = (view_->fangle + doom_->xtoviewangle[size_t(x)]) >> 22;
+  const int u = int(angle) & width_mask(tex.width);
+  const int* rows = doom_sky_rows_.data();  // & 127 (Doom's own rows) or wrapped to the texture
+  const int64_t doom_start = !doom_->crispy && size_t(level_->sky_texture) < level_->doom_column_start.size()
+                                 ? level_->doom_column_start[size_t(level_->sky_texture)]
+                                 : kNone;
+  const uint8_t* indices = doom_start >= 0 ? level_->doom_columns.data() + doom_start + int64_t(u) * 128
+                                           : tex.indices.data() + size_t(u) * size_t(tex.height);
+  if (indexed_) {
+    const uint8_t* lit = level_->light_indices.data();  // full bright
+    uint8_t* out = index_pixel(x, y0);
+    for (int y = y0; y < y1; ++y, out += index_pitch_) *out = lit[indices[rows[y]]];
+    return;
+  }
+  const uint32_t* light_map = level_->light_maps.data();
+  uint32_t* out = pixel(x, y0);
+  for (int y = y0; y < y1; ++y, out += view_->width) *out = light_map[indices[rows[y]]];
+}
+
+// R_ProjectSprite.
+void Canvas::doom_add_sprite(uint32_t thing) {
+  const level::ShownThing& th = state_->things[thing];
+  if (th.frame == kNone) return;
+  const doom::Tables& t = *doom_;
+  const Fixed gx = fixed_of(th.pos.x), gy = fixed_of(th.pos.y);
+  const Fixed tr_x = play::wrap_sub(gx, view_->fx), tr_y = play::wrap_sub(gy, view_->fy);
+  const Fixed view_cos = play::cosine(view_->fangle), view_sin = play::sine(view_->fangle);
+  const Fixed tz = play::wrap_sub(fixed_mul(tr_x, view_cos), -fixed_mul(tr_y, view_sin));
+  if (tz < doom::kMinZ) return;
+  const Fixed xscale = fixed_div(t.projection, tz);
+  Fixed tx = -play::wrap_add(fixed_mul(tr_y, view_cos), -fixed_mul(tr_x, view_sin));
+  if (std::abs(int64_t(tx)) > (int64_t(tz) << 2)) return;
+  const level::SpriteFrame& frame = level_->sprite_frames[size_t(th.frame)];
+  const Angle seen = doom::point_to_angle(view_->fx, view_->fy, gx, gy);
+  const int rotation = int((seen - doom::to_angle(th.angle) + (play::kAngle45 / 2) * 9) >> 29);
+  const level::SpriteImage& image = level_->sprite_images[size_t(frame.image[rotation])];
+  const level::Texture& tex = level_->textures[size_t(image.texture)];
+  tx = play::wrap_sub(tx, Fixed(image.left) << kFracBits);
+  const int x1 = play::wrap_add(t.centerxfrac, fixed_mul(tx, xscale)) >> kFracBits;
+  if (x1 > view_->width) return;
+  tx = play::wrap_add(tx, Fixed(tex.width) << kFracBits);
+  const int x2 = (play::wrap_add(t.centerxfrac, fixed_mul(tx, xscale)) >> kFracBits) - 1;
+  if (x2 < 0) return;
+  Sprite s;
+  s.thing = thing;
+  s.depth = double(tz) / kFracUnit;
+  s.texture = &tex;
+  s.flip = frame.flip[rotation];
+  s.x0 = std::max({x1, 0, x0_});
+  s.x1 = std::min({x2, view_->width - 1, x1_ - 1});
+  if (s.x0 > s.x1) return;
+  s.scale = xscale;
+  s.gx = gx, s.gy = gy;
+  s.gz = fixed_of(th.z);
+  s.gzt = play::wrap_add(s.gz, Fixed(image.top) << kFracBits);
+  s.texture_mid = play::wrap_sub(s.gzt, view_->fz);
+  const Fixed iscale = fixed_div(kFracUnit, xscale);
+  s.x_start = x1;
+  s.start_frac = s.flip ? (Fixed(tex.width) << kFracBits) - 1 : 0;
+  s.x_step = s.flip ? -iscale : iscale;
+  const int light = th.sector != kNone ? state_->sectors[size_t(th.sector)].light : 255;
+  s.light_map = fixed_or(frame.bright ? 0 : doom::wall_map(t, doom::start_map(light, 0, 0), xscale));
+  s.fuzz = (th.flags & level::kShownShadow) != 0;
+  sprites_.push_back(s);
+}
+
+// R_DrawMaskedColumn over the opaque runs of texture column u.
+bool Canvas::doom_masked_column(int x, int top, int bottom, const level::Texture& tex, int u, Fixed top_screen,
+                                Fixed scale, uint32_t iscale, Fixed mid, int light_map, uint64_t& counter, bool fuzz) {
+  // A wall's clip rows may lie off the screen (Doom's clip arrays do too): the screen's own bound.
+  top = std::max(top, 0), bottom = std::min(bottom, view_->height);
+  bool drew = false;
+  const size_t column = size_t(u) * size_t(tex.height);
+  const size_t map = size_t(light_map) * limits::kPaletteSize;
+  auto post = [&](int first, int end) {
+    const Fixed top_y = play::wrap_add(top_screen, Fixed(uint32_t(scale) * uint32_t(first)));
+    const Fixed bottom_y = play::wrap_add(top_y, Fixed(uint32_t(scale) * uint32_t(end - first)));
+    int y0 = (top_y + kFracUnit - 1) >> kFracBits, y1 = ((bottom_y - 1) >> kFracBits) + 1;
+    y0 = std::max(y0, top), y1 = std::min(y1, bottom);
+    if (fuzz) y0 = std::max(y0, 1), y1 = std::min(y1, view_->height - 1);  // as Doom: the rows read stay on screen
+    if (y0 >= y1) return;
+    drew = true;
+    counter += uint64_t(y1 - y0);
+    if (writes_)
+      for (int y = y0; y < y1; ++y) ++(*writes_)[size_t(y) * size_t(view_->width) + size_t(x)];
+    if (fuzz) return draw_fuzz(x, y0, y1);
+    uint32_t v = uint32_t(play::wrap_sub(mid, Fixed(first) << kFracBits)) + uint32_t(y0 - doom_->centery) * iscale;
+    const int length = end - first;
+    auto row = [&](uint32_t vv) {  // within the post; past its end, its last row (Doom reads the pad byte)
+      const int r = int((vv >> kFracBits) & 127);
+      return column + size_t(first + std::min(r, length - 1));
+    };
+    if (indexed_) {
+      const uint8_t* lit = level_->light_indices.data() + map;
+      uint8_t* out = index_pixel(x, y0);
+      for (int y = y0; y < y1; ++y, out += index_pitch_, v += iscale) *out = lit[tex.indices[row(v)]];
+    } else {
+      uint32_t* out = pixel(x, y0);
+      for (int y = y0; y < y1; ++y, out += view_->width, v += iscale) *out = lit(tex, row(v), light_map);
+    }
+  };
+  if (!tex.holes) {
+    post(0, tex.height);
+    return drew;
+  }
+  for (uint32_t r = tex.run_start[size_t(u)]; r < tex.run_start[size_t(u) + 1]; ++r) post(tex.runs[r].first, tex.runs[r].end);
+  return drew;
+}
+
+// R_RenderMaskedSegRange, one column.
+void Canvas::doom_draw_masked(int x, const Step& m) {
+  const level::Wall& w = level_->walls[m.hit.wall];
+  const level::Side& side = w.sides[m.hit.side];
+  const level::SectorState& s = state_->sectors[m.near];
+  const level::SectorState& b = state_->sectors[m.far];
+  const int texture = state_->shown(state_->texture(m.hit.wall, m.hit.side, level::kMiddlePart));
+  const level::Texture& tex = level_->textures[size_t(texture)];
+  const doom::Tables& t = *doom_;
+  const DoomSide& ds = doom_side(m.hit.wall, m.hit.side, m.hit.t);
+  const Fixed scale = doom::scale_at(t, ds.seg, view_->fangle, x, ds.precision.max_scale);
+  Fixed mid = (w.flags & level::kUnpegLower)
+                  ? fixed_of(std::max(s.floor, b.floor)) + (Fixed(tex.height) << kFracBits) - view_->fz
+                  : fixed_of(std::min(s.ceiling, b.ceiling)) - view_->fz;
+  mid = play::wrap_add(mid, fixed_of(side.y_offset + level_->part_y(side, level::kMiddlePart)));
+  const Fixed column = play::wrap_add(doom::texture_column(t, ds.seg, x),
+                                      fixed_of(side.x_offset + level_->part_x(side, level::kMiddlePart) +
+                                               state_->scroll(m.hit.wall, m.hit.side)));
+  const int u = int(column >> kFracBits) & width_mask(tex.width);
+  const int light = side.light != kNone ? side.light : s.light;
+  const int map = fixed_or(doom::wall_map(t, doom::start_map(light, w.contrast, 0), scale));
+  const Fixed top_screen = play::wrap_sub(t.centeryfrac, fixed_mul(mid, scale));
+  doom_masked_column(x, m.top, m.bottom, tex, std::min(u, tex.width - 1), top_screen, scale,
+                     0xFFFFFFFFu / uint32_t(scale), mid, map, masked_pixels_, false);
+}
+
+// R_DrawMasked: sprites farthest first (by scale), each after the masked walls behind
+// it in its columns, clipped by the walls in front of it (R_DrawSprite); then the
+// masked walls left, farthest first.
+void Canvas::doom_draw_layers() {
+  std::sort(sprites_.begin(), sprites_.end(), [](const Sprite& a, const Sprite& b) {
+    return a.scale != b.scale ? a.scale < b.scale : a.thing < b.thing;
+  });
+  masked_first_.resize(size_t(view_->width) + 1);
+  size_t total = 0;
+  for (int x = x0_; x < x1_; ++x) masked_first_[size_t(x)] = uint32_t(total), total += steps_[x].size();
+  masked_done_.assign(total, 0);
+  const doom::Tables& t = *doom_;
+  for (const Sprite& s : sprites_) {
+    bool drew = false;
+    for (int x = s.x0; x <= s.x1; ++x) {
+      const std::vector<Step>& steps = steps_[x];
+      uint8_t* done = masked_done_.data() + masked_first_[size_t(x)];
+      int clip_top = -2, clip_bottom = -2;  // Doom's cliptop and clipbot, -2 unset
+      for (size_t i = steps.size(); i-- > 0;) {  // farthest first, as Doom scans its drawsegs
+        const Step& step = steps[i];
+        const DoomSide& ds = doom_side(step.hit.wall, step.hit.side, step.hit.t);
+        const bool behind = ds.high_scale < s.scale ||
+                            (ds.low_scale < s.scale &&
+                             !doom::point_on_seg_side(s.gx, s.gy, ds.v1x, ds.v1y, ds.v2x, ds.v2y));
+        if (behind) {
+          if (step.masked && !done[i]) doom_draw_masked(x, step), done[i] = 1;
+          continue;
+        }
+        // Its silhouettes: which of its clips bind this sprite (R_StoreWallRange, R_DrawSprite).
+        bool sil_bottom = true, sil_top = true;
+        int bottom_clip = step.bottom, top_clip = step.top - 1;
+        if (step.far != kNone) {
+          const level::SectorState& f = state_->sectors[size_t(step.near)];
+          const level::SectorState& k = state_->sectors[size_t(step.far)];
+          const Fixed ff = fixed_of(f.floor), fc = fixed_of(f.ceiling), kf = fixed_of(k.floor), kc = fixed_of(k.ceiling);
+          int64_t bsil = INT64_MIN, tsil = INT64_MAX;
+          sil_bottom = sil_top = false;
+          if (ff > kf) sil_bottom = true, bsil = ff;
+          else if (kf > view_->fz) sil_bottom = true, bsil = INT64_MAX;
+          if (fc < kc) sil_top = true, tsil = fc;
+          else if (kc < view_->fz) sil_top = true, tsil = INT64_MIN;
+          if (kc <= ff) bottom_clip = -1, bsil = INT64_MAX, sil_bottom = true;
+          if (kf >= fc) top_clip = view_->height, tsil = INT64_MIN, sil_top = true;
+          if (step.masked) {
+            if (!sil_top) sil_top = true, tsil = INT64_MIN;
+            if (!sil_bottom) sil_bottom = true, bsil = INT64_MAX;
+          }
+          if (s.gz >= bsil) sil_bottom = false;
+          if (s.gzt <= tsil) sil_top = false;
+        }
+        if (sil_bottom && clip_bottom == -2) clip_bottom = bottom_clip;
+        if (sil_top && clip_top == -2) clip_top = top_clip;
+      }
+      if (clip_bottom == -2) clip_bottom = view_->height;
+      if (clip_top == -2) clip_top = -1;
+      const int top = clip_top + 1, bottom = clip_bottom;
+      if (top >= bottom) continue;
+      const level::Texture& tex = *s.texture;
+      const Fixed frac = play::wrap_add(s.start_frac, Fixed(uint32_t(s.x_step) * uint32_t(x - s.x_start)));
+      const int u = frac >> kFracBits;
+      if (u < 0 || u >= tex.width) continue;
+      const Fixed top_screen = play::wrap_sub(t.centeryfrac, fixed_mul(s.texture_mid, s.scale));
+      if (doom_masked_column(x, top, bottom, tex, u, top_screen, s.scale, uint32_t(std::abs(s.x_step)), s.texture_mid,
+                             s.light_map, sprite_pixels_, s.fuzz))
+        drew = true;
+    }
+    sprites_drawn_ += drew;
+    if (drew) things_drawn_.push_back(s.thing);
+  }
+  for (int x = x0_; x < x1_; ++x) {
+    const std::vector<Step>& steps = steps_[x];
+    const uint8_t* done = masked_done_.data() + masked_first_[size_t(x)];
+    for (size_t i = steps.size(); i-- > 0;)
+      if (steps[i].masked && !done[i]) doom_draw_masked(x, steps[i]);
+  }
+}
+
+}  // namespace p3d::render
