@@ -18,6 +18,7 @@
 #include <bit>
 #include <climits>
 
+#include "engine/render/column_loop.h"
 #include "engine/render/draw.h"
 
 namespace p3d::render {
@@ -260,16 +261,20 @@ void Canvas::doom_wall_rows(int x, int y0, int y1, int texture, Fixed mid, int32
   const uint8_t* source = doom_start >= 0 ? level_->doom_columns.data() + doom_start + int64_t(u) * 128
                                           : tex.indices.data() + size_t(u) * size_t(tex.height);
   const int h = doom_start >= 0 ? 128 : tex.height;
+  const size_t light = size_t(map) * limits::kPaletteSize;
+  if ((h & (h - 1)) == 0) {  // rows & (h - 1), as rows & 127 at most: Doom's 16.16 v wraps alike
+    const int64_t period = int64_t(std::min(h, 128)) << kFracBits;
+    if (indexed_)
+      return wrapped_column(index_pixel(x, y0), index_pitch_, y1 - y0, v, iscale, period,
+                            IndexedColumn{source, level_->light_indices.data() + light});
+    return wrapped_column(pixel(x, y0), size_t(view_->width), y1 - y0, v, iscale, period,
+                          PalettedColumn{source, level_->light_maps.data() + light});
+  }
   auto draw = [&](auto* out, size_t pitch, const auto* lit) {
-    if ((h & (h - 1)) == 0) {
-      const uint32_t mask = uint32_t(std::min(h, 128) - 1);
-      for (int y = y0; y < y1; ++y, out += pitch, v += iscale) *out = lit[source[(v >> kFracBits) & mask]];
-    } else {
-      for (int y = y0; y < y1; ++y, out += pitch, v += iscale) *out = lit[source[doom_row(v, h)]];
-    }
+    for (int y = y0; y < y1; ++y, out += pitch, v += iscale) *out = lit[source[doom_row(v, h)]];
   };
-  if (indexed_) return draw(index_pixel(x, y0), index_pitch_, level_->light_indices.data() + size_t(map) * limits::kPaletteSize);
-  draw(pixel(x, y0), size_t(view_->width), level_->light_maps.data() + size_t(map) * limits::kPaletteSize);
+  if (indexed_) return draw(index_pixel(x, y0), index_pitch_, level_->light_indices.data() + light);
+  draw(pixel(x, y0), size_t(view_->width), level_->light_maps.data() + light);
 }
 
 // Crispy Doom's R_DrawColumn: texel rows wrap at the texture's own height (its
@@ -278,22 +283,17 @@ void Canvas::crispy_wall_rows(int x, int y0, int y1, const level::Texture& tex, 
                               int map) {
   const uint8_t* source = tex.indices.data() + size_t(u) * size_t(tex.height);
   const int64_t period = int64_t(tex.height) << kFracBits;
+  // A power of two divides 2^32: the 32-bit v wraps alike. Else v and the step are
+  // reduced modulo the height first, so that one subtraction keeps v in range.
   const bool pow2 = (tex.height & (tex.height - 1)) == 0;
-  int64_t v = pow2 ? 0 : level::floor_mod(int64_t(v0), period);
-  uint32_t v32 = uint32_t(v0);
-  const uint32_t mask = uint32_t(tex.height - 1);
-  auto draw = [&](auto* out, size_t pitch, const auto* lit) {
-    if (pow2) {
-      for (int y = y0; y < y1; ++y, out += pitch, v32 += iscale) *out = lit[source[(v32 >> kFracBits) & mask]];
-      return;
-    }
-    for (int y = y0; y < y1; ++y, out += pitch) {
-      *out = lit[source[v >> kFracBits]];
-      v = level::floor_mod(v + int64_t(iscale), period);
-    }
-  };
-  if (indexed_) return draw(index_pixel(x, y0), index_pitch_, level_->light_indices.data() + size_t(map) * limits::kPaletteSize);
-  draw(pixel(x, y0), size_t(view_->width), level_->light_maps.data() + size_t(map) * limits::kPaletteSize);
+  const int64_t v = pow2 ? int64_t(uint32_t(v0)) : level::floor_mod(int64_t(v0), period);
+  const int64_t step = pow2 ? int64_t(iscale) : int64_t(iscale) % period;
+  const size_t light = size_t(map) * limits::kPaletteSize;
+  if (indexed_)
+    return wrapped_column(index_pixel(x, y0), index_pitch_, y1 - y0, v, step, period,
+                          IndexedColumn{source, level_->light_indices.data() + light});
+  wrapped_column(pixel(x, y0), size_t(view_->width), y1 - y0, v, step, period,
+                 PalettedColumn{source, level_->light_maps.data() + light});
 }
 
 // Crispy Doom's R_MapPlane: each pixel's texel from its column's distance from the
