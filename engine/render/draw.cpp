@@ -13,7 +13,7 @@
 // plane_span, sky_span.
 #include "engine/render/draw.h"
 
-#include "engine/render/column_loop.h"
+#include "engine/render/texel_loops.h"
 
 #include <algorithm>
 #include <array>
@@ -21,9 +21,6 @@
 #include <cmath>
 #include <cstring>
 
-#ifdef __SSE2__
-#include <emmintrin.h>
-#endif
 
 namespace p3d::render {
 
@@ -660,34 +657,12 @@ void with_texel_index(const level::Texture& tex, Draw&& draw) {
 }
 
 // n pixels of a row of a power-of-two plane, in palette indices: with_texel_index's
-// arithmetic (modulo 2^32) for four pixels at a time in SSE2's 32-bit lanes, which a
-// flat's rows spend half their instructions on.
+// arithmetic (modulo 2^32), the column-major texel (u >> 16) * height + (v >> 16).
 void indexed_pow2_row(uint8_t* out, int n, uint32_t u, uint32_t du, uint32_t v, uint32_t dv, const level::Texture& tex,
                       const uint8_t* light_map) {
   const uint32_t shift = uint32_t(std::countr_zero(unsigned(tex.height)));
-  const uint32_t umask = uint32_t(tex.width - 1) << shift, vmask = uint32_t(tex.height - 1);
-  const uint8_t* indices = tex.indices.data();
-  int i = 0;
-#ifdef __SSE2__
-  const __m128i u_shift = _mm_cvtsi32_si128(int(16 - shift)), u_mask = _mm_set1_epi32(int(umask)),
-                v_mask = _mm_set1_epi32(int(vmask));
-  const __m128i du4 = _mm_set1_epi32(int(4 * du)), dv4 = _mm_set1_epi32(int(4 * dv));
-  __m128i uu = _mm_setr_epi32(int(u), int(u + du), int(u + 2 * du), int(u + 3 * du));
-  __m128i vv = _mm_setr_epi32(int(v), int(v + dv), int(v + 2 * dv), int(v + 3 * dv));
-  for (; i + 4 <= n; i += 4) {
-    const __m128i texels = _mm_or_si128(_mm_and_si128(_mm_srl_epi32(uu, u_shift), u_mask),
-                                        _mm_and_si128(_mm_srli_epi32(vv, 16), v_mask));
-    const uint64_t low = uint64_t(_mm_cvtsi128_si64(texels)), high = uint64_t(_mm_cvtsi128_si64(_mm_unpackhi_epi64(texels, texels)));
-    out[i] = light_map[indices[uint32_t(low)]];
-    out[i + 1] = light_map[indices[low >> 32]];
-    out[i + 2] = light_map[indices[uint32_t(high)]];
-    out[i + 3] = light_map[indices[high >> 32]];
-    uu = _mm_add_epi32(uu, du4);
-    vv = _mm_add_epi32(vv, dv4);
-  }
-  u += uint32_t(i) * du, v += uint32_t(i) * dv;
-#endif
-  for (; i < n; ++i, u += du, v += dv) out[i] = light_map[indices[((u >> (16 - shift)) & umask) | ((v >> 16) & vmask)]];
+  indexed_row(out, n, {u, du, 16 - shift, uint32_t(tex.width - 1) << shift}, {v, dv, 16, uint32_t(tex.height - 1)},
+              tex.indices.data(), light_map);
 }
 
 }  // namespace

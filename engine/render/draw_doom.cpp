@@ -18,7 +18,7 @@
 #include <bit>
 #include <climits>
 
-#include "engine/render/column_loop.h"
+#include "engine/render/texel_loops.h"
 #include "engine/render/draw.h"
 
 namespace p3d::render {
@@ -318,6 +318,10 @@ void Canvas::crispy_plane_pixels(const PlaneKey& key, int y, int xa, int xb) {
     return flat64 ? size_t(u << 6 | v) : size_t(tex.wrap_u(u)) * size_t(tex.height) + size_t(tex.wrap_v(v));
   };
   const uint8_t* indices = tex.indices.data();
+  if (indexed_ && flat64)  // u = (xfrac >> 16) & 63 and v = (yfrac >> 16) & 63 at u * 64 + v
+    return indexed_row(index_pixel(xa, y), xb - xa, {xfrac, xstep, kFracBits - 6, 63u << 6},
+                       {yfrac, ystep, kFracBits, 63u}, indices,
+                       level_->light_indices.data() + size_t(map) * limits::kPaletteSize);
   auto draw = [&](auto* out, const auto* lit) {
     for (int x = xa; x < xb; ++x, xfrac += xstep, yfrac += ystep) *out++ = lit[indices[texel(xfrac, yfrac)]];
   };
@@ -348,6 +352,9 @@ void Canvas::doom_plane_pixels(const PlaneKey& key, int y, int xa, int xb, int s
     return flat64 ? size_t(u << 6 | v) : size_t(tex.wrap_u(u)) * size_t(tex.height) + size_t(tex.wrap_v(v));
   };
   const uint8_t* indices = tex.indices.data();
+  if (indexed_ && flat64)  // Doom's packed position: u its top 6 bits, v bits 10..15, at u * 64 + v
+    return indexed_row(index_pixel(xa, y), xb - xa, {position, step, 20, 63u << 6}, {position, step, 10, 63u},
+                       indices, level_->light_indices.data() + size_t(map) * limits::kPaletteSize);
   if (indexed_) {
     const uint8_t* lit = level_->light_indices.data() + size_t(map) * limits::kPaletteSize;
     uint8_t* out = index_pixel(xa, y);
