@@ -127,6 +127,8 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
   doom_waiting_ = painting_planes_ = false;
   if (doom_) {
     if (++doom_stamp_ == 0) doom_sides_.clear(), doom_stamp_ = 1;
+    if (doom_sides_.size() < level.doom_segs.size() + level.walls.size() * 2)
+      doom_sides_.resize(level.doom_segs.size() + level.walls.size() * 2);
     const doom::Angle angle = (view.fangle - play::kAngle90) >> play::kAngleToFineShift;
     base_x_scale_ = play::fixed_div(play::kFineSine[angle + play::kFineAngles / 4], doom_->centerxfrac);
     base_y_scale_ = -play::fixed_div(play::kFineSine[angle], doom_->centerxfrac);

@@ -153,7 +153,25 @@ class Canvas {
   bool draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom);
   // Doom's rules (draw_doom.cpp): R_StoreWallRange and R_RenderSegLoop for one column.
   bool draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& bottom);
-  const DoomSide& doom_side(uint32_t wall, int side, double t);
+  // The side's seg at the wall's parameter t, set up on first use in a frame: the lookup
+  // inline (a column asks for it at every wall, and a sprite's column again), the set-up not.
+  const DoomSide& doom_side(uint32_t wall, int side, double t) {
+    const level::Level& l = *level_;
+    const size_t side_index = size_t(wall) * 2 + size_t(side);
+    size_t index = l.doom_segs.size() + side_index;  // the side as one seg
+    if (side_index + 1 < l.doom_seg_start.size()) {
+      const uint32_t first = l.doom_seg_start[side_index], end = l.doom_seg_start[side_index + 1];
+      if (first < end) {  // the last seg starting at or before t (the first when none does)
+        uint32_t i = first;
+        while (i + 1 < end && l.doom_segs[i + 1].t0 <= t) ++i;
+        index = i;
+      }
+    }
+    DoomSide& d = doom_sides_[index];
+    if (d.stamp != doom_stamp_) set_up_doom_side(d, wall, side, index < l.doom_segs.size() ? &l.doom_segs[index] : nullptr);
+    return d;
+  }
+  void set_up_doom_side(DoomSide& d, uint32_t wall, int side, const level::Level::DoomSeg* seg);
   // Rows [y0, y1) of a wall column as R_DrawColumn draws them: texel row
   // ((mid + (y - centery) * iscale) >> 16) & 127, column `column` & Doom's width mask.
   void doom_wall_rows(int x, int y0, int y1, int texture, doom::Fixed mid, int32_t column, uint32_t iscale, int map);

@@ -55,27 +55,10 @@ inline size_t doom_row(uint32_t v, int height) {
 
 }  // namespace
 
-// The seg of a wall side at parameter t: one of Doom's (Level::doom_segs), or the
-// whole side from its start.
-const Canvas::DoomSide& Canvas::doom_side(uint32_t wall, int side, double t) {
+// A side's seg as this frame's view sees it: one of Doom's (Level::doom_segs), or the
+// whole side from its start (seg null).
+void Canvas::set_up_doom_side(DoomSide& d, uint32_t wall, int side, const level::Level::DoomSeg* seg) {
   const level::Level& l = *level_;
-  const size_t side_index = size_t(wall) * 2 + size_t(side);
-  size_t index = l.doom_segs.size() + side_index;  // the side as one seg
-  const level::Level::DoomSeg* seg = nullptr;
-  if (side_index + 1 < l.doom_seg_start.size()) {
-    const uint32_t first = l.doom_seg_start[side_index], end = l.doom_seg_start[side_index + 1];
-    if (first < end) {
-      // The last seg starting at or before t (the first when none does).
-      uint32_t i = first;
-      while (i + 1 < end && l.doom_segs[i + 1].t0 <= t) ++i;
-      index = i;
-      seg = &l.doom_segs[i];
-    }
-  }
-  if (doom_sides_.size() < l.doom_segs.size() + l.walls.size() * 2)
-    doom_sides_.resize(l.doom_segs.size() + l.walls.size() * 2);
-  DoomSide& d = doom_sides_[index];
-  if (d.stamp == doom_stamp_) return d;
   d.stamp = doom_stamp_;
   const level::Wall& w = l.walls[wall];
   const geom::IPoint p1 = side == 0 ? w.p1 : w.p2, p2 = side == 0 ? w.p2 : w.p1;
@@ -118,7 +101,6 @@ const Canvas::DoomSide& Canvas::doom_side(uint32_t wall, int side, double t) {
   } else {
     d.low_scale = d.high_scale = 0;
   }
-  return d;
 }
 
 // R_StoreWallRange and one column of R_RenderSegLoop. [top, bottom) are the open rows:
