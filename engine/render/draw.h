@@ -315,6 +315,7 @@ class Canvas {
   bool painting_planes_ = false;
   std::vector<uint8_t> masked_done_;  // doom_draw_layers: per step of every column, drawn
   std::vector<uint32_t> masked_first_;  // the first step of each column in masked_done_
+  std::vector<uint32_t> nearest_masked_;  // doom_draw_layers: per column, its nearest masked step (none: the count)
   bool dry_ = false;       // clip_wall: compute rows, write nothing
   bool painting_ = false;  // paint_wall, paint_background: draw planes at once
 };

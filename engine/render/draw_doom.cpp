@@ -578,7 +578,18 @@ void Canvas::doom_draw_layers() {
   });
   masked_first_.resize(size_t(view_->width) + 1);
   size_t total = 0;
-  for (int x = x0_; x < x1_; ++x) masked_first_[size_t(x)] = uint32_t(total), total += steps_[x].size();
+  nearest_masked_.resize(size_t(view_->width));
+  for (int x = x0_; x < x1_; ++x) {
+    const std::vector<Step>& steps = steps_[x];
+    masked_first_[size_t(x)] = uint32_t(total), total += steps.size();
+    size_t nearest = steps.size();
+    for (size_t i = 0; i < steps.size(); ++i)
+      if (steps[i].masked) {
+        nearest = i;
+        break;
+      }
+    nearest_masked_[size_t(x)] = uint32_t(nearest);
+  }
   masked_done_.assign(total, 0);
   const doom::Tables& t = *doom_;
   for (const Sprite& s : sprites_) {
@@ -587,7 +598,11 @@ void Canvas::doom_draw_layers() {
       const std::vector<Step>& steps = steps_[x];
       uint8_t* done = masked_done_.data() + masked_first_[size_t(x)];
       int clip_top = -2, clip_bottom = -2;  // Doom's cliptop and clipbot, -2 unset
+      const size_t nearest_masked = nearest_masked_[size_t(x)];
       for (size_t i = steps.size(); i-- > 0;) {  // farthest first, as Doom scans its drawsegs
+        // The farthest wall in front that binds decides each clip: once both are set,
+        // only masked walls nearer still may draw (those Doom counts behind the sprite).
+        if (clip_top != -2 && clip_bottom != -2 && i < nearest_masked) break;
         const Step& step = steps[i];
         const DoomSide& ds = doom_side(step.hit.wall, step.hit.side, step.hit.t);
         const bool behind = ds.high_scale < s.scale ||
