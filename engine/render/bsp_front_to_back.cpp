@@ -66,6 +66,7 @@ class BspFrontToBack final : public Renderer {
     Canvas::prepare_probe(view, probe);
     Canvas::prepare_frame(level, frame);
     attach_things(level, state);
+    if (view.doom) Canvas::project_doom_sprites(level, state, view, projected_);
     pool_.run(strips, [&](int i) {
       Strip& s = strips_[size_t(i)];
       s.x0 = i * strip_width;
@@ -73,7 +74,7 @@ class BspFrontToBack final : public Renderer {
       s.canvas.begin(level, state, view, frame, camera_sector, probe, s.x0, s.x1,
                      i > 0 ? &strips_[size_t(i) - 1].canvas : nullptr);
       s.order = one_walk ? &probe->order : nullptr;
-      walk(level, state, view, camera, s);
+      walk(level, view, camera, s);
       // A frame that keeps Doom's 8-bit screen: each strip copies its own indices, from
       // its own cache, with no second dispatch (5% of a frame on two threads).
       if (frame.indexed() && !s.canvas.waiting()) s.canvas.resolve(0, view.height);
@@ -122,7 +123,7 @@ class BspFrontToBack final : public Renderer {
     RenderStats stats;
   };
 
-  void walk(const level::Level& level, const level::State& state, const View& view, const Camera& camera, Strip& s) {
+  void walk(const level::Level& level, const View& view, const Camera& camera, Strip& s) {
     s.mask.reset(view.width);
     s.mask.close_outside(s.x0, s.x1);
     s.stats = {};
@@ -130,10 +131,9 @@ class BspFrontToBack final : public Renderer {
     if (s.order) s.order->clear();
     s.stack.assign(1, {level.root(), false});
     // Doom's rules clip a sprite by the walls' silhouettes, not by what the walk culls:
-    // every thing goes to the canvas, as in the reference.
+    // every thing goes to the canvas, as in the reference (projected once a frame: render).
     const bool every_thing = view.doom != nullptr;
-    if (every_thing)
-      for (uint32_t i = 0; i < state.things.size(); ++i) s.canvas.add_sprite(i);
+    if (every_thing) s.canvas.add_projected_sprites(projected_);
     while (!s.stack.empty()) {
       if (s.mask.full()) {
         s.stats.early_exit = true;
@@ -318,6 +318,7 @@ class BspFrontToBack final : public Renderer {
   // attached_ (indices in state.things), and per node and leaf its culling box.
   std::vector<ThingRange> node_things_, leaf_things_;
   std::vector<uint32_t> attached_;
+  std::vector<Canvas::Sprite> projected_;  // Doom's rules: every thing's sprite, projected once a frame
   std::vector<geom::BBox> cull_boxes_, leaf_cull_boxes_;
   std::vector<std::pair<int32_t, uint32_t>> owners_;  // attach_things' scratch: (node or leaf_child, thing)
   std::vector<uint32_t> fragments_, things_;  // merged_stats' scratch

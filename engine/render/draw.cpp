@@ -457,10 +457,10 @@ bool Canvas::layer_column(int x, int top, int bottom, const level::Texture& tex,
 
 // The light map a pixel takes: `map`, unless the player's powers fix one for every
 // pixel (Doom's fixedcolormap); RGBA art has no invulnerability map and stays bright.
-int Canvas::fixed_or(int map) const {
-  const int fixed = state_->fixed_light_map;
+int Canvas::fixed_or(const level::Level& level, const level::State& state, int map) {
+  const int fixed = state.fixed_light_map;
   if (fixed < 0) return map;
-  return level_->paletted() || fixed < limits::kLightMaps ? fixed : 0;
+  return level.paletted() || fixed < limits::kLightMaps ? fixed : 0;
 }
 
 // A texel under a light map: looked up in the level's light maps when paletted, else shaded.
@@ -478,7 +478,11 @@ uint32_t Canvas::lit(const level::Texture& tex, size_t texel, int light_map) con
 constexpr double kSpriteNearDepth = 4;  // Doom's MINZ: nearer things are not drawn
 
 void Canvas::add_sprite(uint32_t thing) {
-  if (doom_) return doom_add_sprite(thing);
+  if (doom_) {
+    Sprite s;
+    if (project_doom_sprite(*level_, *state_, *view_, thing, s)) add_projected_sprites({&s, 1});
+    return;
+  }
   const level::ShownThing& t = state_->things[thing];
   if (t.frame == level::kNone) return;
   const double depth = view_->depth_of(t.pos);

@@ -66,6 +66,30 @@ class Canvas {
   // Painter's first coat: the sector's planes out to the horizon over the whole column.
   void paint_background(int x, int sector);
 
+  // A thing's sprite as this view sees it.
+  struct Sprite {
+    uint32_t thing;               // index in state.things
+    double depth;                 // of the thing's position along the view direction
+    int x0, x1;                   // columns it may cover
+    const level::Texture* texture;
+    bool flip;
+    double left;                  // lateral position (right of the view axis) of the picture's left edge
+    double top;                   // world height of the picture's top row
+    int light_map;                // 0 (full bright) .. 31
+    bool fuzz;                    // Doom's shadow (MF_SHADOW)
+    // Doom's rules (R_ProjectSprite): its scale, texel column at unclipped column x_start
+    // and step per column, and the height of its top above the eye.
+    doom::Fixed scale = 0, start_frac = 0, x_step = 0, texture_mid = 0, gz = 0, gzt = 0;
+    int x_start = 0;
+    doom::Fixed gx = 0, gy = 0;
+  };
+  // Doom's rules: every thing's sprite as the view projects it (R_ProjectSprite),
+  // clipped to the screen, once a frame for all the strips rather than by each.
+  static void project_doom_sprites(const level::Level& level, const level::State& state, const View& view,
+                                   std::vector<Sprite>& out);
+  // Those of a frame's projected sprites that cross this canvas's columns.
+  void add_projected_sprites(std::span<const Sprite> sprites);
+
   // A thing that may be seen, by its index in state.things (the BSP renderer adds those
   // its walk reaches, the others all of them); things showing no frame are ignored.
   void add_sprite(uint32_t thing);
@@ -123,23 +147,6 @@ class Canvas {
     double anchor;  // world height of the texture's row 0 (before the side's y offset)
     int light;      // 0..255
   };
-  // A thing's sprite as this view sees it.
-  struct Sprite {
-    uint32_t thing;               // index in state.things
-    double depth;                 // of the thing's position along the view direction
-    int x0, x1;                   // columns it may cover
-    const level::Texture* texture;
-    bool flip;
-    double left;                  // lateral position (right of the view axis) of the picture's left edge
-    double top;                   // world height of the picture's top row
-    int light_map;                // 0 (full bright) .. 31
-    bool fuzz;                    // Doom's shadow (MF_SHADOW)
-    // Doom's rules (R_ProjectSprite): its scale, texel column at unclipped column x_start
-    // and step per column, and the height of its top above the eye.
-    doom::Fixed scale = 0, start_frac = 0, x_step = 0, texture_mid = 0, gz = 0, gzt = 0;
-    int x_start = 0;
-    doom::Fixed gx = 0, gy = 0;
-  };
   // Doom's rules: one side of a wall as this frame's view sets it up (R_StoreWallRange),
   // made on first use in a frame (stamp).
   struct DoomSide {
@@ -190,7 +197,9 @@ class Canvas {
   void mark_painted(int x, int y0, int y1, uint32_t id);
   void draw_painted_planes();
   void doom_sky_span(int x, int y0, int y1);
-  void doom_add_sprite(uint32_t thing);
+  // R_ProjectSprite over the whole screen; false when the thing shows nothing there.
+  static bool project_doom_sprite(const level::Level& level, const level::State& state, const View& view,
+                                  uint32_t thing, Sprite& s);
   void doom_draw_layers();
   void doom_draw_masked(int x, const Step& step);
   // R_DrawMaskedColumn: rows of texture column u from its opaque runs, the picture's
@@ -234,7 +243,8 @@ class Canvas {
   int near_sector(const level::Wall& w, const WallHit& hit, int x) const;
   double texture_u(const WallHit& hit, int part) const;
   uint32_t lit(const level::Texture& tex, size_t texel, int light_map) const;
-  int fixed_or(int map) const;
+  int fixed_or(int map) const { return fixed_or(*level_, *state_, map); }
+  static int fixed_or(const level::Level& level, const level::State& state, int map);
   uint32_t* pixel(int x, int y) { return frame_->pixels.data() + size_t(y) * view_->width + x; }
   uint8_t* index_pixel(int x, int y) { return indices_.data() + size_t(y) * index_pitch_ + size_t(x - x0_); }
   void count(int x, int y0, int y1);

@@ -454,51 +454,67 @@ void Canvas::doom_sky_span(int x, int y0, int y1) {
 }
 
 // R_ProjectSprite.
-void Canvas::doom_add_sprite(uint32_t thing) {
-  const level::ShownThing& th = state_->things[thing];
-  if (th.frame == kNone) return;
-  const doom::Tables& t = *doom_;
+bool Canvas::project_doom_sprite(const level::Level& level, const level::State& state, const View& view,
+                                 uint32_t thing, Sprite& s) {
+  const level::ShownThing& th = state.things[thing];
+  if (th.frame == kNone) return false;
+  const doom::Tables& t = *view.doom;
   const Fixed gx = fixed_of(th.pos.x), gy = fixed_of(th.pos.y);
-  const Fixed tr_x = play::wrap_sub(gx, view_->fx), tr_y = play::wrap_sub(gy, view_->fy);
-  const Fixed view_cos = play::cosine(view_->fangle), view_sin = play::sine(view_->fangle);
+  const Fixed tr_x = play::wrap_sub(gx, view.fx), tr_y = play::wrap_sub(gy, view.fy);
+  const Fixed view_cos = play::cosine(view.fangle), view_sin = play::sine(view.fangle);
   const Fixed tz = play::wrap_sub(fixed_mul(tr_x, view_cos), -fixed_mul(tr_y, view_sin));
-  if (tz < doom::kMinZ) return;
+  if (tz < doom::kMinZ) return false;
   const Fixed xscale = fixed_div(t.projection, tz);
   Fixed tx = -play::wrap_add(fixed_mul(tr_y, view_cos), -fixed_mul(tr_x, view_sin));
-  if (std::abs(int64_t(tx)) > (int64_t(tz) << 2)) return;
-  const level::SpriteFrame& frame = level_->sprite_frames[size_t(th.frame)];
-  const Angle seen = doom::point_to_angle(view_->fx, view_->fy, gx, gy);
+  if (std::abs(int64_t(tx)) > (int64_t(tz) << 2)) return false;
+  const level::SpriteFrame& frame = level.sprite_frames[size_t(th.frame)];
+  const Angle seen = doom::point_to_angle(view.fx, view.fy, gx, gy);
   const int rotation = int((seen - doom::to_angle(th.angle) + (play::kAngle45 / 2) * 9) >> 29);
-  const level::SpriteImage& image = level_->sprite_images[size_t(frame.image[rotation])];
-  const level::Texture& tex = level_->textures[size_t(image.texture)];
+  const level::SpriteImage& image = level.sprite_images[size_t(frame.image[rotation])];
+  const level::Texture& tex = level.textures[size_t(image.texture)];
   tx = play::wrap_sub(tx, Fixed(image.left) << kFracBits);
   const int x1 = play::wrap_add(t.centerxfrac, fixed_mul(tx, xscale)) >> kFracBits;
-  if (x1 > view_->width) return;
+  if (x1 > view.width) return false;
   tx = play::wrap_add(tx, Fixed(tex.width) << kFracBits);
   const int x2 = (play::wrap_add(t.centerxfrac, fixed_mul(tx, xscale)) >> kFracBits) - 1;
-  if (x2 < 0) return;
-  Sprite s;
+  if (x2 < 0) return false;
   s.thing = thing;
   s.depth = double(tz) / kFracUnit;
   s.texture = &tex;
   s.flip = frame.flip[rotation];
-  s.x0 = std::max({x1, 0, x0_});
-  s.x1 = std::min({x2, view_->width - 1, x1_ - 1});
-  if (s.x0 > s.x1) return;
+  s.x0 = std::max(x1, 0);
+  s.x1 = std::min(x2, view.width - 1);
+  if (s.x0 > s.x1) return false;
   s.scale = xscale;
   s.gx = gx, s.gy = gy;
   s.gz = fixed_of(th.z);
   s.gzt = play::wrap_add(s.gz, Fixed(image.top) << kFracBits);
-  s.texture_mid = play::wrap_sub(s.gzt, view_->fz);
+  s.texture_mid = play::wrap_sub(s.gzt, view.fz);
   const Fixed iscale = fixed_div(kFracUnit, xscale);
   s.x_start = x1;
   s.start_frac = s.flip ? (Fixed(tex.width) << kFracBits) - 1 : 0;
   s.x_step = s.flip ? -iscale : iscale;
-  const int light = th.sector != kNone ? state_->sectors[size_t(th.sector)].light : 255;
-  s.light_map = fixed_or(frame.bright ? 0 : doom::wall_map(t, doom::start_map(light, 0, 0), xscale));
+  const int light = th.sector != kNone ? state.sectors[size_t(th.sector)].light : 255;
+  s.light_map = fixed_or(level, state, frame.bright ? 0 : doom::wall_map(t, doom::start_map(light, 0, 0), xscale));
   s.fuzz = (th.flags & level::kShownShadow) != 0;
-  sprites_.push_back(s);
+  return true;
 }
+
+void Canvas::project_doom_sprites(const level::Level& level, const level::State& state, const View& view,
+                                  std::vector<Sprite>& out) {
+  out.clear();
+  Sprite s;
+  for (uint32_t i = 0; i < state.things.size(); ++i)
+    if (project_doom_sprite(level, state, view, i, s)) out.push_back(s);
+}
+
+void Canvas::add_projected_sprites(std::span<const Sprite> sprites) {
+  for (Sprite s : sprites) {
+    s.x0 = std::max(s.x0, x0_), s.x1 = std::min(s.x1, x1_ - 1);
+    if (s.x0 <= s.x1) sprites_.push_back(s);
+  }
+}
+
 
 // R_DrawMaskedColumn over the opaque runs of texture column u.
 bool Canvas::doom_masked_column(int x, int top, int bottom, const level::Texture& tex, int u, Fixed top_screen,
