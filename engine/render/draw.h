@@ -155,6 +155,13 @@ class Canvas {
     doom::Fixed v1x = 0, v1y = 0, v2x = 0, v2y = 0;  // the seg's first vertex, the side's end (R_PointOnSegSide)
     doom::Fixed low_scale = 0, high_scale = 0;       // its scales at the ends of its columns (drawsegs)
     doom::WallPrecision precision;                   // its largest scale and edge bits (Crispy's wiggle fix)
+    // Its silhouettes as R_DrawSprite reads them, worked out once a frame, on a
+    // sprite's first look (doom_silhouette): a sprite whose foot lies below
+    // bottom_height meets its bottom clip, one whose top lies above top_height its top
+    // clip (INT64_MIN and INT64_MAX: none); closed, that clip shuts the whole column.
+    bool silhouette_ready = false;
+    bool bottom_closed = false, top_closed = false;
+    int64_t bottom_height = 0, top_height = 0;
   };
 
   bool draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom);
@@ -162,7 +169,7 @@ class Canvas {
   bool draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& bottom);
   // The side's seg at the wall's parameter t, set up on first use in a frame: the lookup
   // inline (a column asks for it at every wall, and a sprite's column again), the set-up not.
-  const DoomSide& doom_side(uint32_t wall, int side, double t) {
+  DoomSide& doom_side(uint32_t wall, int side, double t) {
     const level::Level& l = *level_;
     const size_t side_index = size_t(wall) * 2 + size_t(side);
     size_t index = l.doom_segs.size() + side_index;  // the side as one seg
@@ -201,6 +208,7 @@ class Canvas {
   static bool project_doom_sprite(const level::Level& level, const level::State& state, const View& view,
                                   uint32_t thing, Sprite& s);
   void doom_draw_layers();
+  const DoomSide& doom_silhouette(const Step& step);
   void doom_draw_masked(int x, const Step& step);
   // R_DrawMaskedColumn: rows of texture column u from its opaque runs, the picture's
   // top at screen position top_screen (16.16), clipped to [top, bottom).

@@ -60,6 +60,7 @@ inline size_t doom_row(uint32_t v, int height) {
 void Canvas::set_up_doom_side(DoomSide& d, uint32_t wall, int side, const level::Level::DoomSeg* seg) {
   const level::Level& l = *level_;
   d.stamp = doom_stamp_;
+  d.silhouette_ready = false;
   const level::Wall& w = l.walls[wall];
   const geom::IPoint p1 = side == 0 ? w.p1 : w.p2, p2 = side == 0 ? w.p2 : w.p1;
   d.v2x = fixed_of(p2.x), d.v2y = fixed_of(p2.y);
@@ -585,6 +586,25 @@ void Canvas::doom_draw_masked(int x, const Step& m) {
                      0xFFFFFFFFu / uint32_t(scale), mid, map, masked_pixels_, false);
 }
 
+// The step's side with its silhouettes (R_StoreWallRange's silhouette, bsilheight
+// and tsilheight), worked out on first use in a frame.
+const Canvas::DoomSide& Canvas::doom_silhouette(const Step& step) {
+  DoomSide& d = doom_side(step.hit.wall, step.hit.side, step.hit.t);
+  if (d.silhouette_ready) return d;
+  d.silhouette_ready = true;
+  d.bottom_closed = d.top_closed = false;
+  d.bottom_height = INT64_MAX, d.top_height = INT64_MIN;  // one-sided: both bind every sprite
+  if (step.far == kNone) return d;
+  const level::SectorState& f = state_->sectors[size_t(step.near)];
+  const level::SectorState& k = state_->sectors[size_t(step.far)];
+  const Fixed ff = fixed_of(f.floor), fc = fixed_of(f.ceiling), kf = fixed_of(k.floor), kc = fixed_of(k.ceiling);
+  d.bottom_height = ff > kf ? int64_t(ff) : kf > view_->fz ? INT64_MAX : INT64_MIN;
+  d.top_height = fc < kc ? int64_t(fc) : kc < view_->fz ? INT64_MIN : INT64_MAX;
+  if (kc <= ff) d.bottom_closed = true, d.bottom_height = INT64_MAX;  // a closed door
+  if (kf >= fc) d.top_closed = true, d.top_height = INT64_MIN;
+  return d;
+}
+
 // R_DrawMasked: sprites farthest first (by scale), each after the masked walls behind
 // it in its columns, clipped by the walls in front of it (R_DrawSprite); then the
 // masked walls left, farthest first.
@@ -620,7 +640,7 @@ void Canvas::doom_draw_layers() {
         // only masked walls nearer still may draw (those Doom counts behind the sprite).
         if (clip_top != -2 && clip_bottom != -2 && i < nearest_masked) break;
         const Step& step = steps[i];
-        const DoomSide& ds = doom_side(step.hit.wall, step.hit.side, step.hit.t);
+        const DoomSide& ds = doom_silhouette(step);
         const bool behind = ds.high_scale < s.scale ||
                             (ds.low_scale < s.scale &&
                              !doom::point_on_seg_side(s.gx, s.gy, ds.v1x, ds.v1y, ds.v2x, ds.v2y));
@@ -628,28 +648,15 @@ void Canvas::doom_draw_layers() {
           if (step.masked && !done[i]) doom_draw_masked(x, step), done[i] = 1;
           continue;
         }
-        // Its silhouettes: which of its clips bind this sprite (R_StoreWallRange, R_DrawSprite).
-        bool sil_bottom = true, sil_top = true;
-        int bottom_clip = step.bottom, top_clip = step.top - 1;
-        if (step.far != kNone) {
-          const level::SectorState& f = state_->sectors[size_t(step.near)];
-          const level::SectorState& k = state_->sectors[size_t(step.far)];
-          const Fixed ff = fixed_of(f.floor), fc = fixed_of(f.ceiling), kf = fixed_of(k.floor), kc = fixed_of(k.ceiling);
-          int64_t bsil = INT64_MIN, tsil = INT64_MAX;
-          sil_bottom = sil_top = false;
-          if (ff > kf) sil_bottom = true, bsil = ff;
-          else if (kf > view_->fz) sil_bottom = true, bsil = INT64_MAX;
-          if (fc < kc) sil_top = true, tsil = fc;
-          else if (kc < view_->fz) sil_top = true, tsil = INT64_MIN;
-          if (kc <= ff) bottom_clip = -1, bsil = INT64_MAX, sil_bottom = true;
-          if (kf >= fc) top_clip = view_->height, tsil = INT64_MIN, sil_top = true;
-          if (step.masked) {
-            if (!sil_top) sil_top = true, tsil = INT64_MIN;
-            if (!sil_bottom) sil_bottom = true, bsil = INT64_MAX;
-          }
-          if (s.gz >= bsil) sil_bottom = false;
-          if (s.gzt <= tsil) sil_top = false;
+        // A masked wall's drawseg keeps both silhouettes (R_StoreWallRange).
+        int64_t bottom_height = ds.bottom_height, top_height = ds.top_height;
+        if (step.masked) {
+          if (top_height == INT64_MAX) top_height = INT64_MIN;
+          if (bottom_height == INT64_MIN) bottom_height = INT64_MAX;
         }
+        const bool sil_bottom = s.gz < bottom_height, sil_top = s.gzt > top_height;
+        const int bottom_clip = ds.bottom_closed ? -1 : step.bottom;
+        const int top_clip = ds.top_closed ? view_->height : step.top - 1;
         if (sil_bottom && clip_bottom == -2) clip_bottom = bottom_clip;
         if (sil_top && clip_top == -2) clip_top = top_clip;
       }
