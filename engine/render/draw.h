@@ -162,6 +162,18 @@ class Canvas {
     bool silhouette_ready = false;
     bool bottom_closed = false, top_closed = false;
     int64_t bottom_height = 0, top_height = 0;
+    // Its wall as R_StoreWallRange sets it up, worked out on the first column a frame
+    // draws it (set_up_doom_wall), so the column loop keeps only R_RenderSegLoop's steps.
+    // Kept for the near sector it was made for: a segment's may vary by column.
+    bool wall_ready = false;
+    int near = 0, far = 0;  // far: kNone when one-sided
+    doom::Fixed worldtop = 0, worldbottom = 0, worldhigh = 0, worldlow = 0;
+    bool mark_ceiling = true, mark_floor = true, top_part = false, bottom_part = false;
+    bool ceiling_plane = false, floor_plane = false;  // a plane to draw, else the void
+    doom::Fixed x_offset = 0;                          // the side's, scrolled
+    int start_map = 0;                                 // its light before distance
+    int textures[3] = {};                              // per level::Part, as shown
+    doom::Fixed part_x[3] = {}, mid[3] = {};           // per part: column offset, texture mid
   };
 
   bool draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom);
@@ -186,6 +198,7 @@ class Canvas {
     return d;
   }
   void set_up_doom_side(DoomSide& d, uint32_t wall, int side, const level::Level::DoomSeg* seg);
+  void set_up_doom_wall(DoomSide& d, const WallHit& hit, int near);
   // Rows [y0, y1) of a wall column as R_DrawColumn draws them: texel row
   // ((mid + (y - centery) * iscale) >> 16) & 127, column `column` & Doom's width mask.
   void doom_wall_rows(int x, int y0, int y1, int texture, doom::Fixed mid, int32_t column, uint32_t iscale, int map);

@@ -60,7 +60,7 @@ inline size_t doom_row(uint32_t v, int height) {
 void Canvas::set_up_doom_side(DoomSide& d, uint32_t wall, int side, const level::Level::DoomSeg* seg) {
   const level::Level& l = *level_;
   d.stamp = doom_stamp_;
-  d.silhouette_ready = false;
+  d.silhouette_ready = d.wall_ready = false;
   const level::Wall& w = l.walls[wall];
   const geom::IPoint p1 = side == 0 ? w.p1 : w.p2, p2 = side == 0 ? w.p2 : w.p1;
   d.v2x = fixed_of(p2.x), d.v2y = fixed_of(p2.y);
@@ -104,48 +104,67 @@ void Canvas::set_up_doom_side(DoomSide& d, uint32_t wall, int side, const level:
   }
 }
 
-// R_StoreWallRange and one column of R_RenderSegLoop. [top, bottom) are the open rows:
-// Doom's ceilingclip + 1 and floorclip.
-bool Canvas::draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& bottom) {
+// R_StoreWallRange's set-up of a side's wall for this frame: its heights, which planes
+// it marks, its parts' textures, offsets and light, none of which varies by column.
+void Canvas::set_up_doom_wall(DoomSide& d, const WallHit& hit, int near) {
   const level::Wall& w = level_->walls[hit.wall];
   const level::Side& side = w.sides[hit.side];
-  const doom::Tables& t = *doom_;
-  const DoomSide& ds = doom_side(hit.wall, hit.side, hit.t);
-  const Fixed scale = doom::scale_at(t, ds.seg, view_->fangle, x, ds.precision.max_scale);
   const level::SectorState& s = state_->sectors[near];
-  const int far = w.two_sided() ? w.sides[1 - hit.side].sector : kNone;
-  const level::SectorState* b = far != kNone ? &state_->sectors[far] : nullptr;
+  d.wall_ready = true;
+  d.near = near;
+  d.far = w.two_sided() ? w.sides[1 - hit.side].sector : kNone;
+  const level::SectorState* b = d.far != kNone ? &state_->sectors[d.far] : nullptr;
   const Fixed viewz = view_->fz;
-  const Fixed front_ceiling = fixed_of(s.ceiling), front_floor = fixed_of(s.floor);
-  Fixed worldtop = front_ceiling - viewz;
-  const Fixed worldbottom = front_floor - viewz;
-  Fixed worldhigh = 0, worldlow = 0;
-  bool mark_ceiling = true, mark_floor = true, top_part = false, bottom_part = false;
+  const Fixed front_floor = fixed_of(s.floor);
+  d.worldtop = fixed_of(s.ceiling) - viewz;
+  d.worldbottom = front_floor - viewz;
+  d.worldhigh = d.worldlow = 0;
+  d.mark_ceiling = d.mark_floor = true;
+  d.top_part = d.bottom_part = false;
   if (b) {
-    worldhigh = fixed_of(b->ceiling) - viewz;
-    worldlow = fixed_of(b->floor) - viewz;
-    if (s.ceiling_texture == kSky && b->ceiling_texture == kSky) worldtop = worldhigh;  // the sky hack
-    mark_floor = worldlow != worldbottom || b->floor_texture != s.floor_texture || b->light != s.light;
-    mark_ceiling = worldhigh != worldtop || b->ceiling_texture != s.ceiling_texture || b->light != s.light;
-    if (b->ceiling <= s.floor || b->floor >= s.ceiling) mark_ceiling = mark_floor = true;  // a closed door
-    top_part = worldhigh < worldtop;
-    bottom_part = worldlow > worldbottom;
+    d.worldhigh = fixed_of(b->ceiling) - viewz;
+    d.worldlow = fixed_of(b->floor) - viewz;
+    if (s.ceiling_texture == kSky && b->ceiling_texture == kSky) d.worldtop = d.worldhigh;  // the sky hack
+    d.mark_floor = d.worldlow != d.worldbottom || b->floor_texture != s.floor_texture || b->light != s.light;
+    d.mark_ceiling = d.worldhigh != d.worldtop || b->ceiling_texture != s.ceiling_texture || b->light != s.light;
+    if (b->ceiling <= s.floor || b->floor >= s.ceiling) d.mark_ceiling = d.mark_floor = true;  // a closed door
+    d.top_part = d.worldhigh < d.worldtop;
+    d.bottom_part = d.worldlow > d.worldbottom;
   }
-  // The texture column and light, shared by the tiers.
-  const Fixed column = play::wrap_add(doom::texture_column(t, ds.seg, x),
-                                      fixed_of(side.x_offset + state_->scroll(hit.wall, hit.side)));
-  const uint32_t iscale = 0xFFFFFFFFu / uint32_t(scale);
-  const int light = side.light != kNone ? side.light : s.light;
-  const int map = fixed_or(doom::wall_map(t, doom::start_map(light, w.contrast, 0), scale));
-  const Fixed row_offset = fixed_of(side.y_offset);
-  auto column_of = [&](int part) {
-    return int32_t(play::wrap_add(column, fixed_of(level_->part_x(side, part))) >> kFracBits);
-  };
-  auto mid_of = [&](int part, Fixed mid) { return play::wrap_add(mid, row_offset + fixed_of(level_->part_y(side, part))); };
+  d.ceiling_plane = view_->eye < s.ceiling || s.ceiling_texture == kSky;
+  d.floor_plane = view_->eye > s.floor;
+  d.x_offset = fixed_of(side.x_offset + state_->scroll(hit.wall, hit.side));
+  d.start_map = doom::start_map(side.light != kNone ? side.light : s.light, w.contrast, 0);
   auto height_of = [&](int part) {
     const int texture = state_->texture(hit.wall, hit.side, part);
     return texture >= 0 ? Fixed(level_->textures[size_t(texture)].height) << kFracBits : 0;
   };
+  Fixed mid[3];  // each part's texture mid before the side's offsets: Doom's pegging
+  mid[level::kMiddlePart] =
+      (w.flags & level::kUnpegLower) ? front_floor + height_of(level::kMiddlePart) - viewz : d.worldtop;
+  mid[level::kUpperPart] = (w.flags & level::kUnpegUpper) || !b
+                               ? d.worldtop
+                               : fixed_of(b->ceiling) + height_of(level::kUpperPart) - viewz;
+  mid[level::kLowerPart] = (w.flags & level::kUnpegLower) ? d.worldtop : d.worldlow;
+  const Fixed row_offset = fixed_of(side.y_offset);
+  for (int part = 0; part < 3; ++part) {
+    d.textures[part] = state_->shown(state_->texture(hit.wall, hit.side, part));
+    d.part_x[part] = fixed_of(level_->part_x(side, part));
+    d.mid[part] = play::wrap_add(mid[part], row_offset + fixed_of(level_->part_y(side, part)));
+  }
+}
+
+// One column of R_RenderSegLoop, from the side's set-up. [top, bottom) are the open
+// rows: Doom's ceilingclip + 1 and floorclip.
+bool Canvas::draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& bottom) {
+  const doom::Tables& t = *doom_;
+  DoomSide& ds = doom_side(hit.wall, hit.side, hit.t);
+  if (!ds.wall_ready || ds.near != near) set_up_doom_wall(ds, hit, near);
+  const Fixed scale = doom::scale_at(t, ds.seg, view_->fangle, x, ds.precision.max_scale);
+  const uint32_t iscale = 0xFFFFFFFFu / uint32_t(scale);
+  const int map = fixed_or(doom::wall_map(t, ds.start_map, scale));
+  const Fixed column = play::wrap_add(doom::texture_column(t, ds.seg, x), ds.x_offset);
+  auto column_of = [&](int part) { return int32_t(play::wrap_add(column, ds.part_x[part]) >> kFracBits); };
   // A wall edge's row: centery - world * scale, in fixed point of `bits` fraction bits
   // (vanilla's 20.12 in 32 bits; Crispy's in 64, fewer bits for taller sectors).
   const int bits = ds.precision.height_bits, shift = kFracBits - bits;
@@ -158,71 +177,64 @@ bool Canvas::draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& b
   auto row_down = [&](Fixed world) { return int(std::clamp<int64_t>(edge(world) >> bits, INT_MIN / 2, INT_MAX / 2)); };
 
   const int ceiling_clip = top - 1, floor_clip = bottom;
-  int yl = row_up(worldtop);
+  int yl = row_up(ds.worldtop);
   if (yl < ceiling_clip + 1) yl = ceiling_clip + 1;
   int ceiling_end = ceiling_clip + 1;  // the rows the ceiling took
-  if (mark_ceiling) {
+  if (ds.mark_ceiling) {
     const int y1 = ceiling_end = std::min(yl, floor_clip);
-    if (view_->eye < s.ceiling || s.ceiling_texture == kSky)
+    if (ds.ceiling_plane)
       plane_span(x, ceiling_clip + 1, y1, near, true);
     else
       fill_span(x, ceiling_clip + 1, y1, Fill::kVoid);  // Doom marks nothing: we fill it
   }
-  int yh = row_down(worldbottom);
+  int yh = row_down(ds.worldbottom);
   if (yh >= floor_clip) yh = floor_clip - 1;
   // Where a wall's edges cross (its top row below its bottom one) both planes claim the
   // rows between: the ceiling keeps them, as Doom draws its ceilings after its floors.
-  const int floor_start = mark_floor ? std::max(yh + 1, ceiling_end) : floor_clip;
-  if (mark_floor) {
-    if (view_->eye > s.floor)
+  const int floor_start = ds.mark_floor ? std::max(yh + 1, ceiling_end) : floor_clip;
+  if (ds.mark_floor) {
+    if (ds.floor_plane)
       plane_span(x, floor_start, floor_clip, near, false);
     else
       fill_span(x, floor_start, floor_clip, Fill::kVoid);
   }
 
-  const int upper = state_->shown(state_->texture(hit.wall, hit.side, level::kUpperPart));
-  const int middle = state_->shown(state_->texture(hit.wall, hit.side, level::kMiddlePart));
-  const int lower = state_->shown(state_->texture(hit.wall, hit.side, level::kLowerPart));
-  if (!b) {
+  const int upper = ds.textures[level::kUpperPart], middle = ds.textures[level::kMiddlePart],
+            lower = ds.textures[level::kLowerPart];
+  if (ds.far == kNone) {
     if (middle == kNone) {
       planes_to_horizon(x, yl, yh + 1, near);
     } else {
-      const Fixed mid = (w.flags & level::kUnpegLower) ? front_floor + height_of(level::kMiddlePart) - viewz : worldtop;
-      doom_wall_rows(x, yl, yh + 1, middle, mid_of(level::kMiddlePart, mid), column_of(level::kMiddlePart), iscale,
-                     map);
+      doom_wall_rows(x, yl, yh + 1, middle, ds.mid[level::kMiddlePart], column_of(level::kMiddlePart), iscale, map);
     }
     top = bottom;
     return false;
   }
   int new_ceiling = ceiling_clip, new_floor = floor_clip;
-  if (top_part && upper != kNone) {
-    int mid = row_down(worldhigh);
+  if (ds.top_part && upper != kNone) {
+    int mid = row_down(ds.worldhigh);
     if (mid >= floor_clip) mid = floor_clip - 1;
     if (mid >= yl) {
-      const Fixed texture_mid =
-          (w.flags & level::kUnpegUpper) ? worldtop : fixed_of(b->ceiling) + height_of(level::kUpperPart) - viewz;
       // An upper part reaching below the floor's first row: Doom draws its planes last.
-      doom_wall_rows(x, yl, std::min(mid + 1, floor_start), upper, mid_of(level::kUpperPart, texture_mid),
+      doom_wall_rows(x, yl, std::min(mid + 1, floor_start), upper, ds.mid[level::kUpperPart],
                      column_of(level::kUpperPart), iscale, map);
       new_ceiling = mid;
     } else {
       new_ceiling = yl - 1;
     }
-  } else if (mark_ceiling) {
+  } else if (ds.mark_ceiling) {
     new_ceiling = yl - 1;
   }
-  if (bottom_part && lower != kNone) {
-    int mid = row_up(worldlow);
+  if (ds.bottom_part && lower != kNone) {
+    int mid = row_up(ds.worldlow);
     if (mid <= new_ceiling) mid = new_ceiling + 1;
     if (mid <= yh) {
-      const Fixed texture_mid = (w.flags & level::kUnpegLower) ? worldtop : worldlow;
-      doom_wall_rows(x, mid, yh + 1, lower, mid_of(level::kLowerPart, texture_mid), column_of(level::kLowerPart),
-                     iscale, map);
+      doom_wall_rows(x, mid, yh + 1, lower, ds.mid[level::kLowerPart], column_of(level::kLowerPart), iscale, map);
       new_floor = mid;
     } else {
       new_floor = yh + 1;
     }
-  } else if (mark_floor) {
+  } else if (ds.mark_floor) {
     new_floor = yh + 1;
   }
   top = new_ceiling + 1;
