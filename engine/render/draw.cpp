@@ -158,12 +158,13 @@ bool Canvas::draw_wall(int x, const WallHit& hit) {
   const level::Wall& w = level_->walls[hit.wall];
   const int near = near_sector(w, hit, x);
   int top = c.top, bottom = c.bottom;
+  drawn_doom_side_ = kNoDoomSide;
   const bool masked = draw_hit(x, hit, near, top, bottom);
   const int far = w.two_sided() ? w.sides[1 - hit.side].sector : kNone;
   if (far != kNone) c.sector = far;
   c.top = top;
   c.bottom = bottom;
-  steps_[x].push_back({hit, near, far, top, bottom, masked});
+  steps_[x].push_back({hit, near, far, top, bottom, masked, drawn_doom_side_});
   if (top < bottom) return false;
   close(x, hit);
   return true;

@@ -134,11 +134,13 @@ class Canvas {
     int sector;
   };
   // One wall met by one column, front to back: what stays open behind it.
+  static constexpr uint32_t kNoDoomSide = UINT32_MAX;
   struct Step {
     WallHit hit;
     int near, far;    // the sectors on the facing and the far side (far: kNone when one-sided)
     int top, bottom;  // rows open behind the wall
     bool masked;      // it shows a masked middle texture in that opening
+    uint32_t doom_side = kNoDoomSide;  // its DoomSide's index, as draw_hit_doom found it
   };
   // A wall part to draw: texture, which part (for its offsets), where its top texel row lies, light.
   struct Part {
@@ -179,6 +181,12 @@ class Canvas {
   bool draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom);
   // Doom's rules (draw_doom.cpp): R_StoreWallRange and R_RenderSegLoop for one column.
   bool draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& bottom);
+  // A step's DoomSide: the one its column drew, so the sprites' scan of every
+  // column's walls skips the search for the seg.
+  DoomSide& doom_side(const Step& step) {
+    if (step.doom_side != kNoDoomSide) return doom_sides_[step.doom_side];
+    return doom_side(step.hit.wall, step.hit.side, step.hit.t);
+  }
   // The side's seg at the wall's parameter t, set up on first use in a frame: the lookup
   // inline (a column asks for it at every wall, and a sprite's column again), the set-up not.
   DoomSide& doom_side(uint32_t wall, int side, double t) {
@@ -328,6 +336,7 @@ class Canvas {
   const doom::Tables* doom_ = nullptr;
   doom::Fixed base_x_scale_ = 0, base_y_scale_ = 0;
   uint32_t doom_stamp_ = 0;
+  uint32_t drawn_doom_side_ = kNoDoomSide;  // the DoomSide draw_hit_doom last drew, for its Step
   std::vector<DoomSide> doom_sides_;
   std::vector<int> doom_sky_rows_;
   static constexpr uint32_t kNoPlane = UINT32_MAX;

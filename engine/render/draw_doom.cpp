@@ -159,6 +159,7 @@ void Canvas::set_up_doom_wall(DoomSide& d, const WallHit& hit, int near) {
 bool Canvas::draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& bottom) {
   const doom::Tables& t = *doom_;
   DoomSide& ds = doom_side(hit.wall, hit.side, hit.t);
+  drawn_doom_side_ = uint32_t(&ds - doom_sides_.data());
   if (!ds.wall_ready || ds.near != near) set_up_doom_wall(ds, hit, near);
   const Fixed scale = doom::scale_at(t, ds.seg, view_->fangle, x, ds.precision.max_scale);
   const uint32_t iscale = 0xFFFFFFFFu / uint32_t(scale);
@@ -581,7 +582,7 @@ void Canvas::doom_draw_masked(int x, const Step& m) {
   const int texture = state_->shown(state_->texture(m.hit.wall, m.hit.side, level::kMiddlePart));
   const level::Texture& tex = level_->textures[size_t(texture)];
   const doom::Tables& t = *doom_;
-  const DoomSide& ds = doom_side(m.hit.wall, m.hit.side, m.hit.t);
+  const DoomSide& ds = doom_side(m);
   const Fixed scale = doom::scale_at(t, ds.seg, view_->fangle, x, ds.precision.max_scale);
   Fixed mid = (w.flags & level::kUnpegLower)
                   ? fixed_of(std::max(s.floor, b.floor)) + (Fixed(tex.height) << kFracBits) - view_->fz
@@ -601,7 +602,7 @@ void Canvas::doom_draw_masked(int x, const Step& m) {
 // The step's side with its silhouettes (R_StoreWallRange's silhouette, bsilheight
 // and tsilheight), worked out on first use in a frame.
 const Canvas::DoomSide& Canvas::doom_silhouette(const Step& step) {
-  DoomSide& d = doom_side(step.hit.wall, step.hit.side, step.hit.t);
+  DoomSide& d = doom_side(step);
   if (d.silhouette_ready) return d;
   d.silhouette_ready = true;
   d.bottom_closed = d.top_closed = false;
