@@ -552,6 +552,12 @@ bool Canvas::doom_masked_column(int x, int top, int bottom, const level::Texture
     if (fuzz) return draw_fuzz(x, y0, y1);
     uint32_t v = uint32_t(play::wrap_sub(mid, Fixed(first) << kFracBits)) + uint32_t(y0 - doom_->centery) * iscale;
     const int length = end - first;
+    // Most posts' rows stay within the post: no row to clamp, the plain column loop.
+    const uint64_t last = uint64_t(v & ((128u << kFracBits) - 1)) + uint64_t(iscale) * uint64_t(y1 - 1 - y0);
+    if (indexed_ && (last >> kFracBits) < uint64_t(length))
+      return wrapped_column(index_pixel(x, y0), index_pitch_, y1 - y0, int64_t(v), int64_t(iscale),
+                            int64_t(128) << kFracBits,
+                            IndexedColumn{tex.indices.data() + column + size_t(first), level_->light_indices.data() + map});
     auto row = [&](uint32_t vv) {  // within the post; past its end, its last row (Doom reads the pad byte)
       const int r = int((vv >> kFracBits) & 127);
       return column + size_t(first + std::min(r, length - 1));
