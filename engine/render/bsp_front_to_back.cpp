@@ -15,6 +15,8 @@
 // culling boxes grow to cover the discs of their subtree: a subtree (or leaf) is
 // skipped only when every column it could touch was closed by walls visited earlier,
 // which lie in front of every point of its cell. So culling never hides a sprite pixel.
+// Under Doom's rules sprites are clipped by the walls' silhouettes, not by the walk:
+// every thing goes to the canvas, and the tree culls by its walls' boxes alone.
 //
 // The screen is split into column strips, each walked alone with its own W-bit array
 // (the columns outside it closed from the start), canvas and sprites, so strips draw
@@ -65,8 +67,12 @@ class BspFrontToBack final : public Renderer {
     if (strips_.size() < size_t(strips)) strips_.resize(size_t(strips));
     Canvas::prepare_probe(view, probe);
     Canvas::prepare_frame(level, frame);
-    attach_things(level, state);
-    if (view.doom) Canvas::project_doom_sprites(level, state, view, projected_);
+    // Under Doom's rules every thing goes to the canvas (walk), so the tree culls by
+    // its walls alone; else the things ride on the tree.
+    if (view.doom)
+      Canvas::project_doom_sprites(level, state, view, projected_);
+    else
+      attach_things(level, state);
     pool_.run(strips, [&](int i) {
       Strip& s = strips_[size_t(i)];
       s.x0 = i * strip_width;
@@ -149,7 +155,7 @@ class BspFrontToBack final : public Renderer {
       // The culling box covers the fragments and the sprites of the things of the
       // subtree or leaf (attach_things): nothing visible is skipped.
       const bool leaf = level::is_leaf(item.child);
-      const geom::BBox& box = leaf ? leaf_cull_boxes_[size_t(level::leaf_index(item.child))] : cull_boxes_[size_t(item.child)];
+      const geom::BBox& box = cull_box(level, item.child, every_thing);
       if (box.empty()) continue;  // a leaf holding nothing
       const ColumnRange range = columns_of_box(view, box);
       if (range.empty() || s.mask.all_closed(range.x0, range.x1)) {
@@ -231,6 +237,13 @@ class BspFrontToBack final : public Renderer {
       for (int32_t c : n.child)
         box.add(level::is_leaf(c) ? leaf_cull_boxes_[size_t(level::leaf_index(c))] : cull_boxes_[size_t(c)]);
     }
+  }
+  const geom::BBox& cull_box(const level::Level& level, int32_t child, bool walls_only) const {
+    if (level::is_leaf(child)) {
+      const size_t i = size_t(level::leaf_index(child));
+      return walls_only ? level.leaves[i].bbox : leaf_cull_boxes_[i];
+    }
+    return walls_only ? level.nodes[size_t(child)].bbox : cull_boxes_[size_t(child)];
   }
   ThingRange& range_of(int32_t child) {
     return level::is_leaf(child) ? leaf_things_[size_t(level::leaf_index(child))] : node_things_[size_t(child)];
