@@ -221,17 +221,4 @@ int point_on_seg_side(Fixed x, Fixed y, Fixed v1x, Fixed v1y, Fixed v2x, Fixed v
   return right < left ? 0 : 1;
 }
 
-Fixed scale_at(const Tables& t, const Seg& seg, Angle view_angle, int x, Fixed max_scale) {
-  const Angle visangle = view_angle + t.xtoviewangle[size_t(x)];
-  const Angle anglea = kAngle90 + (visangle - view_angle), angleb = kAngle90 + (visangle - seg.normal);
-  const Fixed sinea = kFineSine[anglea >> kAngleToFineShift], sineb = kFineSine[angleb >> kAngleToFineShift];
-  const Fixed num = fixed_mul(t.projection, sineb);
-  const Fixed den = fixed_mul(seg.distance, sinea);
-  if (den > (num >> kFracBits)) {
-    const Fixed scale = fixed_div(num, den);
-    return scale > max_scale ? max_scale : scale < 256 ? 256 : scale;
-  }
-  return max_scale;
-}
-
 }  // namespace p3d::render::doom

@@ -126,8 +126,20 @@ void seg_columns(const Tables& t, Fixed vx, Fixed vy, Angle view_angle, Fixed v1
 // R_PointOnSegSide: 0 on the seg's front (right of v1 -> v2), 1 behind.
 int point_on_seg_side(Fixed x, Fixed y, Fixed v1x, Fixed v1y, Fixed v2x, Fixed v2y);
 
-// R_ScaleFromGlobalAngle at column x, at most max_scale.
-Fixed scale_at(const Tables& t, const Seg& seg, Angle view_angle, int x, Fixed max_scale = 64 * kFracUnit);
+// R_ScaleFromGlobalAngle at column x, at most max_scale (inline: every wall column takes one).
+inline Fixed scale_at(const Tables& t, const Seg& seg, Angle view_angle, int x, Fixed max_scale = 64 * kFracUnit) {
+  const Angle visangle = view_angle + t.xtoviewangle[size_t(x)];
+  const Angle anglea = play::kAngle90 + (visangle - view_angle), angleb = play::kAngle90 + (visangle - seg.normal);
+  const Fixed sinea = play::kFineSine[anglea >> play::kAngleToFineShift];
+  const Fixed sineb = play::kFineSine[angleb >> play::kAngleToFineShift];
+  const Fixed num = play::fixed_mul(t.projection, sineb);
+  const Fixed den = play::fixed_mul(seg.distance, sinea);
+  if (den > (num >> kFracBits)) {
+    const Fixed scale = play::fixed_div(num, den);
+    return scale > max_scale ? max_scale : scale < 256 ? 256 : scale;
+  }
+  return max_scale;
+}
 // The texture column (R_RenderSegLoop's texturecolumn before >> 16) at column x.
 inline Fixed texture_column(const Tables& t, const Seg& seg, int x) {
   const Angle a = (seg.center + t.xtoviewangle[size_t(x)]) >> play::kAngleToFineShift;

@@ -305,10 +305,8 @@ bool Canvas::draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom
   return middle != kNone && upper_end < lower_start;
 }
 
-void Canvas::count(int x, int y0, int y1) {
-  pixels_ += static_cast<uint64_t>(y1 - y0);
-  if (writes_)
-    for (int y = y0; y < y1; ++y) ++(*writes_)[size_t(y) * view_->width + x];
+void Canvas::count_writes(int x, int y0, int y1) {
+  for (int y = y0; y < y1; ++y) ++(*writes_)[size_t(y) * view_->width + x];
 }
 
 void Canvas::choose_fill_colors() {

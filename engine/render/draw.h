@@ -272,11 +272,15 @@ class Canvas {
   int near_sector(const level::Wall& w, const WallHit& hit, int x) const;
   double texture_u(const WallHit& hit, int part) const;
   uint32_t lit(const level::Texture& tex, size_t texel, int light_map) const;
-  int fixed_or(int map) const { return fixed_or(*level_, *state_, map); }
+  int fixed_or(int map) const { return state_->fixed_light_map < 0 ? map : fixed_or(*level_, *state_, map); }
   static int fixed_or(const level::Level& level, const level::State& state, int map);
   uint32_t* pixel(int x, int y) { return frame_->pixels.data() + size_t(y) * view_->width + x; }
   uint8_t* index_pixel(int x, int y) { return indices_.data() + size_t(y) * index_pitch_ + size_t(x - x0_); }
-  void count(int x, int y0, int y1);
+  void count(int x, int y0, int y1) {
+    pixels_ += static_cast<uint64_t>(y1 - y0);
+    if (writes_) count_writes(x, y0, y1);
+  }
+  void count_writes(int x, int y0, int y1);
 
   const level::Level* level_ = nullptr;
   const level::State* state_ = nullptr;

@@ -243,6 +243,25 @@ bool Canvas::draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& b
   return middle != kNone && top < bottom;
 }
 
+// Crispy Doom's R_DrawColumn: texel rows wrap at the texture's own height (its
+// tutti-frutti fix), the column as composed.
+inline void Canvas::crispy_wall_rows(int x, int y0, int y1, const level::Texture& tex, int u, Fixed v0, uint32_t iscale,
+                                     int map) {
+  const uint8_t* source = tex.indices.data() + size_t(u) * size_t(tex.height);
+  const int64_t period = int64_t(tex.height) << kFracBits;
+  // A power of two divides 2^32: the 32-bit v wraps alike. Else v and the step are
+  // reduced modulo the height first, so that one subtraction keeps v in range.
+  const bool pow2 = (tex.height & (tex.height - 1)) == 0;
+  const int64_t v = pow2 ? int64_t(uint32_t(v0)) : level::floor_mod(int64_t(v0), period);
+  const int64_t step = pow2 ? int64_t(iscale) : int64_t(iscale) % period;
+  const size_t light = size_t(map) * limits::kPaletteSize;
+  if (indexed_)
+    return wrapped_column(index_pixel(x, y0), index_pitch_, y1 - y0, v, step, period,
+                          IndexedColumn{source, level_->light_indices.data() + light});
+  wrapped_column(pixel(x, y0), size_t(view_->width), y1 - y0, v, step, period,
+                 PalettedColumn{source, level_->light_maps.data() + light});
+}
+
 void Canvas::doom_wall_rows(int x, int y0, int y1, int texture, Fixed mid, int32_t column, uint32_t iscale, int map) {
   if (y0 >= y1 || dry_) return;
   if (texture == kNone) return fill_span(x, y0, y1, Fill::kMissingTexture);
@@ -271,25 +290,6 @@ void Canvas::doom_wall_rows(int x, int y0, int y1, int texture, Fixed mid, int32
   };
   if (indexed_) return draw(index_pixel(x, y0), index_pitch_, level_->light_indices.data() + light);
   draw(pixel(x, y0), size_t(view_->width), level_->light_maps.data() + light);
-}
-
-// Crispy Doom's R_DrawColumn: texel rows wrap at the texture's own height (its
-// tutti-frutti fix), the column as composed.
-void Canvas::crispy_wall_rows(int x, int y0, int y1, const level::Texture& tex, int u, Fixed v0, uint32_t iscale,
-                              int map) {
-  const uint8_t* source = tex.indices.data() + size_t(u) * size_t(tex.height);
-  const int64_t period = int64_t(tex.height) << kFracBits;
-  // A power of two divides 2^32: the 32-bit v wraps alike. Else v and the step are
-  // reduced modulo the height first, so that one subtraction keeps v in range.
-  const bool pow2 = (tex.height & (tex.height - 1)) == 0;
-  const int64_t v = pow2 ? int64_t(uint32_t(v0)) : level::floor_mod(int64_t(v0), period);
-  const int64_t step = pow2 ? int64_t(iscale) : int64_t(iscale) % period;
-  const size_t light = size_t(map) * limits::kPaletteSize;
-  if (indexed_)
-    return wrapped_column(index_pixel(x, y0), index_pitch_, y1 - y0, v, step, period,
-                          IndexedColumn{source, level_->light_indices.data() + light});
-  wrapped_column(pixel(x, y0), size_t(view_->width), y1 - y0, v, step, period,
-                 PalettedColumn{source, level_->light_maps.data() + light});
 }
 
 // Crispy Doom's R_MapPlane: each pixel's texel from its column's distance from the
