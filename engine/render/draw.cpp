@@ -745,6 +745,9 @@ void Canvas::tabulate_sky_rows() {
   const level::Texture& tex = level_->textures[level_->sky_texture];
   if (view_->doom) {  // Doom's: texel row (skytexturemid + (y - centery) * iscale) >> 16, & 127
     const doom::Tables& t = *view_->doom;
+    const DoomSkyKey key{&t, level_->generation, level_->sky_texture};
+    if (key.generation != 0 && key == doom_sky_key_) return;  // generation 0: a level never finalized
+    doom_sky_key_ = key;
     doom_sky_rows_.resize(size_t(view_->height));
     for (int y = 0; y < view_->height; ++y) {
       const uint32_t v = uint32_t(kSkyMidRow * doom::kFracUnit) + uint32_t(y - t.centery) * uint32_t(t.sky_iscale);

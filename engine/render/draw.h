@@ -342,6 +342,13 @@ class Canvas {
   uint32_t doom_stamp_ = 0;
   uint32_t drawn_doom_side_ = kNoDoomSide;  // the DoomSide draw_hit_doom last drew, for its Step
   std::vector<DoomSide> doom_sides_;
+  struct DoomSkyKey {  // what doom_sky_rows_ were tabulated for
+    const doom::Tables* tables = nullptr;
+    uint64_t generation = 0;
+    int texture = -1;
+    bool operator==(const DoomSkyKey&) const = default;
+  };
+  DoomSkyKey doom_sky_key_;
   std::vector<int> doom_sky_rows_;
   static constexpr uint32_t kNoPlane = UINT32_MAX;
   struct DoomSpan {
