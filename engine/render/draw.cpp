@@ -249,6 +249,7 @@ void Canvas::resolve(int y0, int y1) {
 // for a one-sided wall its own sector's planes), as Doom ports show a missing texture.
 // Returns whether a masked middle texture shows in the opening left.
 bool Canvas::draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom) {
+  if (doom_ && near != kNone) return draw_hit_doom(x, hit, near, top, bottom);
   const level::Wall& w = level_->walls[hit.wall];
   const level::Side& side = w.sides[hit.side];
   const int upper = state_->shown(state_->texture(hit.wall, hit.side, level::kUpperPart));
@@ -259,7 +260,6 @@ bool Canvas::draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom
     top = bottom;
     return false;
   }
-  if (doom_) return draw_hit_doom(x, hit, near, top, bottom);
   const level::SectorState& s = state_->sectors[near];
   const double scale = view_->d / hit.depth;
   auto row = [&](double z) { return view_->row_at(view_->half_h - (z - view_->eye) * scale); };
