@@ -164,6 +164,7 @@ bool Canvas::draw_wall(int x, const WallHit& hit) {
   if (far != kNone) c.sector = far;
   c.top = top;
   c.bottom = bottom;
+  if (masked && c.nearest_masked == UINT32_MAX) c.nearest_masked = uint32_t(steps_[x].size());
   steps_[x].push_back({hit, near, far, top, bottom, masked, drawn_doom_side_});
   if (top < bottom) return false;
   close(x, hit);

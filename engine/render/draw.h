@@ -132,6 +132,7 @@ class Canvas {
   struct Column {
     int top, bottom;  // open rows [top, bottom)
     int sector;
+    uint32_t nearest_masked = UINT32_MAX;  // its first step with a masked middle texture (none: UINT32_MAX)
   };
   // One wall met by one column, front to back: what stays open behind it.
   static constexpr uint32_t kNoDoomSide = UINT32_MAX;
@@ -141,6 +142,7 @@ class Canvas {
     int top, bottom;  // rows open behind the wall
     bool masked;      // it shows a masked middle texture in that opening
     uint32_t doom_side = kNoDoomSide;  // its DoomSide's index, as draw_hit_doom found it
+    bool masked_drawn = false;         // doom_draw_layers drew its masked texture
   };
   // A wall part to draw: texture, which part (for its offsets), where its top texel row lies, light.
   struct Part {
@@ -359,14 +361,12 @@ class Canvas {
   std::vector<uint32_t> doom_row_first_;     // per row, and one more: its first span in doom_spans_
   std::vector<int> doom_span_y_;             // doom_gather_spans' scratch: each span's row
   std::vector<DoomSpan> doom_span_scratch_;
+  std::vector<uint32_t> doom_span_next_;     // doom_gather_spans' scratch: where each row's next span goes
   const Canvas* left_ = nullptr;             // the strip to the left (begin)
   bool doom_waiting_ = false;                // finish() left the flats and layers to finish_strip()
   std::vector<uint32_t> painted_plane_;      // the painter's: per pixel, its plane in painted_keys_, or kNoPlane
   std::vector<PlaneKey> painted_keys_;
   bool painting_planes_ = false;
-  std::vector<uint8_t> masked_done_;  // doom_draw_layers: per step of every column, drawn
-  std::vector<uint32_t> masked_first_;  // the first step of each column in masked_done_
-  std::vector<uint32_t> nearest_masked_;  // doom_draw_layers: per column, its nearest masked step (none: the count)
   bool dry_ = false;       // clip_wall: compute rows, write nothing
   bool painting_ = false;  // paint_wall, paint_background: draw planes at once
 };

@@ -376,7 +376,7 @@ void Canvas::doom_gather_spans() {
   for (int y : doom_span_y_) ++doom_row_first_[size_t(y) + 1];
   for (int y = 0; y < h; ++y) doom_row_first_[size_t(y) + 1] += doom_row_first_[size_t(y)];
   doom_spans_.resize(doom_span_scratch_.size());
-  std::vector<uint32_t>& next = masked_first_;  // scratch: where each row's next span goes
+  std::vector<uint32_t>& next = doom_span_next_;
   next.assign(doom_row_first_.begin(), doom_row_first_.end());
   for (size_t i = 0; i < doom_span_scratch_.size(); ++i) doom_spans_[next[size_t(doom_span_y_[i])]++] = doom_span_scratch_[i];
   // Each row's spans left to right, touching ones of one key joined.
@@ -631,40 +631,24 @@ void Canvas::doom_draw_layers() {
   std::sort(sprites_.begin(), sprites_.end(), [](const Sprite& a, const Sprite& b) {
     return a.scale != b.scale ? a.scale < b.scale : a.thing < b.thing;
   });
-  masked_first_.resize(size_t(view_->width) + 1);
-  size_t total = 0;
-  nearest_masked_.resize(size_t(view_->width));
-  for (int x = x0_; x < x1_; ++x) {
-    const std::vector<Step>& steps = steps_[x];
-    masked_first_[size_t(x)] = uint32_t(total), total += steps.size();
-    size_t nearest = steps.size();
-    for (size_t i = 0; i < steps.size(); ++i)
-      if (steps[i].masked) {
-        nearest = i;
-        break;
-      }
-    nearest_masked_[size_t(x)] = uint32_t(nearest);
-  }
-  masked_done_.assign(total, 0);
   const doom::Tables& t = *doom_;
   for (const Sprite& s : sprites_) {
     bool drew = false;
     for (int x = s.x0; x <= s.x1; ++x) {
-      const std::vector<Step>& steps = steps_[x];
-      uint8_t* done = masked_done_.data() + masked_first_[size_t(x)];
+      std::vector<Step>& steps = steps_[x];
       int clip_top = -2, clip_bottom = -2;  // Doom's cliptop and clipbot, -2 unset
-      const size_t nearest_masked = nearest_masked_[size_t(x)];
+      const size_t nearest_masked = std::min<size_t>(columns_[x].nearest_masked, steps.size());
       for (size_t i = steps.size(); i-- > 0;) {  // farthest first, as Doom scans its drawsegs
         // The farthest wall in front that binds decides each clip: once both are set,
         // only masked walls nearer still may draw (those Doom counts behind the sprite).
         if (clip_top != -2 && clip_bottom != -2 && i < nearest_masked) break;
-        const Step& step = steps[i];
+        Step& step = steps[i];
         const DoomSide& ds = doom_silhouette(step);
         const bool behind = ds.high_scale < s.scale ||
                             (ds.low_scale < s.scale &&
                              !doom::point_on_seg_side(s.gx, s.gy, ds.v1x, ds.v1y, ds.v2x, ds.v2y));
         if (behind) {
-          if (step.masked && !done[i]) doom_draw_masked(x, step), done[i] = 1;
+          if (step.masked && !step.masked_drawn) doom_draw_masked(x, step), step.masked_drawn = true;
           continue;
         }
         // A masked wall's drawseg keeps both silhouettes (R_StoreWallRange).
@@ -697,9 +681,9 @@ void Canvas::doom_draw_layers() {
   }
   for (int x = x0_; x < x1_; ++x) {
     const std::vector<Step>& steps = steps_[x];
-    const uint8_t* done = masked_done_.data() + masked_first_[size_t(x)];
-    for (size_t i = steps.size(); i-- > 0;)
-      if (steps[i].masked && !done[i]) doom_draw_masked(x, steps[i]);
+    const size_t nearest_masked = columns_[x].nearest_masked;
+    for (size_t i = steps.size(); i-- > 0 && i >= nearest_masked;)
+      if (steps[i].masked && !steps[i].masked_drawn) doom_draw_masked(x, steps[i]);
   }
 }
 
