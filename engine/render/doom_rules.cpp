@@ -158,6 +158,11 @@ Seg make_crispy_seg(Fixed vx, Fixed vy, Angle view_angle, Fixed v1x, Fixed v1y, 
   return s;
 }
 
+Fixed crispy_seg_offset(Fixed v1x, Fixed v1y, Fixed ax, Fixed ay) {
+  const double dx = double(play::wrap_sub(v1x, ax) >> kFracBits), dy = double(play::wrap_sub(v1y, ay) >> kFracBits);
+  return Fixed(uint32_t(int32_t(std::sqrt(dx * dx + dy * dy))) << kFracBits);
+}
+
 void crispy_onto_line(Fixed& x, Fixed& y, Fixed ax, Fixed ay, Fixed dx, Fixed dy) {
   if (!dx || !dy) return;  // only diagonal lines
   const int64_t dx2 = int64_t(dx >> kFracBits) * (dx >> kFracBits), dy2 = int64_t(dy >> kFracBits) * (dy >> kFracBits);

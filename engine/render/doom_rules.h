@@ -109,6 +109,9 @@ Seg make_crispy_seg(Fixed vx, Fixed vy, Angle view_angle, Fixed v1x, Fixed v1y, 
 // Crispy Doom's moved vertex: a split point (x, y) of a diagonal line through (ax, ay)
 // along (dx, dy) put back onto the line, unless that moves it more than 8 units.
 void crispy_onto_line(Fixed& x, Fixed& y, Fixed ax, Fixed ay, Fixed dx, Fixed dy);
+// Crispy Doom's seg offset (its GetOffset, from PrBoom+): the whole map units from the
+// side's start (ax, ay) to the seg's first vertex, truncated, not the SEGS lump's.
+Fixed crispy_seg_offset(Fixed v1x, Fixed v1y, Fixed ax, Fixed ay);
 // Crispy Doom's wiggle fix (R_FixWiggle): for a sector `height` units tall, the largest
 // wall scale and the fraction bits of the wall edges. Vanilla's: 64 and 12.
 struct WallPrecision {

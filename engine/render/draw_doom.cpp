@@ -67,7 +67,8 @@ void Canvas::set_up_doom_side(DoomSide& d, uint32_t wall, int side, const level:
   Angle angle;
   Fixed offset = 0, end_x = d.v2x, end_y = d.v2y;  // the seg's own end
   if (seg) {
-    d.v1x = seg->v1x, d.v1y = seg->v1y, angle = seg->angle, offset = seg->offset;
+    d.v1x = seg->v1x, d.v1y = seg->v1y, angle = seg->angle;
+    offset = doom_->crispy ? doom::crispy_seg_offset(d.v1x, d.v1y, fixed_of(p1.x), fixed_of(p1.y)) : seg->offset;
     end_x = seg->v2x, end_y = seg->v2y;
   } else {
     d.v1x = fixed_of(p1.x), d.v1y = fixed_of(p1.y);
