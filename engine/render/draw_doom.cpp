@@ -487,16 +487,19 @@ bool Canvas::project_doom_sprite(const level::Level& level, const level::State& 
   const int rotation = int((seen - doom::to_angle(th.angle) + (play::kAngle45 / 2) * 9) >> 29);
   const level::SpriteImage& image = level.sprite_images[size_t(frame.image[rotation])];
   const level::Texture& tex = level.textures[size_t(image.texture)];
-  tx = play::wrap_sub(tx, Fixed(image.left) << kFracBits);
+  s.flip = frame.flip[rotation];
+  // Crispy measures a mirrored picture's offset from its other edge.
+  const int left = t.crispy && s.flip ? tex.width - image.left : image.left;
+  tx = play::wrap_sub(tx, Fixed(left) << kFracBits);
   const int x1 = play::wrap_add(t.centerxfrac, fixed_mul(tx, xscale)) >> kFracBits;
   if (x1 > view.width) return false;
   tx = play::wrap_add(tx, Fixed(tex.width) << kFracBits);
   const int x2 = (play::wrap_add(t.centerxfrac, fixed_mul(tx, xscale)) >> kFracBits) - 1;
   if (x2 < 0) return false;
+  if (t.crispy && x1 >= x2) return false;  // Crispy drops a sprite one column wide
   s.thing = thing;
   s.depth = double(tz) / kFracUnit;
   s.texture = &tex;
-  s.flip = frame.flip[rotation];
   s.x0 = std::max(x1, 0);
   s.x1 = std::min(x2, view.width - 1);
   if (s.x0 > s.x1) return false;
