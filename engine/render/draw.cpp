@@ -13,14 +13,13 @@
 // plane_span, sky_span.
 #include "engine/render/draw.h"
 
-#include "engine/render/texel_loops.h"
-
 #include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
 
+#include "engine/render/texel_loops.h"
 
 namespace p3d::render {
 

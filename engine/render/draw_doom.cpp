@@ -18,8 +18,8 @@
 #include <bit>
 #include <climits>
 
-#include "engine/render/texel_loops.h"
 #include "engine/render/draw.h"
+#include "engine/render/texel_loops.h"
 
 namespace p3d::render {
 
