@@ -56,7 +56,7 @@ class BspFrontToBack final : public Renderer {
 
   RenderStats render(const level::Level& level, const level::State& state, const Camera& camera, Frame& frame,
                      Probe* probe) override {
-    const View view(camera, frame.width, frame.height, level);
+    const View view(camera, frame.width, frame.height, level, frame.doom_screen_width);
     const int camera_sector = level.sector_at(camera.pos);
     // The order fragments drew in is one walk's: a probe asking for it gets one strip.
     const bool one_walk = probe && probe->want_order;

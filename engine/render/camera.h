@@ -21,6 +21,9 @@ using geom::Vec2;
 struct Frame : image::Image {
   using image::Image::Image;
   bool keep_indices = false;
+  // The width of Doom's screen this frame is a view window of (320: a smaller view of
+  // Doom's 320x200 screen, drawn by vanilla's rules at its own width); 0: itself.
+  int doom_screen_width = 0;
   std::vector<uint8_t> indices;  // empty unless the last render kept them
   std::vector<uint32_t> palette;
   bool indexed() const { return !indices.empty(); }

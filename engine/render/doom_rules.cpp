@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <tuple>
 
 namespace p3d::render::doom {
 
@@ -29,11 +30,12 @@ constexpr double kRayNudge = 1.0 / (1 << 24);
 
 Fixed fine_cos(Angle a) { return kFineSine[(a >> kAngleToFineShift) + kFineAngles / 4]; }
 
-Tables make_tables(int width, int height) {
+Tables make_tables(int width, int height, int screen_width) {
   Tables t;
   t.width = width;
   t.height = height;
-  t.crispy = width != kDoomWidth;
+  t.crispy = (screen_width ? screen_width : width) != kDoomWidth;
+  t.light_at_view = !t.crispy && width != kDoomWidth;
   t.centerx = width / 2;
   t.centery = height / 2;
   t.centerxfrac = Fixed(t.centerx) << kFracBits;
@@ -78,7 +80,8 @@ Tables make_tables(int width, int height) {
     const Fixed dy = std::abs(((y - height / 2) << kFracBits) + kFracUnit / 2);
     t.yslope[size_t(y)] = fixed_div(Fixed(width / 2) * kFracUnit, dy);
   }
-  for (int j = 0; j < kMaxLightScale; ++j) t.scale_light_drop[j] = j / 2;  // DISTMAP
+  // DISTMAP; vanilla's smaller views drop faster, as its scales there are smaller.
+  for (int j = 0; j < kMaxLightScale; ++j) t.scale_light_drop[j] = t.light_at_view ? j * kDoomWidth / width / 2 : j / 2;
   for (int j = 0; j < kMaxLightZ; ++j) {
     const Fixed scale = fixed_div(kDoomWidth / 2 * kFracUnit, (j + 1) << kLightZShift) >> kLightScaleShift;
     t.zlight_drop[j] = scale / 2;
@@ -89,14 +92,15 @@ Tables make_tables(int width, int height) {
 
 }  // namespace
 
-const Tables& tables(int width, int height) {
+const Tables& tables(int width, int height, int screen_width) {
   static std::mutex mutex;
-  static std::map<std::pair<int, int>, std::unique_ptr<Tables>> made;
+  static std::map<std::tuple<int, int, bool>, std::unique_ptr<Tables>> made;
   static thread_local const Tables* last = nullptr;
-  if (last && last->width == width && last->height == height) return *last;
+  const bool crispy = (screen_width ? screen_width : width) != kDoomWidth;
+  if (last && last->width == width && last->height == height && last->crispy == crispy) return *last;
   const std::lock_guard lock(mutex);
-  auto& t = made[{width, height}];
-  if (!t) t = std::make_unique<Tables>(make_tables(width, height));
+  auto& t = made[{width, height, crispy}];
+  if (!t) t = std::make_unique<Tables>(make_tables(width, height, screen_width));
   last = t.get();
   return *t;
 }

@@ -46,6 +46,7 @@ constexpr int kDoomWidth = 320;         // SCREENWIDTH, which Doom's light table
 struct Tables {
   int width = 0, height = 0;
   bool crispy = false;              // Crispy Doom's hires rules (any width but Doom's 320), else vanilla's
+  bool light_at_view = false;       // vanilla's view in a window of its 320 columns: light by the view's own scale
   int centerx = 0, centery = 0;
   Fixed centerxfrac = 0, centeryfrac = 0, projection = 0;
   std::vector<int> viewangletox;    // per fine angle of the half turn ahead: the first column at or right of it
@@ -60,8 +61,11 @@ struct Tables {
   Fixed sky_iscale = 0;                       // the sky's texel rows per screen row (pspriteiscale)
 };
 
-// The tables of a W x H view (cached: each size is made once per process).
-const Tables& tables(int width, int height);
+// The tables of a W x H view (cached: each size is made once per process). A view that
+// is a window of Doom's 320x200 screen (screen_width 320: its smaller screen sizes)
+// keeps vanilla's rules at any width; otherwise 320 columns are vanilla's, any other
+// width Crispy's.
+const Tables& tables(int width, int height, int screen_width = 0);
 
 // A double of map units (a multiple of 1/65536, as every position our levels and
 // simulation hold) in 16.16; an angle in degrees as a binary angle.
@@ -79,7 +83,8 @@ int start_map(int light, int contrast, int extra);
 // A wall's (or sprite's) scale is taken at Doom's 320 columns (Crispy Doom's hires shifts
 // it once more), so light diminishes with distance alike at any width.
 inline int wall_map(const Tables& t, int start, Fixed scale) {
-  const int64_t scaled = t.width == kDoomWidth ? int64_t(uint32_t(scale)) : int64_t(uint32_t(scale)) * kDoomWidth / t.width;
+  const int64_t scaled = t.width == kDoomWidth || t.light_at_view ? int64_t(uint32_t(scale))
+                                                                   : int64_t(uint32_t(scale)) * kDoomWidth / t.width;
   const int index = int(std::min<int64_t>(scaled >> kLightScaleShift, kMaxLightScale - 1));
   const int map = start - t.scale_light_drop[index];
   return map < 0 ? 0 : map >= kColormaps ? kColormaps - 1 : map;

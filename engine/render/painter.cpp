@@ -20,7 +20,7 @@ class Painter final : public Renderer {
 
   RenderStats render(const level::Level& level, const level::State& state, const Camera& camera, Frame& frame,
                      Probe* probe) override {
-    const View view(camera, frame.width, frame.height, level);
+    const View view(camera, frame.width, frame.height, level, frame.doom_screen_width);
     const int camera_sector = level.sector_at(camera.pos);
     canvas_.begin(level, state, view, frame, camera_sector, probe);
     canvas_.draw_directly();  // it paints over its own pixels

@@ -19,7 +19,7 @@ class Reference final : public Renderer {
 
   RenderStats render(const level::Level& level, const level::State& state, const Camera& camera, Frame& frame,
                      Probe* probe) override {
-    const View view(camera, frame.width, frame.height, level);
+    const View view(camera, frame.width, frame.height, level, frame.doom_screen_width);
     canvas_.begin(level, state, view, frame, level.sector_at(camera.pos), probe);
 
     walls_.clear();

@@ -140,7 +140,7 @@ class SphereTracer final : public Renderer {
   RenderStats render(const level::Level& level, const level::State& state, const Camera& camera, Frame& frame,
                      Probe* probe) override {
     prepare(level);
-    const View view(camera, frame.width, frame.height, level);
+    const View view(camera, frame.width, frame.height, level, frame.doom_screen_width);
     canvas_.begin(level, state, view, frame, level.sector_at(camera.pos), probe);  // Doom's rule, as every renderer's
     RenderStats stats;
     for (int x = 0; x < view.width; ++x) stats.add_ray(trace(level, view, x));

@@ -42,12 +42,12 @@ struct View {
   }
   // The view of a level: Doom's rules for a WAD level (its art is paletted) seen over
   // Doom's 90 degrees, within the range Doom's 16.16 holds; ours otherwise.
-  View(const Camera& camera, int w, int h, const level::Level& level) : View(camera, w, h) {
+  View(const Camera& camera, int w, int h, const level::Level& level, int doom_screen_width = 0) : View(camera, w, h) {
     constexpr double kDoomRange = 32000;
     if (!level.paletted() || camera.fov != 90 || w < 2 || h < 2 || std::fabs(camera.pos.x) > kDoomRange ||
         std::fabs(camera.pos.y) > kDoomRange || std::fabs(camera.z) > kDoomRange)
       return;
-    doom = &doom::tables(w, h);
+    doom = &doom::tables(w, h, doom_screen_width);
     fx = doom::to_fixed(camera.pos.x);
     fy = doom::to_fixed(camera.pos.y);
     fz = doom::to_fixed(camera.z);
