@@ -1,5 +1,6 @@
-// game: walk a level in a window, record and replay demos, or replay a demo
-// headless into PNG frames and a stats CSV.
+// game: Doom's front end on a WAD (title loop, menus, saves) or a level walked in a
+// window; demos recorded and replayed; or, headless, a demo replayed into PNG frames
+// and a stats CSV, a route walked, or a key script run through the menus.
 #include <cctype>
 #include <cstdio>
 
@@ -9,7 +10,9 @@
 #include "engine/util/file.h"
 #include "game/autopilot.h"
 #include "game/headless.h"
+#include "game/key_script.h"
 #include "game/sdl_platform.h"
+#include "game/settings.h"
 #include "tools/cli.h"
 
 using namespace p3d;
@@ -74,20 +77,28 @@ std::string warp_map(const bsp::LevelSource& source, const std::vector<int>& war
   return name;
 }
 
+// The settings from their file, each warning said once.
+game::Settings read_settings(const std::filesystem::path& path) {
+  std::vector<std::string> warnings;
+  game::Settings s = game::load_settings(path, warnings);
+  for (const std::string& w : warnings) std::fprintf(stderr, "game: %s\n", w.c_str());
+  return s;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"game: walk a level (.bsp, .map, .grid, or a WAD map) with Doom's controls", "game"};
+  CLI::App app{"game: Doom's front end on a WAD (title, menus, saves), or walk a level (.bsp, .map, .grid)", "game"};
   cli::LevelArgs level_args;
   std::vector<int> warp;
-  std::string record, play, out_dir, resolution, window = "960x600", renderer = "bsp", autopilot;
-  bool headless = false, fullscreen = false, no_vsync = false, map_reload = false, timedemo = false, all_keys = false;
-  bool json = false, no_sound = false, no_status_bar = false, stats_only = false;
+  std::string record, play, out_dir, resolution, window, renderer, autopilot, script, config;
+  bool headless = false, fullscreen = false, windowed = false, no_vsync = false, map_reload = false, timedemo = false;
+  bool all_keys = false, json = false, no_sound = false, no_status_bar = false, stats_only = false;
   game::GameFlags flags;
   int capture_every = 35;
   uint64_t quit_after = 0;
   int skill = level::kDefaultSkill;
-  double fov = 90, sensitivity = 24;
+  double fov = 90, sensitivity = 0;
   cli::add_level_options(app, level_args);
   app.add_option("--warp", warp, "start on a WAD map as Doom's -warp: MAP (Doom II) or EPISODE [MAP]")
       ->expected(1, 2)
@@ -96,7 +107,10 @@ int main(int argc, char** argv) {
   app.add_option("--play", play,
                  "replay this demo, then quit: our .demo, a Doom .lmp, or a WAD's DEMO1..DEMO4 lump (--play demo1)");
   app.add_flag("--timedemo", timedemo, "with --play: one tic per frame as fast as possible, then report the fps");
-  app.add_flag("--headless", headless, "no window: with --play, write frames and stats; with --autopilot, record");
+  app.add_flag("--headless", headless,
+               "no window: with --play, write frames and stats; with --autopilot, record; with --script, run it");
+  app.add_option("--script", script, "--headless: drive Doom's front end by this key script (game/key_script.h)")
+      ->check(CLI::ExistingFile);
   app.add_option("--capture-every", capture_every, "--headless: tics between captured frames")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
@@ -108,10 +122,11 @@ int main(int argc, char** argv) {
   app.add_flag("--nomonsters", flags.no_monsters, "Doom's -nomonsters: no monsters are spawned");
   app.add_option("--resolution,--size", resolution, "render at this fixed WxH (320x200 for the old look); "
                  "default: the window's size (640x400 headless)");
-  app.add_option("--window", window, "window size WxH")->capture_default_str();
-  app.add_flag("--fullscreen", fullscreen, "start fullscreen (F11 toggles)");
+  app.add_option("--window", window, "window size WxH (default: the settings', 960x600)");
+  app.add_flag("--fullscreen", fullscreen, "start fullscreen (Alt+Enter toggles)");
+  app.add_flag("--windowed", windowed, "start in a window even if the settings say fullscreen");
   app.add_flag("--no-vsync", no_vsync, "uncapped frame rate");
-  app.add_option("--renderer", renderer, "bsp, painter, dda, sphere, sphere-naive or reference")->capture_default_str();
+  app.add_option("--renderer", renderer, "bsp, painter, dda, sphere, sphere-naive or reference (default: the settings', bsp)");
   app.add_option("--fov", fov, "horizontal field of view")->check(cli::finite_range(30.0, 160.0))->capture_default_str();
   app.add_flag("--nosound", no_sound, "no sound effects (headless runs are always silent)");
   app.add_flag("--no-status-bar", no_status_bar, "WAD levels: the view fills the frame, without Doom's status bar");
@@ -120,9 +135,10 @@ int main(int argc, char** argv) {
                  "walk through these waypoints (a camera list; a camera named 'use' presses use there, 'wait' waits) "
                  "instead of reading input")
       ->check(CLI::ExistingFile);
-  app.add_option("--sensitivity", sensitivity, "mouse turn per pixel, in 1/65536 of a turn")
-      ->check(cli::finite_range(0.0, 10000.0))
-      ->capture_default_str();
+  app.add_option("--sensitivity", sensitivity, "mouse turn per pixel, in 1/65536 of a turn (default: from the menu's "
+                 "mouse sensitivity)")
+      ->check(cli::finite_range(0.0, 10000.0));
+  app.add_option("--config", config, "the settings file (default: $XDG_CONFIG_HOME/pseudo3d/settings.cfg)");
   app.add_option("--quit-after-tics", quit_after, "quit after this many tics (0: never)")->capture_default_str();
   cli::add_skill_option(app, skill);
   render::RendererOptions renderer_options;
@@ -133,9 +149,30 @@ int main(int argc, char** argv) {
     if (!play.empty() && !autopilot.empty()) throw CLI::ValidationError("--play", "use either --play or --autopilot");
     if (timedemo && play.empty()) throw CLI::ValidationError("--timedemo", "needs --play");
     if (json && (!headless || play.empty())) throw CLI::ValidationError("--json", "needs --headless --play");
-    if (headless && play.empty() && autopilot.empty())
-      throw CLI::ValidationError("--headless", "needs --play (to capture frames) or --autopilot (to record)");
-    if (headless && !play.empty() && out_dir.empty()) throw CLI::ValidationError("--out", "--headless --play needs --out DIR");
+    if (!script.empty() && (!headless || !play.empty() || !autopilot.empty()))
+      throw CLI::ValidationError("--script", "needs --headless, without --play or --autopilot");
+    if (headless && play.empty() && autopilot.empty() && script.empty())
+      throw CLI::ValidationError("--headless", "needs --play (to capture frames), --autopilot (to record) or --script");
+    if (headless && (!play.empty() || !script.empty()) && out_dir.empty())
+      throw CLI::ValidationError("--out", "--headless --play and --script need --out DIR");
+    if (fullscreen && windowed) throw CLI::ValidationError("--fullscreen", "use either --fullscreen or --windowed");
+
+    // The settings, with what the command line says for this run on top.
+    const std::filesystem::path settings_file = config.empty() ? game::settings_path() : std::filesystem::path(config);
+    const game::Settings saved = headless ? game::Settings{} : read_settings(settings_file);
+    game::Settings settings = saved;
+    if (!window.empty()) cli::parse_size(window, settings.window_width, settings.window_height, "--window");
+    if (fullscreen || windowed) settings.fullscreen = fullscreen;
+    if (!renderer.empty()) settings.renderer = renderer;
+
+    // No level named: the WAD played last, or an IWAD found where Doom's are.
+    if (level_args.path.empty() && level_args.iwad.empty()) {
+      std::error_code ec;
+      if (!saved.last_wad.empty() && std::filesystem::is_regular_file(saved.last_wad, ec))
+        level_args.iwad = saved.last_wad.string();
+      else if (const std::filesystem::path found = game::find_iwad(); !found.empty())
+        level_args.iwad = found.string();
+    }
     bsp::LevelSource source = cli::level_source(level_args);
     if (!warp.empty()) {
       if (!source.is_wad()) throw CLI::ValidationError("--warp", "picks a map in WADs: use it with --iwad");
@@ -144,9 +181,30 @@ int main(int argc, char** argv) {
     }
     if (map_reload && !source.is_wad() && !bsp::is_source_path(source.file))
       throw CLI::ValidationError("--map-reload", "needs a .map or .grid source or a WAD, not a compiled level");
-    int rw = 0, rh = 0, ww = 0, wh = 0;
+    int rw = 0, rh = 0;
     if (!resolution.empty()) cli::parse_size(resolution, rw, rh, "--resolution");
-    cli::parse_size(window, ww, wh, "--window");
+    if (source.is_wad() && !level_args.iwad.empty()) settings.last_wad = std::filesystem::absolute(level_args.iwad);
+
+    game::FrontEndOptions front_options;
+    front_options.flags = flags;
+    front_options.mouse_turn = sensitivity;
+    if (source.is_wad()) front_options.save_dir = game::save_directory(source.wads.front());
+
+    // Doom's start: the title loop, when a WAD is played and nothing else asked for.
+    const bool title = source.is_wad() && source.map.empty() && warp.empty() && play.empty() && autopilot.empty() &&
+                       record.empty() && !map_reload;
+    if (headless && !script.empty()) {
+      if (!source.is_wad()) throw CLI::ValidationError("--script", "drives Doom's front end: name a WAD with --iwad");
+      std::unique_ptr<game::FrontEnd> front =
+          title ? std::make_unique<game::FrontEnd>(source, settings, front_options)
+                : std::make_unique<game::FrontEnd>(std::make_unique<game::Session>(source, skill, flags), settings,
+                                                   front_options);
+      const auto steps = game::parse_key_script(read_file_text(script), script);
+      const game::ScriptResult r = game::run_key_script(*front, steps, out_dir, rw ? rw : 320, rh ? rh : 200);
+      std::printf("ran %llu tics, wrote %d frames and log.txt to %s\n", (unsigned long long)r.tics, r.shots,
+                  out_dir.c_str());
+      return 0;
+    }
 
     std::optional<play::Demo> demo;
     std::optional<play::DoomDemo> doom_demo;
@@ -166,47 +224,64 @@ int main(int argc, char** argv) {
         say_what_is_not_played(*doom_demo, bytes.what);
       }
     }
-    game::Session session(source, skill, flags);
-    if (doom_demo) demo = play::demo_from_doom(*doom_demo, session.level());
-    session.fov = fov;
-    session.show_status_bar = !no_status_bar;
-    session.renderer_options = renderer_options;
-    session.give_all_keys(all_keys);
-    const std::string& map_path = session.name();
-    if (!session.select_renderer(renderer, false)) throw Error("renderer '" + renderer + "' cannot draw " + map_path);
-    if (demo && demo->level_fingerprint != play::fingerprint(session.level()))
+
+    auto keep_settings = [&](const game::Settings& live) {
+      game::Settings out = live;  // what the command line changed for this run is not kept
+      if (!window.empty()) out.window_width = saved.window_width, out.window_height = saved.window_height;
+      if (fullscreen || windowed) out.fullscreen = saved.fullscreen;
+      if (!renderer.empty()) out.renderer = saved.renderer;
+      std::string why;
+      if (!settings_file.empty() && !game::save_settings(out, settings_file, why))
+        std::fprintf(stderr, "game: settings not saved: %s\n", why.c_str());
+    };
+    game::WindowOptions o;
+    o.render_width = rw, o.render_height = rh;
+    o.vsync = !no_vsync;
+    o.sound = !no_sound;
+    o.keep_settings = keep_settings;
+    o.wad_changed = settings.last_wad != saved.last_wad;
+    if (title) {
+      game::FrontEnd front(source, settings, front_options);
+      return game::run_window(front, settings, o);
+    }
+
+    auto session = std::make_unique<game::Session>(source, skill, flags);
+    if (doom_demo) demo = play::demo_from_doom(*doom_demo, session->level());
+    session->fov = fov;
+    session->show_status_bar = !no_status_bar;
+    session->renderer_options = renderer_options;
+    session->give_all_keys(all_keys);
+    const std::string& map_path = session->name();
+    if (!session->select_renderer(settings.renderer, false)) throw Error("renderer '" + settings.renderer + "' cannot draw " + map_path);
+    if (demo && demo->level_fingerprint != play::fingerprint(session->level()))
       throw Error(play + ": the demo was recorded on a different level than " + map_path);
 
     if (headless) {
       if (demo) {
-        game::HeadlessOptions o{capture_every, out_dir, rw ? rw : 640, rh ? rh : 400, json, !stats_only};
-        const game::HeadlessResult r = game::replay_headless(session, *demo, o);
+        game::HeadlessOptions h{capture_every, out_dir, rw ? rw : 640, rh ? rh : 400, json, !stats_only};
+        const game::HeadlessResult r = game::replay_headless(*session, *demo, h);
         std::printf("replayed %zu of %zu tics (exit: %s), wrote %d %s to %s\n", r.tics, demo->tics.size(),
                     game::exit_name(r.exit), r.frames, stats_only ? "rows of stats.csv" : "frames and stats.csv",
                     out_dir.c_str());
         return 0;
       }
-      session.start_recording(std::filesystem::path(record).extension() == ".lmp");
-      const size_t tics = autopilot_headless(session, route(autopilot), quit_after);
-      if (!record.empty()) write_file_atomically(record, session.encode_recording(record));
-      std::printf("autopilot walked %zu tics (exit: %s)%s\n", tics, game::exit_name(session.exited()),
+      session->start_recording(std::filesystem::path(record).extension() == ".lmp");
+      const size_t tics = autopilot_headless(*session, route(autopilot), quit_after);
+      if (!record.empty()) write_file_atomically(record, session->encode_recording(record));
+      std::printf("autopilot walked %zu tics (exit: %s)%s\n", tics, game::exit_name(session->exited()),
                   record.empty() ? "" : (", recorded to " + record).c_str());
       return 0;
     }
 
-    game::WindowOptions o;
-    o.window_width = ww, o.window_height = wh, o.render_width = rw, o.render_height = rh;
-    o.fullscreen = fullscreen;
-    o.vsync = !no_vsync;
     o.map_reload = map_reload;
-    o.sound = !no_sound;
     o.record = record;
     o.play = demo;
     o.timedemo = timedemo;
     if (timedemo) o.vsync = false;
     if (!autopilot.empty()) o.autopilot = route(autopilot);
-    o.input.mouse_sensitivity = sensitivity;
     o.quit_after_tics = quit_after;
-    return game::run_window(session, o);
+    front_options.watching = demo || !autopilot.empty();
+    game::FrontEnd front(std::move(session), settings, front_options);
+    return game::run_window(front, settings, o);
   });
 }

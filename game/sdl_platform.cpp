@@ -2,14 +2,14 @@
 
 #include <SDL.h>
 
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string_view>
 
+#include "engine/front/gamma.h"
+#include "engine/front/keys.h"
 #include "engine/image/image.h"
 #include "engine/util/file.h"
-#include "game/autopilot.h"
 #include "game/sound_mixer.h"
 
 namespace p3d::game {
@@ -20,22 +20,41 @@ constexpr double kTicSeconds = 1.0 / kTicRate;
 
 double now_seconds() { return double(SDL_GetPerformanceCounter()) / double(SDL_GetPerformanceFrequency()); }
 
-Controls read_controls(int mouse_dx) {
-  const Uint8* k = SDL_GetKeyboardState(nullptr);
-  Controls c;
-  c.forward = k[SDL_SCANCODE_W] || k[SDL_SCANCODE_UP];
-  c.back = k[SDL_SCANCODE_S] || k[SDL_SCANCODE_DOWN];
-  c.turn_left = k[SDL_SCANCODE_LEFT];
-  c.turn_right = k[SDL_SCANCODE_RIGHT];
-  c.strafe_left = k[SDL_SCANCODE_A];
-  c.strafe_right = k[SDL_SCANCODE_D];
-  c.use = k[SDL_SCANCODE_SPACE] || k[SDL_SCANCODE_E];
-  c.attack = k[SDL_SCANCODE_LCTRL] || k[SDL_SCANCODE_RCTRL] ||
-             (SDL_GetRelativeMouseMode() && (SDL_GetMouseState(nullptr, nullptr) & SDL_BUTTON_LMASK));
-  c.strafe_modifier = k[SDL_SCANCODE_LALT] || k[SDL_SCANCODE_RALT];
-  c.run = k[SDL_SCANCODE_LSHIFT] || k[SDL_SCANCODE_RSHIFT];
-  c.mouse_dx = mouse_dx;
-  return c;
+// SDL's key as Doom's key code (front/keys.h); 0 for keys Doom does not know.
+int doom_key(SDL_Keycode k) {
+  using namespace front;
+  switch (k) {
+    case SDLK_RETURN: case SDLK_KP_ENTER: return kKeyEnter;
+    case SDLK_ESCAPE: return kKeyEscape;
+    case SDLK_BACKSPACE: return kKeyBackspace;
+    case SDLK_TAB: return kKeyTab;
+    case SDLK_UP: return kKeyUp;
+    case SDLK_DOWN: return kKeyDown;
+    case SDLK_LEFT: return kKeyLeft;
+    case SDLK_RIGHT: return kKeyRight;
+    case SDLK_LCTRL: case SDLK_RCTRL: return kKeyRCtrl;
+    case SDLK_LSHIFT: case SDLK_RSHIFT: return kKeyRShift;
+    case SDLK_LALT: case SDLK_RALT: return kKeyRAlt;
+    case SDLK_PAUSE: return kKeyPause;
+    case SDLK_PRINTSCREEN: return kKeyPrintScreen;
+    case SDLK_CAPSLOCK: return kKeyCapsLock;
+    case SDLK_NUMLOCKCLEAR: return kKeyNumLock;
+    case SDLK_SCROLLLOCK: return kKeyScrollLock;
+    case SDLK_HOME: return kKeyHome;
+    case SDLK_END: return kKeyEnd;
+    case SDLK_PAGEUP: return kKeyPageUp;
+    case SDLK_PAGEDOWN: return kKeyPageDown;
+    case SDLK_INSERT: return kKeyInsert;
+    case SDLK_DELETE: return kKeyDelete;
+    case SDLK_KP_PLUS: case SDLK_PLUS: return kKeyEquals;
+    case SDLK_KP_MINUS: return kKeyMinus;
+    case SDLK_F11: return kKeyF11;
+    case SDLK_F12: return kKeyF12;
+    default: break;
+  }
+  if (k >= SDLK_F1 && k <= SDLK_F10) return kKeyF1 + int(k - SDLK_F1);
+  if (k > 0 && k < 0x7f) return int(k);  // printable keys are their (lower-case) ASCII, as Doom's
+  return 0;
 }
 
 // The next free out/screenshots/screenshotNNNN.png.
@@ -65,11 +84,12 @@ bool offscreen_driver() {
 }
 
 constexpr const char* kHeadlessHint =
-    "to render without a display: game LEVEL --headless --play DEMO --out DIR (or --autopilot ROUTE)";
+    "to render without a display: game LEVEL --headless --play DEMO --out DIR (or --autopilot ROUTE, --script KEYS)";
 
 class Window {
  public:
-  Window(Session& session, const WindowOptions& options) : session_(session), o_(options) {}
+  Window(FrontEnd& front, Settings& settings, const WindowOptions& options)
+      : front_(front), settings_(settings), o_(options) {}
   ~Window() {
     if (audio_) SDL_CloseAudioDevice(audio_);  // stops the callback before the mixer goes
     if (texture_) SDL_DestroyTexture(texture_);
@@ -90,49 +110,48 @@ class Window {
     }
     if (o_.sound) open_audio();
     SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "nearest");  // a fixed low resolution stays crisp
-    window_ = SDL_CreateWindow(("pseudo3d: " + session_.title()).c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
-                               o_.window_width, o_.window_height,
-                               SDL_WINDOW_RESIZABLE | (o_.fullscreen ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0));
+    window_ = SDL_CreateWindow(window_title().c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
+                               settings_.window_width, settings_.window_height,
+                               SDL_WINDOW_RESIZABLE | (settings_.fullscreen ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0));
     if (!window_) return fail("cannot open a window");
     renderer_ = SDL_CreateRenderer(window_, -1, SDL_RENDERER_ACCELERATED | (o_.vsync ? SDL_RENDERER_PRESENTVSYNC : 0));
     if (!renderer_) renderer_ = SDL_CreateRenderer(window_, -1, SDL_RENDERER_SOFTWARE);
     if (!renderer_) return fail("cannot create a renderer");
     if (!resize()) return 1;
-    SDL_SetRelativeMouseMode(SDL_TRUE);
     if (o_.autopilot) autopilot_.emplace(*o_.autopilot);
-    if (o_.play) {  // the demo's start and keys, as recorded
-      if (o_.play->custom_start) session_.spawn(o_.play->start, o_.play->angle);
-      session_.set_keys(o_.play->keys);
+    if (Session* s = front_.session()) {
+      if (o_.play) {  // the demo's start and keys, as recorded
+        if (o_.play->custom_start) s->spawn(o_.play->start, o_.play->angle);
+        s->set_keys(o_.play->keys);
+      }
+      if (!o_.record.empty()) s->start_recording(o_.record.extension() == ".lmp");
+      if (o_.map_reload) s->watch_files();
     }
-    if (!o_.record.empty()) session_.start_recording(o_.record.extension() == ".lmp");
-    if (o_.map_reload) session_.watch_files();
+    apply_volumes();
 
     double last = now_seconds(), accumulator = 0;
     const double start = last;
     uint64_t frames = 0;
     while (running_) {
       poll_events();
+      follow_mouse();
       const double t0 = now_seconds();
       accumulator = std::min(accumulator + (t0 - last), 0.25);  // after a stall, do not race to catch up
       if (o_.timedemo) accumulator = kTicSeconds;              // exactly one tic per frame
-      if (session_.menu.is_open()) accumulator = 0;             // the game waits while the menu is open
       summed_.frame_ms += (t0 - last) * 1000;
       last = t0;
       while (accumulator >= kTicSeconds && running_) {
         run_tic();
         accumulator -= kTicSeconds;
       }
-      play_sounds();
+      after_tics();
       const double t1 = now_seconds();
-      session_.reload_if_saved(t1);
-      const double alpha = accumulator / kTicSeconds;
-      session_.render(frame_, alpha);
-      session_.draw_overlays(frame_, times_, alpha);
+      if (Session* s = front_.session()) s->reload_if_saved(t1);
+      const double alpha = front_.waiting() ? 1.0 : accumulator / kTicSeconds;
+      front_.draw(frame_, alpha, times_);
+      if (front_.screenshot_requested()) screenshot();
       const double t2 = now_seconds();
-      SDL_UpdateTexture(texture_, nullptr, frame_.pixels.data(), frame_.width * 4);
-      SDL_RenderClear(renderer_);
-      SDL_RenderCopy(renderer_, texture_, nullptr, nullptr);
-      SDL_RenderPresent(renderer_);
+      present();
       const double t3 = now_seconds();
       summed_.sim_ms += (t1 - t0) * 1000;
       summed_.render_ms += (t2 - t1) * 1000;
@@ -141,13 +160,15 @@ class Window {
       if (t3 - summed_start_ >= 0.5) show_averages(t3);
       ++frames;
     }
-    if (o_.play)
-      std::printf("%llu tics, %llu frames in %.2f s: %.1f fps\n", (unsigned long long)session_.tics(),
+    const Session* s = front_.session();
+    if (o_.play && s)
+      std::printf("%llu tics, %llu frames in %.2f s: %.1f fps\n", (unsigned long long)s->tics(),
                   (unsigned long long)frames, now_seconds() - start, frames / std::max(1e-9, now_seconds() - start));
-    if (!o_.record.empty()) {
-      write_file_atomically(o_.record, session_.encode_recording(o_.record));
-      std::printf("recorded %zu tics to %s\n", session_.recording().tics.size(), o_.record.c_str());
+    if (!o_.record.empty() && s) {
+      write_file_atomically(o_.record, s->encode_recording(o_.record));
+      std::printf("recorded %zu tics to %s\n", s->recording().tics.size(), o_.record.c_str());
     }
+    keep_window_settings();
     return 0;
   }
 
@@ -155,6 +176,11 @@ class Window {
   int fail(const char* what) {
     std::fprintf(stderr, "game: %s: %s\n", what, SDL_GetError());
     return 1;
+  }
+
+  std::string window_title() const {
+    const Session* s = front_.session();
+    return s && !front_.has_menus() ? "pseudo3d: " + s->title() : "pseudo3d";
   }
 
   // ---- sound: the mixer on SDL's audio thread; without a device the game is silent
@@ -173,30 +199,59 @@ class Window {
       w->mixer_->mix(std::span<int16_t>(reinterpret_cast<int16_t*>(bytes), size_t(length) / sizeof(int16_t)));
     };
     want.userdata = this;
-    mixer_.emplace(want.freq, [this](play::Sound s) { return session_.sound_clip(s); });
+    mixer_.emplace(want.freq, [this](play::Sound s) { return front_.sound_clip(s); });
     audio_ = SDL_OpenAudioDevice(nullptr, 0, &want, &have, 0);
     if (!audio_) {
       std::fprintf(stderr, "game: no sound (%s)\n", SDL_GetError());
       return;
     }
     SDL_PauseAudioDevice(audio_, 0);
-    session_.listen();
+  }
+
+  void apply_volumes() {
+    if (!audio_) return;
+    SDL_LockAudioDevice(audio_);
+    mixer_->set_volume(settings_.menu.sfx_volume * 8);  // Doom's S_SetSfxVolume
+    SDL_UnlockAudioDevice(audio_);
   }
 
   // Starts the sounds of the tics just run and moves the others with the listener.
   void play_sounds() {
-    std::vector<Session::PlacedSound> sounds = session_.take_sounds();
+    std::vector<Session::PlacedSound> sounds = front_.take_sounds();
     if (!audio_) return;
-    const play::Listener listener = session_.listener();
-    for (const Session::PlacedSound& s : sounds) session_.sound_clip(s.sound);  // decoded outside the lock
+    const Session* session = front_.session();
+    const play::Listener listener = session ? session->listener() : play::Listener{};
+    for (const Session::PlacedSound& s : sounds) front_.sound_clip(s.sound);  // decoded outside the lock
     SDL_LockAudioDevice(audio_);
     for (const Session::PlacedSound& s : sounds) mixer_->start(s.sound, s.origin, s.at, listener);
-    mixer_->update(listener, [&](uint64_t origin) { return session_.sound_origin(origin); });
+    mixer_->update(listener, [&](uint64_t origin) { return session ? session->sound_origin(origin) : std::nullopt; });
     SDL_UnlockAudioDevice(audio_);
   }
 
-  // Renders at the window's size unless a fixed resolution was asked for; only here
-  // are the frame and the streaming texture (re)allocated.
+  // What the tics asked for: sounds, settings to apply and keep, the quit.
+  void after_tics() {
+    play_sounds();
+    if (front_.settings_changed()) {
+      apply_volumes();
+      if (o_.keep_settings) o_.keep_settings(settings_);
+    }
+    if (front_.quit_requested()) running_ = false;
+    const std::string title = window_title();
+    if (title != shown_title_) SDL_SetWindowTitle(window_, (shown_title_ = title).c_str());
+  }
+
+  // The window as the player left it, kept when it changed (or the WAD played did).
+  void keep_window_settings() {
+    if (!o_.keep_settings) return;
+    const Settings before = settings_;
+    settings_.fullscreen = SDL_GetWindowFlags(window_) & SDL_WINDOW_FULLSCREEN_DESKTOP;
+    if (!settings_.fullscreen) SDL_GetWindowSize(window_, &settings_.window_width, &settings_.window_height);
+    if (settings_.fullscreen != before.fullscreen || settings_.window_width != before.window_width ||
+        settings_.window_height != before.window_height || o_.wad_changed)
+      o_.keep_settings(settings_);
+  }
+
+  // ---- frames
   // The heads-up times: averages over the last half second.
   void show_averages(double now) {
     const double n = double(summed_frames_);
@@ -207,6 +262,8 @@ class Window {
     summed_start_ = now;
   }
 
+  // Renders at the window's size unless a fixed resolution was asked for; only here
+  // are the frame and the streaming texture (re)allocated.
   bool resize() {
     int w = o_.render_width, h = o_.render_height;
     if (w <= 0 || h <= 0) SDL_GetRendererOutputSize(renderer_, &w, &h);
@@ -222,132 +279,105 @@ class Window {
     return true;
   }
 
+  // The frame through Doom's gamma correction, on the screen.
+  void present() {
+    const uint32_t* pixels = frame_.pixels.data();
+    if (settings_.menu.gamma > 0) {
+      shown_.assign(frame_.pixels.begin(), frame_.pixels.end());
+      front::apply_gamma(settings_.menu.gamma, shown_);
+      pixels = shown_.data();
+    }
+    SDL_UpdateTexture(texture_, nullptr, pixels, frame_.width * 4);
+    SDL_RenderClear(renderer_);
+    SDL_RenderCopy(renderer_, texture_, nullptr, nullptr);
+    SDL_RenderPresent(renderer_);
+  }
+
+  void screenshot() {
+    try {
+      const auto path = screenshot_path();
+      image::save_png(frame_, path);
+      front_.say("saved " + path.string());
+    } catch (const std::exception& e) {
+      front_.say(e.what());
+    }
+  }
+
+  // ---- input
   void poll_events() {
     SDL_Event e;
     while (SDL_PollEvent(&e)) {
       if (e.type == SDL_QUIT) running_ = false;
       if (e.type == SDL_WINDOWEVENT && e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED && !resize()) running_ = false;
-      if (e.type == SDL_MOUSEMOTION && SDL_GetRelativeMouseMode()) mouse_dx_ += e.motion.xrel;
-      if (e.type == SDL_MOUSEBUTTONDOWN && !session_.menu.is_open()) SDL_SetRelativeMouseMode(SDL_TRUE);
-      if (e.type == SDL_KEYDOWN && !e.key.repeat) {
-        if (session_.menu.is_open())
-          menu_key(e.key.keysym.sym);
-        else
-          key(e.key.keysym.sym);
+      if (e.type == SDL_MOUSEMOTION && SDL_GetRelativeMouseMode()) front_.mouse_motion(e.motion.xrel);
+      if ((e.type == SDL_MOUSEBUTTONDOWN || e.type == SDL_MOUSEBUTTONUP) && e.button.button == SDL_BUTTON_LEFT)
+        front_.mouse_button(1, e.type == SDL_MOUSEBUTTONDOWN && SDL_GetRelativeMouseMode());
+      if (e.type == SDL_KEYDOWN) key_down(e.key);
+      if (e.type == SDL_KEYUP) front_.key_up(doom_key(e.key.keysym.sym));
+    }
+  }
+
+  void key_down(const SDL_KeyboardEvent& k) {
+    if (k.keysym.sym == SDLK_RETURN && (k.keysym.mod & KMOD_ALT)) {  // Alt+Enter: fullscreen, as Chocolate Doom
+      if (!k.repeat) {
+        const bool full = SDL_GetWindowFlags(window_) & SDL_WINDOW_FULLSCREEN_DESKTOP;
+        SDL_SetWindowFullscreen(window_, full ? 0 : SDL_WINDOW_FULLSCREEN_DESKTOP);
       }
+      return;
     }
+    const int key = doom_key(k.keysym.sym);
+    if (!key || (k.repeat && !front_.menu_active())) return;  // held keys repeat in menus only (typing, moving)
+    front_.key_down(key);
   }
 
-  void open_menu() {
-    session_.menu.open();
-    SDL_SetRelativeMouseMode(SDL_FALSE);
-  }
-
-  void resume() {
-    session_.menu.close();
-    session_.show_help = false;
-    SDL_SetRelativeMouseMode(SDL_TRUE);
-  }
-
-  void menu_key(SDL_Keycode k) {
-    Menu& menu = session_.menu;
-    if (k == SDLK_ESCAPE) resume();
-    if (k == SDLK_UP || k == SDLK_w) menu.up();
-    if (k == SDLK_DOWN || k == SDLK_s) menu.down();
-    if (k == SDLK_F10) running_ = false;
-    if (k != SDLK_RETURN && k != SDLK_KP_ENTER && k != SDLK_SPACE) return;
-    switch (menu.selected()) {
-      case Menu::Item::kResume: resume(); break;
-      case Menu::Item::kKeys: session_.show_help = !session_.show_help; break;
-      case Menu::Item::kQuit: running_ = false; break;
-    }
-  }
-
-  void key(SDL_Keycode k) {
-    if (k >= SDLK_a && k <= SDLK_z) cheats_typed_ |= cheats_.type(char(k));
-    if (k == SDLK_ESCAPE) open_menu();
-    if (k == SDLK_F10) running_ = false;
-    if (k == SDLK_o && session_.show_automap) session_.automap.overlay = !session_.automap.overlay;
-    if (k == SDLK_F1) session_.show_help = !session_.show_help;
-    if (k == SDLK_F2) session_.show_hud = !session_.show_hud;
-    if (k == SDLK_TAB) session_.show_automap = !session_.show_automap;
-    if (k == SDLK_b) session_.automap.splitters = !session_.automap.splitters;
-    if (k == SDLK_t) session_.automap.things = !session_.automap.things;
-    if (k == SDLK_EQUALS || k == SDLK_PLUS || k == SDLK_KP_PLUS) session_.automap.scale = std::min(8.0, session_.automap.scale * 1.25);
-    if (k == SDLK_MINUS || k == SDLK_KP_MINUS) session_.automap.scale = std::max(0.01, session_.automap.scale / 1.25);
-    if (k == SDLK_F11) {
-      const bool full = SDL_GetWindowFlags(window_) & SDL_WINDOW_FULLSCREEN_DESKTOP;
-      SDL_SetWindowFullscreen(window_, full ? 0 : SDL_WINDOW_FULLSCREEN_DESKTOP);
-    }
-    if (k == SDLK_F12) {
-      const auto path = screenshot_path();
-      try {
-        image::save_png(frame_, path);
-        session_.say("saved " + path.string());
-      } catch (const std::exception& e) {
-        session_.say(e.what());
-      }
-    }
-    if (k >= SDLK_F5 && k <= SDLK_F9) session_.select_renderer(key_renderers()[size_t(k - SDLK_F5)]);
-    if (k >= SDLK_1 && k <= SDLK_7) weapon_key_ = int(k - SDLK_0);
+  // The mouse turns the player while it plays; menus and pages free it.
+  void follow_mouse() {
+    const bool want = front_.playing() && !front_.waiting() && !o_.play && !autopilot_;
+    if (want != bool(SDL_GetRelativeMouseMode())) SDL_SetRelativeMouseMode(want ? SDL_TRUE : SDL_FALSE);
   }
 
   void run_tic() {
-    play::DemoTic cmd;
-    if (o_.play) {
+    if (o_.play && front_.in_level()) {
       if (played_ >= o_.play->tics.size()) {
         running_ = false;
         return;
       }
-      cmd = o_.play->tics[played_++];
-    } else if (autopilot_) {
-      cmd = {autopilot_->next(session_.pose().pos, session_.pose().angle), 0};
+      front_.tic(o_.play->tics[played_++]);
+    } else if (autopilot_ && front_.in_level()) {
+      const Session& s = *front_.session();
+      front_.tic({autopilot_->next(s.pose().pos, s.pose().angle), 0});
       if (autopilot_->done()) running_ = false;
     } else {
-      Controls c = read_controls(mouse_dx_);
-      c.cheats = std::exchange(cheats_typed_, 0);
-      c.weapon = std::exchange(weapon_key_, 0);
-      mouse_dx_ = 0;
-      turn_held_ = c.turn_left || c.turn_right ? turn_held_ + 1 : 0;
-      cmd = make_command(c, turn_held_, o_.input);
+      front_.tic();
     }
-    if (session_.in_intermission()) {  // the tally waits for use (Space, E) to go on
-      if ((cmd.cmd.buttons & play::kBtUse) && !use_held_) session_.enter_next_map();
-      use_held_ = cmd.cmd.buttons & play::kBtUse;
-      return;
-    }
-    use_held_ = cmd.cmd.buttons & play::kBtUse;
-    session_.tic(cmd);
-    if (session_.exited() != play::ExitKind::kNone) {
-      if (o_.play || autopilot_) running_ = false;  // a demo or a route holds one level
-      else if (!session_.start_intermission()) session_.enter_next_map();
-    }
-    if (o_.quit_after_tics && session_.tics() >= o_.quit_after_tics) running_ = false;
+    const Session* s = front_.session();
+    if (s && (o_.play || autopilot_) && s->exited() != play::ExitKind::kNone) running_ = false;  // a demo or a route holds one level
+    if (s && o_.quit_after_tics && s->tics() >= o_.quit_after_tics) running_ = false;
   }
 
-  Session& session_;
+  FrontEnd& front_;
+  Settings& settings_;
   const WindowOptions& o_;
   SDL_Window* window_ = nullptr;
   SDL_Renderer* renderer_ = nullptr;
   SDL_Texture* texture_ = nullptr;
   render::Frame frame_;
+  std::vector<uint32_t> shown_;  // the frame through gamma
+  std::string shown_title_;
   FrameTimes times_, summed_;  // shown, and being summed
   uint64_t summed_frames_ = 0;
   double summed_start_ = now_seconds();
   bool running_ = true;
-  int mouse_dx_ = 0, turn_held_ = 0;
-  Cheats cheats_;
-  uint8_t cheats_typed_ = 0;
-  int weapon_key_ = 0;
   size_t played_ = 0;
   std::optional<Autopilot> autopilot_;
   std::optional<SoundMixer> mixer_;
-  bool use_held_ = false;
   SDL_AudioDeviceID audio_ = 0;
 };
 
 }  // namespace
 
-int run_window(Session& session, const WindowOptions& options) { return Window(session, options).run(); }
+int run_window(FrontEnd& front, Settings& settings, const WindowOptions& options) {
+  return Window(front, settings, options).run();
+}
 
 }  // namespace p3d::game

@@ -1,33 +1,37 @@
-// The window: the only file that includes SDL. Events become Controls and key
-// actions; a fixed 35 Hz loop feeds the session; frames go to the screen through
-// one streaming texture.
+// The window: the only file that includes SDL. Keys become Doom's key codes for the
+// front end; a fixed 35 Hz loop runs its tics; its frames go to the screen through
+// one streaming texture, seen through Doom's gamma; its sounds to the audio device.
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <vector>
 
-#include "game/input.h"
 #include "game/autopilot.h"
-#include "game/session.h"
+#include "game/front_end.h"
+#include "game/settings.h"
 
 namespace p3d::game {
 
 struct WindowOptions {
-  int window_width = 960, window_height = 600;
   int render_width = 0, render_height = 0;  // 0: render at the window's size
-  bool fullscreen = false, vsync = true;
+  bool vsync = true;
   bool sound = true;                        // Doom's sound effects from the level's WADs
   bool map_reload = false;                  // recompile the source map when it changes on disk
   std::filesystem::path record;             // write the tics played to this demo on exit
-  std::optional<play::Demo> play;            // replay this demo, then quit
+  std::optional<play::Demo> play;           // replay this demo, then quit
   bool timedemo = false;                    // replay one tic per frame, as fast as possible (Doom's -timedemo)
   std::optional<std::vector<Waypoint>> autopilot;  // walk these waypoints, then quit
-  InputSettings input;
   uint64_t quit_after_tics = 0;             // 0: play until the window closes
+  // Keeps the settings as the menus and the window left them (main writes the file,
+  // leaving out what the command line changed for this run only).
+  std::function<void(const Settings&)> keep_settings;
+  bool wad_changed = false;  // another WAD than the settings' last one is played: kept at exit
 };
 
-// Returns the process exit status.
-int run_window(Session& session, const WindowOptions& options);
+// Runs the front end in a window on `settings` (which the menus change); returns the
+// process exit status.
+int run_window(FrontEnd& front, Settings& settings, const WindowOptions& options);
 
 }  // namespace p3d::game

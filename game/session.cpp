@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "engine/bsp/load.h"
+#include "engine/front/game_mode.h"
 #include "engine/util/doom.h"
 #include "engine/util/error.h"
 #include "game/sound_mixer.h"
@@ -19,6 +20,18 @@ play::Angle binary_angle(double degrees) {
 }
 
 play::Fixed to_fixed_units(double units) { return play::Fixed(std::llround(units * play::kFracUnit)); }
+
+// The view into its window of the frame.
+void blit_view(const render::Frame& view, render::Frame& frame, const front::ViewWindow& w) {
+  for (int y = 0; y < std::min(w.height, view.height); ++y)
+    std::copy_n(view.pixels.begin() + ptrdiff_t(y) * view.width, w.width, &frame.at(w.x, w.y + y));
+}
+
+// Doom's low detail: each pair of columns shows its left one.
+void double_columns(render::Frame& view) {
+  for (int y = 0; y < view.height; ++y)
+    for (int x = 0; x + 1 < view.width; x += 2) view.at(x + 1, y) = view.at(x, y);
+}
 
 }  // namespace
 
@@ -39,12 +52,14 @@ void Session::load(const play::Inventory* carried) {
   level_ = std::make_unique<level::Level>(std::move(opened.level));
   automap_view_.set_level(*level_);
   status_art_.reset();
+  back_screen_.reset();
   hud_font_.reset();
   weapon_art_.reset();
   palettes_.clear();
   if (source_.is_wad()) {
     const wad::Stack wads = bsp::read_wads(source_.wads);
     status_art_ = play::StatusBarArt::load(wads);
+    back_screen_ = front::BackScreen::load(wads, front::game_mode(wads) == front::GameMode::kCommercial);
     hud_font_ = play::HudFont::load(wads);
     palettes_ = wad::Art(wads).palettes();
     weapon_art_ = std::make_unique<play::WeaponArt>(wads);
@@ -88,6 +103,10 @@ std::string Session::title() const {
   return level_->title.empty() ? std::filesystem::path(name_).filename().string() : level_->title;
 }
 
+std::string Session::map_name() const {
+  return source_.is_wad() ? bsp::resolve_map_name(bsp::read_wads(source_.wads), source_.map) : std::string();
+}
+
 std::vector<std::filesystem::path> Session::files() const {
   if (source_.is_wad()) return source_.wads;
   return {source_.file};
@@ -119,13 +138,19 @@ void Session::tic(const play::DemoTic& tic) {
 void Session::after_tic() {
   advance_message();
   face_.tic(other_random_, play::face_input(player()));
-  for (const std::string& m : world_->messages()) say(m);
+  if (show_messages)
+    for (const std::string& m : world_->messages()) say(m);
   if (listening_) keep_sounds();
   pose_ = pose_now();
   if (world_->exit() != play::ExitKind::kNone) {
     recording_on_ = false;  // a demo holds one level: it ends at its exit
     say(world_->exit() == play::ExitKind::kSecret ? "secret exit" : "exit");
   }
+}
+
+void Session::idle_tic() {
+  advance_message();
+  face_.tic(other_random_, play::face_input(player()));
 }
 
 bool Session::enter_next_map() {
@@ -192,13 +217,21 @@ const render::RenderStats& Session::render(render::Frame& frame, double alpha) {
   }
   probe_.want_order = show_automap;
   const int bar = status_bar_rows(frame);
-  if (bar > 0 && (view_frame_.width != frame.width || view_frame_.height != frame.height - bar))
-    view_frame_ = render::Frame(frame.width, frame.height - bar);
-  render::Frame& view = bar > 0 ? view_frame_ : frame;  // the view above the bar, as Doom's 320x168 above its 32 rows
+  const int scale = play::ScreenPlace::scale_for(frame.width, frame.height);
+  // Doom's view window: the whole area above the bar, or smaller inside a border.
+  const front::ViewWindow window =
+      back_screen_ && !frame.keep_indices ? front::view_window(frame.width, frame.height - bar, screen_blocks, scale)
+                                          : front::ViewWindow{0, 0, frame.width, frame.height - bar};
+  const bool whole = window == front::ViewWindow{0, 0, frame.width, frame.height};
+  if (!whole && (view_frame_.width != window.width || view_frame_.height != window.height))
+    view_frame_ = render::Frame(window.width, window.height);
+  render::Frame& view = whole ? frame : view_frame_;
+  view.doom_screen_width = frame.width;  // a smaller view keeps the rules of its screen's width
   const int flash = frame.keep_indices ? 0 : flash_palette();
   if (flash) view.keep_indices = true;  // drawn in palette indices, then seen through the flash's palette
   stats_ = renderer_->render(*level_, world_->state(), camera(alpha), view, &probe_);
-  if (weapon_art_ && !show_automap) play::draw_weapon(player(), *weapon_art_, *level_, view, bar);
+  const bool full_width = window.width == frame.width;  // the weapon stands on the bar, as in Doom's 320x168
+  if (weapon_art_ && !show_automap) play::draw_weapon(player(), *weapon_art_, *level_, view, full_width ? bar : 0);
   if (flash) {
     view.keep_indices = false;
     if (view.indexed()) {
@@ -207,10 +240,15 @@ const render::RenderStats& Session::render(render::Frame& frame, double alpha) {
       view.indices.clear();
     }
   }
+  if (low_detail) double_columns(view);
+  const std::vector<uint32_t>& palette = flash ? palettes_[size_t(flash)] : level_->palette;
+  if (!whole) {
+    if (!full_width || window.height < frame.height - bar) back_screen_->draw(frame, frame.height - bar, window, scale, palette);
+    blit_view(view_frame_, frame, window);
+  }
   if (bar > 0) {
-    std::copy(view_frame_.pixels.begin(), view_frame_.pixels.end(), frame.pixels.begin());
     const play::Player& p = player();
-    status_art_->draw(p.inv.status(p.cards, face_.index()), frame, flash ? palettes_[size_t(flash)] : level_->palette);
+    status_art_->draw(p.inv.status(p.cards, face_.index()), frame, palette);
   }
   if (message_tics_ > 0 && doom_messages(frame)) {  // Doom's message line, top left, in its own font
     const int doom_scale = play::ScreenPlace::scale_for(frame.width, frame.height);
@@ -230,7 +268,7 @@ int Session::flash_palette() const {
 }
 
 int Session::status_bar_rows(const render::Frame& frame) const {
-  if (!status_art_ || !show_status_bar || frame.keep_indices) return 0;
+  if (!status_art_ || !show_status_bar || screen_blocks > 10 || frame.keep_indices) return 0;
   // Doom's bar needs Doom's screen at least: a smaller frame shows the view alone.
   if (frame.width < 320 || frame.height < 200) return 0;
   return play::StatusBarArt::height_in(frame.width, frame.height);
@@ -277,18 +315,8 @@ void Session::keep_sounds() {
 }
 
 const play::SoundClip* Session::sound_clip(play::Sound sound) {
-  if (!source_.is_wad()) return nullptr;
-  if (const auto it = clips_.find(sound); it != clips_.end()) return it->second ? &*it->second : nullptr;
-  std::optional<play::SoundClip>& clip = clips_[sound];
-  const std::string lump_name = play::sound_lump_name(sound);
-  try {
-    if (!sound_wads_) sound_wads_ = std::make_unique<wad::Stack>(bsp::read_wads(source_.wads));
-    if (const wad::Lump* lump = sound_wads_->find(lump_name))
-      clip = play::decode_dmx(lump->bytes, source_.wads.back().filename().string() + ": " + lump_name);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "game: %s (not played)\n", e.what());
-  }
-  return clip ? &*clip : nullptr;
+  if (!sound_bank_) sound_bank_ = std::make_unique<SoundBank>(source_.is_wad() ? source_.wads : std::vector<std::filesystem::path>{});
+  return sound_bank_->clip(sound);
 }
 
 play::Listener Session::listener() const { return listener_at(pose_.pos, pose_.angle); }

@@ -9,11 +9,13 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "engine/bsp/load.h"
+#include "engine/front/back_screen.h"
 #include "engine/level/level.h"
 #include "engine/play/demo.h"
 #include "engine/play/hud_font.h"
@@ -29,6 +31,7 @@
 #include "game/file_watch.h"
 #include "game/hud.h"
 #include "game/menu.h"
+#include "game/sound_bank.h"
 
 namespace p3d::game {
 
@@ -58,6 +61,9 @@ class Session {
   // The files a reload reads: the source, or the WADs.
   std::vector<std::filesystem::path> files() const;
   int skill() const { return skill_; }
+  const bsp::LevelSource& source() const { return source_; }
+  // The WAD map played ("MAP01", "E1M1"), or empty for a level that is no WAD's map.
+  std::string map_name() const;
   const GameFlags& flags() const { return flags_; }
 
   // ---- simulation
@@ -67,6 +73,9 @@ class Session {
   void tic(const play::DemoTic& tic);
   void tic(const play::TicCmd& cmd) { tic(play::DemoTic{cmd, 0}); }
   play::ExitKind exited() const { return world_->exit(); }
+  // A tic in which the world waits (a menu open, or paused): what Doom's status bar
+  // and message line do every tic still happens (the face glances, messages fade).
+  void idle_tic();
   // Loads the map the exit leads to in Doom's order, the player at its start with what
   // it carried (Doom's G_PlayerFinishLevel). When there is none (a hand-made level, the
   // end of an episode or game, a map missing from the WADs), starts this level again
@@ -135,11 +144,18 @@ class Session {
   // ---- what the keys toggle
   bool show_automap = false, show_hud = false, show_help = false;
   bool show_status_bar = true;  // Doom's, along the bottom, on levels whose WADs have its art
+  int screen_blocks = 10;       // Doom's screen size: 3..9 a smaller view in a border, 11 no status bar
+  bool low_detail = false;      // Doom's low detail: columns twice as wide (each pair shows its left one)
+  bool show_messages = true;    // the rules' messages (pickups...); say() always shows
   AutomapSettings automap;
   Menu menu;
   double fov = 90;
   void say(const std::string& text);  // a message shown on screen for a few seconds
   void advance_message();             // once per tic
+
+  // ---- saved games (Doom's format: engine/play/savegame.h)
+  std::vector<uint8_t> save_game(const std::string& description) const;
+  void load_game(std::span<const uint8_t> bytes, const std::string& what);
 
   // ---- demos and reloading
   // Records every tic from now. With doom_turns, turns are rounded as a Doom demo
@@ -194,11 +210,11 @@ class Session {
   std::vector<std::vector<uint32_t>> palettes_;  // PLAYPAL's, for the flashes
   play::Face face_;
   play::Random other_random_;  // Doom's M_Random: the face's glances, never the play
-  render::Frame view_frame_;   // the 3D view above the status bar
+  render::Frame view_frame_;   // the 3D view, when it is not the whole frame
+  std::optional<front::BackScreen> back_screen_;  // around a smaller view
   std::vector<PlacedSound> sounds_;
   bool listening_ = false;
-  std::unique_ptr<wad::Stack> sound_wads_;
-  std::map<play::Sound, std::optional<play::SoundClip>> clips_;
+  std::unique_ptr<SoundBank> sound_bank_;
   bool recording_on_ = false, doom_turns_ = false;
   play::Demo recording_;
   std::optional<FileWatch> watch_;

@@ -32,7 +32,7 @@ std::optional<play::Heard> SoundMixer::place(const Voice& v, const play::Listene
 bool SoundMixer::start(play::Sound sound, uint64_t origin, std::optional<geom::Vec2> at,
                        const play::Listener& listener) {
   const play::SoundInfo& info = play::kSounds[size_t(sound)];
-  const int volume = play::linked_volume(sound);
+  const int volume = play::linked_volume(sound, volume_);
   if (volume < 1) return false;
   const play::SoundClip* clip = clips_(info.link != play::Sound::kNone ? info.link : sound);
   if (!clip || clip->samples.empty()) return false;

@@ -4,6 +4,7 @@
 // mixed at the output rate. No SDL here: the window's audio device pulls samples.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -35,6 +36,10 @@ class SoundMixer {
   // it first clears.
   void mix(std::span<int16_t> stereo);
 
+  // Doom's sound effects volume (snd_SfxVolume, 0..127: the menu's 0..15 times 8),
+  // for the sounds started from now on.
+  void set_volume(int volume) { volume_ = std::clamp(volume, 0, play::kMaxVolume); }
+
   int playing() const;  // busy channels
   const play::Channels& channels() const { return channels_; }
 
@@ -50,6 +55,7 @@ class SoundMixer {
   std::optional<play::Heard> place(const Voice& v, const play::Listener& listener) const;
 
   int rate_;
+  int volume_ = play::kMaxVolume;
   Clips clips_;
   play::Channels channels_;
   std::array<Voice, play::Channels::kCount> voices_{};

@@ -8,8 +8,28 @@ namespace p3d::play {
 
 namespace {
 
-// Doom's messages the rules say, by their BEX mnemonic (Doom's d_englsh.h).
+// Doom's texts by their BEX mnemonic (Doom's d_englsh.h): what the menus ask, then
+// the messages the rules say.
 constexpr std::pair<const char*, const char*> kMessages[] = {
+    {"QUITMSG", "are you sure you want to\nquit this great game?"},
+    {"QSAVESPOT", "you haven't picked a quicksave slot yet!\n\npress a key."},
+    {"SAVEDEAD", "you can't save if you aren't playing!\n\npress a key."},
+    {"QSPROMPT", "quicksave over your game named\n\n'%s'?\n\npress y or n."},
+    {"QLPROMPT", "do you want to quickload the game named\n\n'%s'?\n\npress y or n."},
+    {"NIGHTMARE", "are you sure? this skill level\nisn't even remotely fair.\n\npress y or n."},
+    {"SWSTRING", "this is the shareware version of doom.\n\nyou need to order the entire trilogy.\n\npress a key."},
+    {"MSGOFF", "Messages OFF"},
+    {"MSGON", "Messages ON"},
+    {"ENDGAME", "are you sure you want to end the game?\n\npress y or n."},
+    {"DETAILHI", "High detail"},
+    {"DETAILLO", "Low detail"},
+    {"GAMMALVL0", "Gamma correction OFF"},
+    {"GAMMALVL1", "Gamma correction level 1"},
+    {"GAMMALVL2", "Gamma correction level 2"},
+    {"GAMMALVL3", "Gamma correction level 3"},
+    {"GAMMALVL4", "Gamma correction level 4"},
+    {"EMPTYSTRING", "empty slot"},
+    {"GGSAVED", "game saved."},
     {"GOTARMOR", "Picked up the armor."},
     {"GOTMEGA", "Picked up the MegaArmor!"},
     {"GOTHTHBONUS", "Picked up a health bonus."},
@@ -81,6 +101,12 @@ std::string unescape(std::string_view s) {
 }
 
 }  // namespace
+
+std::string english_text(std::string_view mnemonic) {
+  for (const auto& [name, english] : kMessages)
+    if (mnemonic == name) return english;
+  return std::string(mnemonic);
+}
 
 std::map<std::string, std::string> parse_dehacked_texts(std::string_view text) {
   std::map<std::string, std::string> by_mnemonic;

@@ -18,6 +18,10 @@ std::map<std::string, std::string> dehacked_texts(const wad::Stack& wads);
 // The same from a DEHACKED lump's text.
 std::map<std::string, std::string> parse_dehacked_texts(std::string_view text);
 
+// Doom's own English for a BEX mnemonic ("NIGHTMARE", "GOTARMOR"...), the key of
+// dehacked_texts' map; the mnemonic itself if Doom has no such text.
+std::string english_text(std::string_view mnemonic);
+
 // The par times the WAD's DEHACKED sets (BEX [PARS]: `par E M seconds` for Doom's
 // ExMy, `par M seconds` for Doom II's MAPxx), by (episode, map), episode 0 for MAPxx.
 std::map<std::pair<int, int>, int> dehacked_pars(const wad::Stack& wads);

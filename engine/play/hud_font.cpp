@@ -29,16 +29,30 @@ std::optional<HudFont> HudFont::load(const wad::Stack& wads) {
   return font;
 }
 
+const wad::IndexedImage* HudFont::glyph(char raw) const {
+  const char c = char(std::toupper(static_cast<unsigned char>(raw)));
+  if (c < kFirst || c > kLast || !glyphs_[size_t(c - kFirst)]) return nullptr;
+  return &*glyphs_[size_t(c - kFirst)];
+}
+
+int HudFont::width(const std::string& text) const {
+  int w = 0;
+  for (char c : text) {
+    const wad::IndexedImage* g = glyph(c);
+    w += g ? g->width : kSpaceWidth;
+  }
+  return w;
+}
+
 int HudFont::draw(image::Image& frame, const std::string& text, int x, int y, int scale, int left, int top,
                   const std::vector<uint32_t>& palette) const {
-  for (char raw : text) {
-    const char c = char(std::toupper(static_cast<unsigned char>(raw)));
-    const std::optional<wad::IndexedImage>* glyph = c >= kFirst && c <= kLast ? &glyphs_[size_t(c - kFirst)] : nullptr;
-    if (!glyph || !*glyph) {
+  for (char c : text) {
+    const wad::IndexedImage* letter = glyph(c);
+    if (!letter) {
       x += kSpaceWidth;
       continue;
     }
-    const wad::IndexedImage& g = **glyph;
+    const wad::IndexedImage& g = *letter;
     if (x + g.width > kScreenWidth) break;  // Doom stops at the screen's edge
     draw_picture(frame, g, x, y, {scale, left, top}, palette);
     x += g.width;

@@ -23,6 +23,12 @@ class HudFont {
   int draw(image::Image& frame, const std::string& text, int x, int y, int scale, int left, int top,
            const std::vector<uint32_t>& palette) const;
   int height() const { return height_; }
+  // A letter's picture ('!' to '_', lower case as upper), or nullptr: drawn as a space.
+  const wad::IndexedImage* glyph(char c) const;
+  // Doom's M_StringWidth: the letters' widths, 4 for a space or unknown letter.
+  int width(const std::string& text) const;
+  // Doom's line height for menus and their messages: its first letter's ('!').
+  int first_height() const { return glyphs_[0] ? glyphs_[0]->height : height_; }
 
  private:
   static constexpr char kFirst = '!', kLast = '_';

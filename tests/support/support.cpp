@@ -1,8 +1,10 @@
 #include "tests/support/support.h"
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
+#include <filesystem>
 #include <cstdio>
 
 namespace p3d::test {
@@ -49,7 +51,10 @@ std::filesystem::path temp_dir(const std::string& name) {
 
 int run(const std::string& command, std::string& output) {
   output.clear();
-  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+  // The programs keep settings and saves under the XDG directories: the tests' own.
+  static const std::string xdg = (std::filesystem::temp_directory_path() / ("p3d-test-xdg-" + std::to_string(::getpid()))).string();
+  const std::string isolated = "export XDG_CONFIG_HOME='" + xdg + "/config' XDG_DATA_HOME='" + xdg + "/data'; " + command;
+  FILE* pipe = ::popen((isolated + " 2>&1").c_str(), "r");
   if (!pipe) return -1;
   std::array<char, 4096> buffer;
   size_t n;

@@ -1,0 +1,472 @@
+#include "game/front_end.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+
+#include "engine/front/gamma.h"
+#include "engine/front/keys.h"
+#include "engine/front/texts.h"
+#include "engine/play/dehacked.h"
+#include "engine/util/error.h"
+#include "engine/util/file.h"
+#include "engine/wad/art.h"
+
+namespace p3d::game {
+
+namespace {
+
+constexpr int kQuitSoundTics = 53;  // Doom waits 105 VBLs (1.5 s) for the quit sound
+
+// The description at the start of a save file (Doom's M_ReadSaveStrings reads its
+// first 24 bytes), or nullopt when the file is missing or shorter.
+std::optional<std::string> slot_description(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
+  try {
+    const std::vector<uint8_t> bytes = read_file_bytes(path);
+    if (bytes.size() < size_t(front::kSaveStringSize)) return std::nullopt;
+    std::string text(bytes.begin(), bytes.begin() + front::kSaveStringSize);
+    return text.substr(0, text.find('\0'));
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+// Doom's music for a map (S_Start) and for the tally. TODO(music): the music room's.
+std::string map_music(const std::string& map, bool commercial) {
+  (void)map, (void)commercial;
+  return "";
+}
+std::string intermission_music(bool commercial) { return commercial ? "D_DM2INT" : "D_INTER"; }
+
+}  // namespace
+
+FrontEnd::FrontEnd(const bsp::LevelSource& wads, Settings& settings, FrontEndOptions options)
+    : settings_(settings), options_(std::move(options)) {
+  start(wads);
+  if (!start_title()) new_game(1, 1, level::kDefaultSkill);  // no title art: straight into the first map
+}
+
+FrontEnd::FrontEnd(std::unique_ptr<Session> session, Settings& settings, FrontEndOptions options)
+    : settings_(settings), options_(std::move(options)), session_(std::move(session)) {
+  if (session_->source().is_wad()) {
+    start(session_->source());
+    wads_->map.clear();
+  }
+  state_ = State::kLevel;
+  user_game_ = !options_.watching;
+  apply_settings();
+  level_music();
+}
+
+FrontEnd::~FrontEnd() = default;
+
+// The WADs' art, palette, sounds and texts, and Doom's menus on them.
+void FrontEnd::start(const bsp::LevelSource& wads) {
+  wads_ = wads;
+  stack_ = std::make_unique<wad::Stack>(bsp::read_wads(wads.wads));
+  art_ = std::make_unique<front::MenuArt>(*stack_);
+  sounds_ = std::make_unique<SoundBank>(wads.wads);
+  const wad::Art art(*stack_);
+  if (!art.palettes().empty()) palette_ = art.palettes().front();
+  mode_ = front::game_mode(*stack_);
+  if (!has_menus() || palette_.empty()) return;
+  auto texts = std::make_shared<std::map<std::string, std::string>>(play::dehacked_texts(*stack_));
+  menu_.emplace(mode_, settings_.menu, [this] { return read_slots(); },
+                [texts](const std::string& english) {
+                  const auto it = texts->find(english);
+                  return it != texts->end() ? it->second : english;
+                });
+  menu_->text_width = [this](const std::string& s) { return art_->text_width(s); };
+  loop_.emplace(mode_);
+}
+
+bool FrontEnd::playing() const { return state_ == State::kLevel && session_ && user_game_; }
+
+bool FrontEnd::waiting() const { return paused_ || (menu_active() && playing()); }
+
+front::MenuContext FrontEnd::menu_context() const {
+  front::MenuContext c;
+  c.mode = mode_;
+  c.user_game = user_game_;
+  c.in_level = state_ == State::kLevel && session_ && !session_->in_intermission();
+  c.automap = session_ && session_->show_automap;
+  c.game_tic = game_tic_;
+  return c;
+}
+
+// ---- the title loop (D_StartTitle, D_DoAdvanceDemo, D_PageTicker)
+
+bool FrontEnd::start_title() {
+  if (!loop_) return false;
+  loop_->restart();
+  user_game_ = paused_ = false;
+  advance_demo();
+  return true;
+}
+
+void FrontEnd::advance_demo() {
+  for (int tries = 0; tries < 7; ++tries) {
+    const front::DemoStep step = loop_->advance();
+    if (step.kind == front::DemoStep::Kind::kDemo) {
+      if (start_demo(step.lump)) return;
+      continue;  // a demo the WADs lack or we cannot play: on to the next step
+    }
+    state_ = State::kPage;
+    session_.reset();
+    page_ = step.lump;
+    page_tics_ = step.tics;
+    if (!step.music.empty()) play_music(step.music, false);
+    return;
+  }
+}
+
+// Doom's G_DoPlayDemo in the title loop: the demo's game, its console player's tics.
+bool FrontEnd::start_demo(const std::string& lump) {
+  const wad::Lump* found = stack_->find(lump);
+  if (!found) return false;
+  try {
+    const play::DoomDemo d = play::decode_doom_demo(found->bytes, lump);
+    if (d.deathmatch || d.player_count() != 1) return false;  // not played here: one player only
+    bsp::LevelSource source = *wads_;
+    source.map = d.map_name(mode_ == front::GameMode::kCommercial);
+    GameFlags flags{d.fast, d.respawn, d.no_monsters};
+    auto session = std::make_unique<Session>(source, d.skill, flags);
+    demo_ = play::demo_from_doom(d, session->level()).tics;
+    session_ = std::move(session);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "game: %s: not played in the title loop (%s)\n", lump.c_str(), e.what());
+    return false;
+  }
+  demo_tic_ = 0;
+  state_ = State::kDemo;
+  apply_settings();
+  level_music();
+  return true;
+}
+
+// ---- games, saves and loads
+
+void FrontEnd::new_game(int episode, int map, int skill) {
+  char name[16];
+  if (mode_ == front::GameMode::kCommercial)
+    std::snprintf(name, sizeof name, "MAP%02d", map);
+  else
+    std::snprintf(name, sizeof name, "E%dM%d", episode, map);
+  bsp::LevelSource source = *wads_;
+  source.map = name;
+  try {
+    session_ = std::make_unique<Session>(source, skill, options_.flags);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "game: cannot start %s: %s\n", name, e.what());
+    if (!start_title()) quit_ = true;
+    return;
+  }
+  state_ = State::kLevel;
+  user_game_ = true;
+  paused_ = false;
+  apply_settings();
+  if (!settings_.renderer.empty()) session_->select_renderer(settings_.renderer, false);
+  level_music();
+}
+
+std::filesystem::path FrontEnd::slot_path(int slot) const {
+  return options_.save_dir / ("doomsav" + std::to_string(slot) + ".dsg");
+}
+
+std::array<std::optional<std::string>, front::kSaveSlots> FrontEnd::read_slots() const {
+  std::array<std::optional<std::string>, front::kSaveSlots> slots;
+  if (options_.save_dir.empty()) return slots;
+  for (int i = 0; i < front::kSaveSlots; ++i) slots[size_t(i)] = slot_description(slot_path(i));
+  return slots;
+}
+
+bool FrontEnd::save_slot(int slot, const std::string& description) {
+  if (!session_ || options_.save_dir.empty()) return false;
+  try {
+    const std::vector<uint8_t> bytes = session_->save_game(description);
+    std::filesystem::create_directories(options_.save_dir);
+    write_file_atomically(slot_path(slot), bytes);
+  } catch (const std::exception& e) {
+    say(std::string("not saved: ") + e.what());
+    std::fprintf(stderr, "game: not saved: %s\n", e.what());
+    return false;
+  }
+  say(menu_ ? menu_->doom_text(front::kGameSaved) : "game saved.");
+  return true;
+}
+
+bool FrontEnd::load_slot(int slot) {
+  const std::filesystem::path path = slot_path(slot);
+  try {
+    const std::vector<uint8_t> bytes = read_file_bytes(path);
+    if (!session_) {  // from the title loop: a game on any map, which the save replaces
+      bsp::LevelSource source = *wads_;
+      session_ = std::make_unique<Session>(source, level::kDefaultSkill, options_.flags);
+    }
+    session_->load_game(bytes, path.string());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "game: not loaded: %s\n", e.what());
+    if (session_ && state_ == State::kLevel && user_game_) {
+      say(std::string("not loaded: ") + e.what());
+    } else if (!start_title()) {
+      quit_ = true;
+    }
+    return false;
+  }
+  state_ = State::kLevel;
+  user_game_ = true;
+  paused_ = false;
+  apply_settings();
+  level_music();
+  return true;
+}
+
+// ---- keys
+
+void FrontEnd::key_down(int key) {
+  held_.insert(key);
+  if (menu_) {
+    const int ch = key > ' ' && key < 0x7f ? key : 0;
+    const bool taken = menu_->key(key, ch, menu_context());
+    for (const front::MenuRequest& r : menu_->take_requests()) carry_out(r);
+    for (play::Sound s : menu_->take_sounds()) menu_sounds_.push_back({s, 0, std::nullopt});
+    if (taken) return;
+  } else if (text_menu_.is_open()) {
+    text_menu_key(key);
+    return;
+  } else if (key == front::kKeyEscape) {
+    text_menu_.open();
+    return;
+  }
+  if (state_ != State::kLevel || options_.watching) {  // any other key pops up the menu in demos
+    if (menu_) menu_->open();
+    return;
+  }
+  if (key == front::kKeyPause) {
+    paused_ = !paused_;
+    return;
+  }
+  game_key(key);
+}
+
+void FrontEnd::key_up(int key) { held_.erase(key); }
+
+void FrontEnd::text_menu_key(int key) {
+  if (key == front::kKeyEscape) text_menu_.close();
+  if (key == front::kKeyUp || key == 'w') text_menu_.up();
+  if (key == front::kKeyDown || key == 's') text_menu_.down();
+  if (key == front::kKeyF10) quit_ = true;
+  if (key != front::kKeyEnter && key != front::kKeySpace) return;
+  switch (text_menu_.selected()) {
+    case Menu::Item::kResume: text_menu_.close(); break;
+    case Menu::Item::kKeys:
+      if (session_) session_->show_help = !session_->show_help;
+      break;
+    case Menu::Item::kQuit: quit_ = true; break;
+  }
+}
+
+// Keys in a level that Doom's menus did not take: the map's, the weapons, typed
+// cheats, and our own (renderers, the heads-up text, screenshots).
+void FrontEnd::game_key(int key) {
+  Session& s = *session_;
+  if (key >= 'a' && key <= 'z') cheats_typed_ |= cheats_.type(char(key));
+  if (key >= '1' && key <= '7') weapon_key_ = key - '0';
+  if (std::find(settings_.keys[size_t(Action::kAutomap)].begin(), settings_.keys[size_t(Action::kAutomap)].end(), key) !=
+      settings_.keys[size_t(Action::kAutomap)].end())
+    s.show_automap = !s.show_automap;
+  if (s.show_automap) {
+    if (key == 'o') s.automap.overlay = !s.automap.overlay;
+    if (key == 'b') s.automap.splitters = !s.automap.splitters;
+    if (key == 't') s.automap.things = !s.automap.things;
+    if (key == front::kKeyEquals) s.automap.scale = std::min(8.0, s.automap.scale * 1.25);
+    if (key == front::kKeyMinus) s.automap.scale = std::max(0.01, s.automap.scale / 1.25);
+  }
+  if (key == '`') s.show_hud = !s.show_hud;
+  if (key == front::kKeyF1 && !menu_) s.show_help = !s.show_help;  // Doom's menus have their own help
+  if (key == front::kKeyF12 || key == front::kKeyPrintScreen) screenshot_ = true;
+  if (key == '[' || key == ']') {  // the renderers, round and round
+    const auto& names = key_renderers();
+    const auto at = std::find(names.begin(), names.end(), s.renderer_name());
+    const size_t i = at == names.end() ? 0 : size_t(at - names.begin());
+    const size_t next = (i + (key == ']' ? 1 : names.size() - 1)) % names.size();
+    if (s.select_renderer(names[next])) {
+      settings_.renderer = names[next];
+      settings_changed_ = true;
+    }
+  }
+}
+
+void FrontEnd::mouse_motion(int dx) { mouse_dx_ += dx; }
+void FrontEnd::mouse_button(int button, bool down) {
+  if (button == 1) mouse_fire_ = down;
+}
+
+void FrontEnd::carry_out(const front::MenuRequest& r) {
+  using Kind = front::MenuRequest::Kind;
+  switch (r.kind) {
+    case Kind::kNewGame: new_game(r.episode, 1, r.skill); break;
+    case Kind::kLoadGame: load_slot(r.slot); break;
+    case Kind::kSaveGame: save_slot(r.slot, r.text); break;
+    case Kind::kEndGame: start_title(); break;
+    case Kind::kQuit:
+      quit_ = true;
+      quit_delay_ = kQuitSoundTics;
+      break;
+    case Kind::kMessage: say(r.text); break;
+    case Kind::kScreenshot: screenshot_ = true; break;
+    case Kind::kSettings:
+      apply_settings();
+      settings_changed_ = true;
+      break;
+  }
+}
+
+void FrontEnd::say(const std::string& text) {
+  if (session_) session_->say(text);
+}
+
+void FrontEnd::apply_settings() {
+  if (!session_) return;
+  session_->screen_blocks = settings_.menu.screen_blocks;
+  session_->low_detail = settings_.menu.low_detail;
+  session_->show_messages = settings_.menu.show_messages;
+}
+
+// ---- tics
+
+play::DemoTic FrontEnd::command_from_keys() {
+  auto held = [&](Action a) {
+    for (int k : settings_.keys[size_t(a)])
+      if (held_.count(k)) return true;
+    return false;
+  };
+  Controls c;
+  c.forward = held(Action::kForward);
+  c.back = held(Action::kBack);
+  c.turn_left = held(Action::kTurnLeft);
+  c.turn_right = held(Action::kTurnRight);
+  c.strafe_left = held(Action::kStrafeLeft);
+  c.strafe_right = held(Action::kStrafeRight);
+  c.use = held(Action::kUse);
+  c.attack = held(Action::kFire) || mouse_fire_;
+  c.strafe_modifier = held(Action::kStrafe);
+  c.run = held(Action::kRun);
+  c.mouse_dx = std::exchange(mouse_dx_, 0);
+  c.cheats = std::exchange(cheats_typed_, 0);
+  c.weapon = std::exchange(weapon_key_, 0);
+  turn_held_ = c.turn_left || c.turn_right ? turn_held_ + 1 : 0;
+  InputSettings input;
+  input.mouse_sensitivity =
+      options_.mouse_turn > 0 ? options_.mouse_turn : mouse_turn_per_pixel(settings_.menu.mouse_sensitivity);
+  return make_command(c, turn_held_, input);
+}
+
+void FrontEnd::tic() { tic(command_from_keys()); }
+
+void FrontEnd::tic(const play::DemoTic& player) {
+  ++game_tic_;
+  if (menu_) menu_->tic();
+  if (quit_ && quit_delay_ > 0) --quit_delay_;
+  switch (state_) {
+    case State::kPage:
+      if (--page_tics_ < 0) advance_demo();
+      break;
+    case State::kDemo:
+      if (demo_tic_ >= demo_.size() || session_->exited() != play::ExitKind::kNone) {
+        advance_demo();
+        break;
+      }
+      session_->tic(demo_[demo_tic_++]);
+      break;
+    case State::kLevel: level_tic(player); break;
+  }
+}
+
+// Doom's G_Ticker for the player's game: the world waits while paused or while the
+// menu is open; the tally waits for use or fire; an exit leads to the tally, then
+// the next map, or back to the title after the last.
+void FrontEnd::level_tic(const play::DemoTic& player) {
+  if (!session_) return;
+  Session& s = *session_;
+  const bool pressed = player.cmd.buttons & (play::kBtUse | play::kBtAttack);
+  const bool newly = pressed && !use_held_;
+  use_held_ = pressed;
+  if (s.in_intermission()) {
+    if (newly) next_map();
+    return;
+  }
+  if (waiting()) {
+    s.idle_tic();
+    return;
+  }
+  s.tic(player);
+  if (s.exited() == play::ExitKind::kNone || !user_game_) return;
+  if (s.start_intermission()) {
+    play_music(intermission_music(mode_ == front::GameMode::kCommercial), true);
+  } else {
+    next_map();
+  }
+}
+
+void FrontEnd::next_map() {
+  if (session_->enter_next_map()) {
+    apply_settings();
+    level_music();
+  } else if (loop_) {
+    start_title();  // the end of the episode or the game
+  }
+}
+
+// ---- music
+
+void FrontEnd::play_music(const std::string& lump, bool loop) { music_ = {lump, loop, music_.serial + 1}; }
+
+void FrontEnd::level_music() {
+  if (!session_ || !stack_) return;
+  const std::string lump = map_music(session_->map_name(), mode_ == front::GameMode::kCommercial);
+  if (!lump.empty()) play_music(lump, true);
+}
+
+// ---- the screen
+
+std::vector<Session::PlacedSound> FrontEnd::take_sounds() {
+  std::vector<Session::PlacedSound> out = std::exchange(menu_sounds_, {});
+  if (session_) {
+    std::vector<Session::PlacedSound> game = session_->take_sounds();
+    out.insert(out.end(), game.begin(), game.end());
+  }
+  return out;
+}
+
+void FrontEnd::draw(render::Frame& frame, double alpha, const FrameTimes& times) {
+  if (state_ == State::kPage) {
+    std::fill(frame.pixels.begin(), frame.pixels.end(), palette_.empty() ? 0xFF000000u : palette_[0]);
+    art_->draw_page(page_, frame, palette_);
+  } else if (session_) {
+    session_->render(frame, alpha);
+    session_->draw_overlays(frame, times, alpha);
+  }
+  if (!menu_) {
+    if (text_menu_.is_open()) draw_text_menu(frame);
+    return;
+  }
+  if (paused_ && state_ == State::kLevel) {
+    // M_PAUSE across the view window's top, in Doom's screen (at the top with the map).
+    const int blocks = std::min(settings_.menu.screen_blocks, 10);
+    const int width = blocks * 32, height = (blocks * 168 / 10) & ~7;
+    const bool automap = session_ && session_->show_automap;
+    art_->draw_pause((play::kScreenWidth - width) / 2, width, automap ? 0 : (168 - height) / 2, frame, palette_);
+  }
+  art_->draw(*menu_, frame, palette_);
+}
+
+void FrontEnd::draw_text_menu(render::Frame& frame) const {
+  const int scale = frame.width >= 1280 ? 2 : 1;
+  const auto lines = text_menu_.lines();
+  draw_panel(frame, frame.width / 2 - 60 * scale, frame.height / 2 - int(lines.size()) * 4 * scale, lines, scale);
+}
+
+}  // namespace p3d::game

@@ -1,0 +1,221 @@
+// Doom's front end on Freedoom: the title loop, the menus driving games, the world
+// waiting under them, key scripts, the screens beside Chocolate Doom's, and the
+// settings file.
+#include "game/front_end.h"
+
+#include <gtest/gtest.h>
+
+#include "engine/front/keys.h"
+#include "engine/image/image.h"
+#include "engine/util/error.h"
+#include "engine/util/file.h"
+#include "game/key_script.h"
+#include "game/settings.h"
+#include "tests/support/support.h"
+
+namespace p3d::game {
+namespace {
+
+bsp::LevelSource freedoom2() { return {{}, {test::freedoom_path("freedoom2.wad")}, ""}; }
+
+void press(FrontEnd& f, int key) {
+  f.key_down(key);
+  f.key_up(key);
+}
+
+TEST(FrontEnd, TheTitleLoopShowsThePageThenADemoAndAnyKeyOpensTheMenu) {
+  Settings settings;
+  FrontEnd f(freedoom2(), settings, {});
+  EXPECT_FALSE(f.session()) << "TITLEPIC first";
+  EXPECT_EQ(f.music().lump, "D_DM2TTL");
+  EXPECT_FALSE(f.music().loop) << "Doom plays the title music once";
+  for (int t = 0; t < 11 * 35 + 1; ++t) f.tic();
+  ASSERT_TRUE(f.session()) << "DEMO1 after eleven seconds";
+  EXPECT_FALSE(f.playing()) << "a demo is watched, not played";
+  EXPECT_EQ(f.session()->map_name(), "MAP15") << "freedoom2's DEMO1";
+  const uint64_t before = f.session()->tics();
+  f.tic();
+  EXPECT_EQ(f.session()->tics(), before + 1);
+  press(f, 'x');
+  EXPECT_TRUE(f.menu_active()) << "any key opens the menu over a demo";
+  f.tic();
+  EXPECT_EQ(f.session()->tics(), before + 2) << "the demo plays on under the menu, as in Doom";
+}
+
+TEST(FrontEnd, NewGameFromTheMenuThenTheWorldWaitsUnderIt) {
+  Settings settings;
+  FrontEnd f(freedoom2(), settings, {});
+  press(f, front::kKeyEscape);
+  press(f, front::kKeyEnter);  // New Game
+  press(f, front::kKeyDown);   // Ultra-Violence
+  press(f, front::kKeyEnter);
+  ASSERT_TRUE(f.playing());
+  EXPECT_EQ(f.session()->map_name(), "MAP01");
+  EXPECT_EQ(f.session()->skill(), 4);
+  EXPECT_EQ(f.session()->screen_blocks, 9) << "Doom's default screen size";
+  f.key_down('w');
+  for (int t = 0; t < 10; ++t) f.tic();
+  f.key_up('w');
+  EXPECT_EQ(f.session()->tics(), 10u);
+  const double x = f.session()->pose().pos.x, y = f.session()->pose().pos.y;
+  EXPECT_NE(std::make_pair(x, y), std::make_pair(f.session()->level().player_start.x, f.session()->level().player_start.y))
+      << "W walked";
+  press(f, front::kKeyEscape);
+  ASSERT_TRUE(f.waiting());
+  for (int t = 0; t < 5; ++t) f.tic();
+  EXPECT_EQ(f.session()->tics(), 10u) << "the menu stops the world";
+  press(f, front::kKeyEscape);
+  press(f, front::kKeyPause);
+  f.tic();
+  EXPECT_EQ(f.session()->tics(), 10u) << "and so does Pause";
+  press(f, front::kKeyPause);
+  f.tic();
+  EXPECT_EQ(f.session()->tics(), 11u);
+}
+
+TEST(FrontEnd, EndGameGoesBackToTheTitleAndQuitWaitsForItsSound) {
+  Settings settings;
+  FrontEnd f(freedoom2(), settings, {});
+  f.new_game(1, 1, 3);
+  press(f, front::kKeyF7);
+  press(f, 'y');
+  EXPECT_FALSE(f.session()) << "back on the title page";
+  EXPECT_EQ(f.music().lump, "D_DM2TTL");
+  press(f, front::kKeyF10);
+  press(f, 'y');
+  EXPECT_FALSE(f.quit_requested()) << "the quit sound plays first";
+  int tics = 0;
+  while (!f.quit_requested() && tics < 100) f.tic(), ++tics;
+  EXPECT_EQ(tics, 53) << "Doom's 105 VBLs";
+}
+
+TEST(FrontEnd, MenuSoundsAndMusicAreLoggedByAKeyScript) {
+  Settings settings;
+  FrontEnd f(freedoom2(), settings, {});
+  const auto steps = parse_key_script("3 key escape\n5 key down\n8 key enter\n10 end\n", "s");
+  const std::filesystem::path out = test::temp_dir("front_end_log");
+  const ScriptResult r = run_key_script(f, steps, out, 320, 200);
+  EXPECT_EQ(r.tics, 10u);
+  EXPECT_NE(r.log.find("4 sound SWTCHN"), std::string::npos) << r.log;
+  EXPECT_NE(r.log.find("6 sound PSTOP"), std::string::npos) << r.log;
+  EXPECT_NE(r.log.find("9 sound PISTOL"), std::string::npos) << r.log;
+}
+
+TEST(KeyScript, BadStepsNameTheirLine) {
+  auto message = [](const std::string& text) {
+    try {
+      parse_key_script(text, "s.txt");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("1 key escape\nx key enter\n"), "s.txt:2: 'x' is not a tic number");
+  EXPECT_EQ(message("5 key escape\n3 key enter\n"), "s.txt:2: tic 3 comes before the last step's");
+  EXPECT_EQ(message("1 key nokey\n"), "s.txt:1: unknown key 'nokey'");
+  EXPECT_EQ(message("1 jump\n"), "s.txt:1: unknown step 'jump' (key, hold, release, type, shot or end)");
+  EXPECT_EQ(message("1 shot ../x.png\n"), "s.txt:1: a shot needs a plain file name (no directory)");
+  EXPECT_EQ(message("# only a comment\n\n"), "no error");
+}
+
+// Our screens beside Chocolate Doom's own screenshots (320x200, taken by
+// tools/peer_menus.sh): Doom's menus from the WAD's pictures, its font, its smaller
+// view in a border with the status bar.
+double equal_share(const image::Image& a, const image::Image& b) {
+  EXPECT_EQ(a.width, b.width);
+  EXPECT_EQ(a.height, b.height);
+  if (a.pixels.size() != b.pixels.size()) return 0;
+  size_t equal = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) equal += a.pixels[i] == b.pixels[i];
+  return double(equal) / double(a.pixels.size());
+}
+
+TEST(FrontEnd, ScreensAreChocolateDoomsPixels) {
+  Settings settings;
+  FrontEnd f(freedoom2(), settings, {});
+  // Chocolate's skull was lit (M_SKULL1) in these shots; ours is drawn at both phases.
+  const auto steps = parse_key_script(
+      "14 key escape\n20 shot main_a.png\n28 shot main_b.png\n30 key enter\n36 shot skill_a.png\n44 shot skill_b.png\n"
+      "46 key enter\n140 shot game_a.png\n146 shot game_b.png\n152 shot game_c.png\n155 key escape\n156 key down\n"
+      "157 key enter\n160 shot options_a.png\n168 shot options_b.png\n170 end\n",
+      "screens");
+  const std::filesystem::path out = test::temp_dir("front_end_screens");
+  run_key_script(f, steps, out, 320, 200);
+  const std::filesystem::path golden = test::source_dir() / "tests/golden/chocolate_menus";
+  auto best = [&](const std::string& screen, std::initializer_list<const char*> ours) {
+    const image::Image theirs = image::load_png(golden / ("freedoom2_" + screen + ".png"));
+    double share = 0;
+    for (const char* o : ours) share = std::max(share, equal_share(image::load_png(out / o), theirs));
+    return share;
+  };
+  EXPECT_GE(best("main", {"main_a.png", "main_b.png"}), 0.9999) << "the title and the main menu";
+  EXPECT_GE(best("skill", {"skill_a.png", "skill_b.png"}), 0.9999);
+  // The face glances every half second: one of three tics shows Chocolate's glance.
+  EXPECT_GE(best("game", {"game_a.png", "game_b.png", "game_c.png"}), 0.99)
+      << "the view at screen size 9 in its border, the status bar";
+  EXPECT_GE(best("options", {"options_a.png", "options_b.png"}), 0.99);
+}
+
+TEST(Settings, SurviveARestartAndTheirTextRoundTrips) {
+  Settings s;
+  s.menu.mouse_sensitivity = 7;
+  s.menu.show_messages = false;
+  s.menu.screen_blocks = 11;
+  s.menu.sfx_volume = 3;
+  s.menu.music_volume = 15;
+  s.menu.gamma = 2;
+  s.menu.low_detail = true;
+  s.window_width = 1280, s.window_height = 800;
+  s.fullscreen = true;
+  s.renderer = "painter";
+  s.last_wad = "/usr/share/games/doom/freedoom1.wad";
+  s.keys[size_t(Action::kUse)] = {'f', front::kKeyEnter};
+  const std::filesystem::path path = test::temp_dir("settings_round_trip") / "deeper" / "settings.cfg";
+  std::string why;
+  ASSERT_TRUE(save_settings(s, path, why)) << why;
+  std::vector<std::string> warnings;
+  const Settings back = load_settings(path, warnings);
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_EQ(format_settings(back), format_settings(s));
+  EXPECT_EQ(back.keys[size_t(Action::kUse)], (std::vector<int>{'f', front::kKeyEnter}));
+  EXPECT_EQ(back.menu.gamma, 2);
+}
+
+TEST(Settings, ADamagedFileGivesWarningsAndDefaultsNeverACrash) {
+  std::vector<std::string> warnings;
+  const Settings s = parse_settings(
+      "mouse_sensitivity = 12\nscreen_blocks=10\nnonsense\ncolour = blue\nkey_fire = nokey\nwindow = 0x0\n"
+      "sfx_volume = 4\xff\n",
+      "cfg", warnings);
+  EXPECT_EQ(s.menu.mouse_sensitivity, 5) << "out of range: the default";
+  EXPECT_EQ(s.menu.screen_blocks, 10);
+  EXPECT_EQ(s.keys[size_t(Action::kFire)], default_key_bindings()[size_t(Action::kFire)]);
+  EXPECT_EQ(s.menu.sfx_volume, 8);
+  ASSERT_EQ(warnings.size(), 6u);
+  EXPECT_EQ(warnings[0], "cfg:1: bad value '12' for mouse_sensitivity, the default kept");
+  EXPECT_EQ(warnings[1], "cfg:3: not 'name = value', skipped");
+  EXPECT_EQ(warnings[2], "cfg:4: unknown setting 'colour', skipped");
+  // An unreadable file (here a directory) and a missing one: the defaults.
+  std::vector<std::string> more;
+  const std::filesystem::path dir = test::temp_dir("settings_is_a_directory");
+  std::filesystem::create_directories(dir);
+  EXPECT_EQ(format_settings(load_settings(dir, more)), format_settings(Settings{}));
+  EXPECT_EQ(more.size(), 1u);
+  EXPECT_EQ(format_settings(load_settings(dir / "missing.cfg", more)), format_settings(Settings{}));
+  EXPECT_EQ(more.size(), 1u) << "a missing file is no warning: the first run";
+}
+
+TEST(Settings, AFailedSaveLeavesTheOldFile) {
+  const std::filesystem::path dir = test::temp_dir("settings_readonly");
+  std::filesystem::create_directories(dir);
+  Settings s;
+  std::string why;
+  ASSERT_TRUE(save_settings(s, dir / "settings.cfg", why));
+  const std::string before = read_file_text(dir / "settings.cfg");
+  EXPECT_FALSE(save_settings(s, dir / "settings.cfg" / "below_a_file.cfg", why));
+  EXPECT_FALSE(why.empty());
+  EXPECT_EQ(read_file_text(dir / "settings.cfg"), before);
+}
+
+}  // namespace
+}  // namespace p3d::game
