@@ -113,10 +113,14 @@ void FrontEnd::advance_demo() {
       if (start_demo(step.lump)) return;
       continue;  // a demo the WADs lack or we cannot play: on to the next step
     }
-    state_ = State::kPage;
-    session_.reset();
-    page_ = step.lump;
-    page_tics_ = step.tics;
+    auto show_page = [&] {
+      state_ = State::kPage;
+      session_.reset();
+      page_ = step.lump;
+      page_tics_ = step.tics;
+    };
+    if (state_ == State::kPage) show_page();  // one page after another: the same screen state, no melt
+    else change_screen(show_page);
     if (!step.music.empty()) play_music(step.music, false);
     return;
   }
@@ -134,13 +138,15 @@ bool FrontEnd::start_demo(const std::string& lump) {
     GameFlags flags{d.fast, d.respawn, d.no_monsters};
     auto session = std::make_unique<Session>(source, d.skill, flags);
     demo_ = play::demo_from_doom(d, session->level()).tics;
-    session_ = std::move(session);
+    change_screen([&] {
+      session_ = std::move(session);
+      demo_tic_ = 0;
+      state_ = State::kDemo;
+    });
   } catch (const std::exception& e) {
     std::fprintf(stderr, "game: %s: not played in the title loop (%s)\n", lump.c_str(), e.what());
     return false;
   }
-  demo_tic_ = 0;
-  state_ = State::kDemo;
   apply_settings();
   level_music();
   return true;
@@ -156,16 +162,20 @@ void FrontEnd::new_game(int episode, int map, int skill) {
     std::snprintf(name, sizeof name, "E%dM%d", episode, map);
   bsp::LevelSource source = *wads_;
   source.map = name;
+  std::unique_ptr<Session> session;
   try {
-    session_ = std::make_unique<Session>(source, skill, options_.flags);
+    session = std::make_unique<Session>(source, skill, options_.flags);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "game: cannot start %s: %s\n", name, e.what());
-    if (!start_title()) quit_ = true;
+    if (!session_ && !start_title()) quit_ = true;
     return;
   }
-  state_ = State::kLevel;
-  user_game_ = true;
-  paused_ = false;
+  change_screen([&] {
+    session_ = std::move(session);
+    state_ = State::kLevel;
+    user_game_ = true;
+    paused_ = false;
+  });
   apply_settings();
   if (!settings_.renderer.empty()) session_->select_renderer(settings_.renderer, false);
   level_music();
@@ -199,25 +209,26 @@ bool FrontEnd::save_slot(int slot, const std::string& description) {
 
 bool FrontEnd::load_slot(int slot) {
   const std::filesystem::path path = slot_path(slot);
+  std::unique_ptr<Session> fresh;  // a game of its own when none is played (a page, a demo)
   try {
     const std::vector<uint8_t> bytes = read_file_bytes(path);
-    if (!session_) {  // from the title loop: a game on any map, which the save replaces
-      bsp::LevelSource source = *wads_;
-      session_ = std::make_unique<Session>(source, level::kDefaultSkill, options_.flags);
+    Session* game = playing() ? session_.get() : nullptr;
+    if (!game) {
+      fresh = std::make_unique<Session>(bsp::LevelSource(*wads_), level::kDefaultSkill, options_.flags);
+      game = fresh.get();
     }
-    session_->load_game(bytes, path.string());
+    game->load_game(bytes, path.string());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "game: not loaded: %s\n", e.what());
-    if (session_ && state_ == State::kLevel && user_game_) {
-      say(std::string("not loaded: ") + e.what());
-    } else if (!start_title()) {
-      quit_ = true;
-    }
+    say(std::string("not loaded: ") + e.what());  // the game goes on as it was
     return false;
   }
-  state_ = State::kLevel;
-  user_game_ = true;
-  paused_ = false;
+  change_screen([&] {
+    if (fresh) session_ = std::move(fresh);
+    state_ = State::kLevel;
+    user_game_ = true;
+    paused_ = false;
+  });
   apply_settings();
   level_music();
   return true;
@@ -307,10 +318,10 @@ void FrontEnd::mouse_button(int button, bool down) {
 void FrontEnd::carry_out(const front::MenuRequest& r) {
   using Kind = front::MenuRequest::Kind;
   switch (r.kind) {
-    case Kind::kNewGame: new_game(r.episode, 1, r.skill); break;
-    case Kind::kLoadGame: load_slot(r.slot); break;
+    case Kind::kNewGame:
+    case Kind::kLoadGame:
+    case Kind::kEndGame: game_action_ = r; break;  // at the next tic, as Doom's gameaction
     case Kind::kSaveGame: save_slot(r.slot, r.text); break;
-    case Kind::kEndGame: start_title(); break;
     case Kind::kQuit:
       quit_ = true;
       quit_delay_ = kQuitSoundTics;
@@ -333,6 +344,19 @@ void FrontEnd::apply_settings() {
   session_->screen_blocks = settings_.menu.screen_blocks;
   session_->low_detail = settings_.menu.low_detail;
   session_->show_messages = settings_.menu.show_messages;
+}
+
+// ---- screen changes (Doom's wipe)
+
+// Runs a change of screen (a new game, a demo, the tally, the title...) and melts the
+// last screen shown into the new one, as Doom does when its game state changes. The
+// melt draws from the new game's M_Random (Doom clears it as a game starts).
+void FrontEnd::change_screen(const std::function<void()>& change) {
+  const image::Image before = last_frame_;
+  change();
+  if (before.pixels.empty() || !has_menus()) return;
+  wipe_start_ = before;
+  wipe_pending_ = true;  // the melt starts at the next frame drawn, after this tic
 }
 
 // ---- tics
@@ -367,9 +391,20 @@ play::DemoTic FrontEnd::command_from_keys() {
 void FrontEnd::tic() { tic(command_from_keys()); }
 
 void FrontEnd::tic(const play::DemoTic& player) {
+  if (melt_ && !melt_->done()) {  // the world waits while the screen melts
+    melt_->tic();
+    return;
+  }
+  melt_.reset();
   ++game_tic_;
   if (menu_) menu_->tic();
   if (quit_ && quit_delay_ > 0) --quit_delay_;
+  if (const std::optional<front::MenuRequest> action = std::exchange(game_action_, std::nullopt)) {
+    using Kind = front::MenuRequest::Kind;  // Doom's G_Ticker: the game action first, then the tic
+    if (action->kind == Kind::kNewGame) new_game(action->episode, 1, action->skill);
+    if (action->kind == Kind::kLoadGame) load_slot(action->slot);
+    if (action->kind == Kind::kEndGame) start_title();
+  }
   switch (state_) {
     case State::kPage:
       if (--page_tics_ < 0) advance_demo();
@@ -402,22 +437,25 @@ void FrontEnd::level_tic(const play::DemoTic& player) {
     s.idle_tic();
     return;
   }
-  s.tic(player);
+  if (s.player().state == play::PlayerState::kReborn)
+    change_screen([&] { s.tic(player); });  // the level from its start melts in (Doom's G_DoReborn)
+  else
+    s.tic(player);
   if (s.exited() == play::ExitKind::kNone || !user_game_) return;
-  if (s.start_intermission()) {
-    play_music(intermission_music(mode_ == front::GameMode::kCommercial), true);
-  } else {
-    next_map();
-  }
+  bool tally = false;
+  change_screen([&] { tally = s.start_intermission(); });
+  if (tally) play_music(intermission_music(mode_ == front::GameMode::kCommercial), true);
+  else next_map();
 }
 
 void FrontEnd::next_map() {
-  if (session_->enter_next_map()) {
-    apply_settings();
-    level_music();
-  } else if (loop_) {
+  if (loop_ && session_->next_map_name().empty()) {
     start_title();  // the end of the episode or the game
+    return;
   }
+  change_screen([&] { session_->enter_next_map(); });
+  apply_settings();
+  level_music();
 }
 
 // ---- music
@@ -441,7 +479,24 @@ std::vector<Session::PlacedSound> FrontEnd::take_sounds() {
   return out;
 }
 
+// Doom's D_Display: the page, the game or its tally (melting in over the last screen
+// after a change), then the pause sign and the menu over everything.
 void FrontEnd::draw(render::Frame& frame, double alpha, const FrameTimes& times) {
+  if (std::exchange(wipe_pending_, false)) melt_.emplace(session_ ? session_->screen_random() : m_random_);
+  if (melt_ && wipe_start_.width == frame.width && wipe_start_.height == frame.height) {
+    if (scratch_.width != frame.width || scratch_.height != frame.height) scratch_ = render::Frame(frame.width, frame.height);
+    draw_state(scratch_, alpha, times);
+    melt_->draw(wipe_start_, scratch_, frame);
+  } else {
+    melt_.reset();
+    draw_state(frame, alpha, times);
+  }
+  draw_menus(frame);
+  last_frame_.width = frame.width, last_frame_.height = frame.height;
+  last_frame_.pixels.assign(frame.pixels.begin(), frame.pixels.end());
+}
+
+void FrontEnd::draw_state(render::Frame& frame, double alpha, const FrameTimes& times) {
   if (state_ == State::kPage) {
     std::fill(frame.pixels.begin(), frame.pixels.end(), palette_.empty() ? 0xFF000000u : palette_[0]);
     art_->draw_page(page_, frame, palette_);
@@ -449,6 +504,9 @@ void FrontEnd::draw(render::Frame& frame, double alpha, const FrameTimes& times)
     session_->render(frame, alpha);
     session_->draw_overlays(frame, times, alpha);
   }
+}
+
+void FrontEnd::draw_menus(render::Frame& frame) const {
   if (!menu_) {
     if (text_menu_.is_open()) draw_text_menu(frame);
     return;

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <set>
@@ -17,6 +18,7 @@
 #include "engine/front/demo_loop.h"
 #include "engine/front/menu.h"
 #include "engine/front/menu_art.h"
+#include "engine/front/wipe.h"
 #include "game/input.h"
 #include "game/session.h"
 #include "game/settings.h"
@@ -113,6 +115,9 @@ class FrontEnd {
   play::DemoTic command_from_keys();
   void level_tic(const play::DemoTic& player);
   void next_map();
+  void change_screen(const std::function<void()>& change);
+  void draw_state(render::Frame& frame, double alpha, const FrameTimes& times);
+  void draw_menus(render::Frame& frame) const;
   void draw_text_menu(render::Frame& frame) const;
   void level_music();
   void play_music(const std::string& lump, bool loop);
@@ -152,6 +157,13 @@ class FrontEnd {
   std::vector<Session::PlacedSound> menu_sounds_;
   MusicCue music_;
   Menu text_menu_;
+  // Doom's melt from the last screen shown to the next (front/wipe.h).
+  image::Image last_frame_, wipe_start_;
+  render::Frame scratch_;
+  std::optional<front::Melt> melt_;
+  bool wipe_pending_ = false;
+  std::optional<front::MenuRequest> game_action_;  // a new game, a load, the end: done at the next tic
+  play::Random m_random_;  // Doom's M_Random where no game keeps one (the title's pages)
 };
 
 }  // namespace p3d::game

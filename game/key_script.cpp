@@ -68,6 +68,7 @@ ScriptResult run_key_script(FrontEnd& front, const std::vector<ScriptStep>& step
   std::string last_music;
   uint64_t last_serial = front.music().serial;
   size_t next = 0;
+  front.draw(frame, 1.0, {});
   for (uint64_t tic = 0;; ++tic) {
     for (; next < steps.size() && steps[next].tic == tic; ++next) {
       const ScriptStep& s = steps[next];
@@ -86,7 +87,7 @@ ScriptResult run_key_script(FrontEnd& front, const std::vector<ScriptStep>& step
           }
           break;
         case ScriptStep::Kind::kShot:
-          front.draw(frame, 1.0, {});
+          front.draw(frame, 1.0, {});  // with what the keys of this tic changed
           image::save_png(frame, out_dir / s.text);
           ++result.shots;
           break;
@@ -103,6 +104,7 @@ ScriptResult run_key_script(FrontEnd& front, const std::vector<ScriptStep>& step
       break;
     }
     front.tic();
+    front.draw(frame, 1.0, {});  // a frame a tic, as the window draws: Doom's melt starts from the last
     for (const Session::PlacedSound& s : front.take_sounds())
       result.log += std::to_string(tic + 1) + " sound " + play::sound_lump_name(s.sound).substr(2) + "\n";
     if (front.music().serial != last_serial) {

@@ -153,17 +153,24 @@ void Session::idle_tic() {
   face_.tic(other_random_, play::face_input(player()));
 }
 
-bool Session::enter_next_map() {
-  std::string next, why;
+std::string Session::next_map_name(std::string* why) const {
+  std::string next, reason;
   if (source_.is_wad()) {
     const wad::Stack wads = bsp::read_wads(source_.wads);
     const std::string current = bsp::resolve_map_name(wads, source_.map);
     next = doom::next_map(current, world_->exit() == play::ExitKind::kSecret,
                           [&](const std::string& name) { return wads.map(name).has_value(); });
-    if (next.empty()) why = "no map after " + current;
+    if (next.empty()) reason = "no map after " + current;
   } else {
-    why = "a hand-made level has no next map";
+    reason = "a hand-made level has no next map";
   }
+  if (why) *why = reason;
+  return next;
+}
+
+bool Session::enter_next_map() {
+  std::string why;
+  const std::string next = next_map_name(&why);
   if (!next.empty()) source_.map = next;
   intermission_.reset();
   // Doom's G_PlayerFinishLevel: health, armor, ammo and weapons go on to the next

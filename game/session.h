@@ -73,6 +73,8 @@ class Session {
   void tic(const play::DemoTic& tic);
   void tic(const play::TicCmd& cmd) { tic(play::DemoTic{cmd, 0}); }
   play::ExitKind exited() const { return world_->exit(); }
+  // Doom's M_Random, which the status bar's face and the screen's melt draw from.
+  play::Random& screen_random() { return other_random_; }
   // A tic in which the world waits (a menu open, or paused): what Doom's status bar
   // and message line do every tic still happens (the face glances, messages fade).
   void idle_tic();
@@ -81,6 +83,8 @@ class Session {
   // end of an episode or game, a map missing from the WADs), starts this level again
   // and returns false.
   bool enter_next_map();
+  // The map an exit leads to in Doom's order, or empty (with the reason in `why`).
+  std::string next_map_name(std::string* why = nullptr) const;
   // Doom's intermission after an exit: the tally of the level just finished, drawn by
   // render() in place of the view until enter_next_map. False (nothing shown) where
   // the WADs have no intermission art.

@@ -49,12 +49,15 @@ TEST(FrontEnd, NewGameFromTheMenuThenTheWorldWaitsUnderIt) {
   press(f, front::kKeyEnter);  // New Game
   press(f, front::kKeyDown);   // Ultra-Violence
   press(f, front::kKeyEnter);
+  EXPECT_FALSE(f.playing()) << "Doom starts the game at the next tic (its gameaction)";
+  f.tic();
   ASSERT_TRUE(f.playing());
   EXPECT_EQ(f.session()->map_name(), "MAP01");
   EXPECT_EQ(f.session()->skill(), 4);
   EXPECT_EQ(f.session()->screen_blocks, 9) << "Doom's default screen size";
+  EXPECT_EQ(f.session()->tics(), 1u) << "and plays the level's first tic in the same";
   f.key_down('w');
-  for (int t = 0; t < 10; ++t) f.tic();
+  for (int t = 0; t < 9; ++t) f.tic();
   f.key_up('w');
   EXPECT_EQ(f.session()->tics(), 10u);
   const double x = f.session()->pose().pos.x, y = f.session()->pose().pos.y;
@@ -79,6 +82,7 @@ TEST(FrontEnd, EndGameGoesBackToTheTitleAndQuitWaitsForItsSound) {
   f.new_game(1, 1, 3);
   press(f, front::kKeyF7);
   press(f, 'y');
+  f.tic();
   EXPECT_FALSE(f.session()) << "back on the title page";
   EXPECT_EQ(f.music().lump, "D_DM2TTL");
   press(f, front::kKeyF10);
