@@ -8,6 +8,7 @@
 #include <cstring>
 #include <fstream>
 #include <mutex>
+#include <string_view>
 
 namespace p3d::game {
 
@@ -46,6 +47,52 @@ bool is_soundfont(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   char head[12] = {};
   return in.read(head, sizeof head) && std::memcmp(head, "RIFF", 4) == 0 && std::memcmp(head + 8, "sfbk", 4) == 0;
+}
+
+// The font is read through callbacks of ours, so that a player destroyed while its
+// font loads stops the reading between two chunks. FluidSynth is given the path behind
+// a prefix its own loaders cannot open: only ours reads it, and a reading stopped is
+// not begun again by the next loader.
+constexpr std::string_view kFontPrefix = "p3d-soundfont:";
+constexpr size_t kFontChunk = size_t(4) << 20;
+thread_local const std::atomic<bool>* loading_stopped = nullptr;  // the loading thread's player's
+
+struct FontFile {
+  std::FILE* file;
+  const std::atomic<bool>* stopped;
+};
+
+void* open_font(const char* name) {
+  const std::string_view n = name;
+  if (n.substr(0, kFontPrefix.size()) != kFontPrefix) return nullptr;
+  std::FILE* file = std::fopen(name + kFontPrefix.size(), "rb");
+  return file ? new FontFile{file, loading_stopped} : nullptr;
+}
+
+int read_font(void* buffer, fluid_long_long_t count, void* handle) {
+  auto* f = static_cast<FontFile*>(handle);
+  auto* out = static_cast<char*>(buffer);
+  while (count > 0) {
+    if (f->stopped && f->stopped->load(std::memory_order_relaxed)) return FLUID_FAILED;
+    const size_t n = size_t(std::min<fluid_long_long_t>(count, fluid_long_long_t(kFontChunk)));
+    if (std::fread(out, 1, n, f->file) != n) return FLUID_FAILED;
+    out += n;
+    count -= fluid_long_long_t(n);
+  }
+  return FLUID_OK;
+}
+
+int seek_font(void* handle, fluid_long_long_t offset, int origin) {
+  return fseeko(static_cast<FontFile*>(handle)->file, off_t(offset), origin) == 0 ? FLUID_OK : FLUID_FAILED;
+}
+
+fluid_long_long_t tell_font(void* handle) { return fluid_long_long_t(ftello(static_cast<FontFile*>(handle)->file)); }
+
+int close_font(void* handle) {
+  auto* f = static_cast<FontFile*>(handle);
+  std::fclose(f->file);
+  delete f;
+  return FLUID_OK;
 }
 
 bool is_file(const std::filesystem::path& path) {
@@ -99,6 +146,7 @@ MusicPlayer::MusicPlayer(const MusicOptions& options) : rate_(options.rate), lef
 }
 
 MusicPlayer::~MusicPlayer() {
+  stop_loading_.store(true, std::memory_order_relaxed);  // a font still loading stops within a chunk
   if (loader_.joinable()) loader_.join();
 }
 
@@ -136,8 +184,15 @@ void MusicPlayer::load(const MusicOptions& options) {
     state_.store(kFailed, std::memory_order_release);
     return;
   }
-  if (fluid_synth_sfload(s->synth, options.soundfont.c_str(), 1) == FLUID_FAILED) {
-    problem_ = options.soundfont.string() + ": not loaded: " + fluid_error();
+  fluid_sfloader_t* loader = new_fluid_defsfloader(s->settings);  // the synthesizer's from now on
+  fluid_sfloader_set_callbacks(loader, open_font, read_font, seek_font, tell_font, close_font);
+  fluid_synth_add_sfloader(s->synth, loader);
+  loading_stopped = &stop_loading_;
+  const int font = fluid_synth_sfload(s->synth, (std::string(kFontPrefix) + options.soundfont.string()).c_str(), 1);
+  loading_stopped = nullptr;
+  if (font == FLUID_FAILED) {
+    problem_ = options.soundfont.string() + ": not loaded: " +
+               (stop_loading_.load(std::memory_order_relaxed) ? std::string("the player went first") : fluid_error());
     state_.store(kFailed, std::memory_order_release);
     return;
   }

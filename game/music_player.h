@@ -41,7 +41,7 @@ class MusicPlayer {
   static constexpr int kDefaultVolume = 8;   // Doom's default.cfg
 
   explicit MusicPlayer(const MusicOptions& options);
-  ~MusicPlayer();  // waits for a sound font still loading
+  ~MusicPlayer();  // a sound font still loading stops (within a few milliseconds)
   MusicPlayer(const MusicPlayer&) = delete;
   MusicPlayer& operator=(const MusicPlayer&) = delete;
 
@@ -85,6 +85,7 @@ class MusicPlayer {
   const int rate_;
   std::unique_ptr<Synth> synth_;  // made by the loading thread; touched by mix() alone once ready
   std::atomic<int> state_{kLoading};
+  std::atomic<bool> stop_loading_{false};  // the player is going: the font's reading stops
   std::string problem_;
   std::thread loader_;
 

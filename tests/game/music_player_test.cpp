@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <thread>
 
 #include "engine/bsp/load.h"
 #include "engine/play/music.h"
@@ -85,6 +86,25 @@ TEST(MusicPlayer, WithoutASoundFontIsSilentAndSaysWhy) {
   MusicPlayer bad(o);
   EXPECT_TRUE(bad.failed());
   EXPECT_NE(bad.problem().find("bad.sf2: not loaded"), std::string::npos) << bad.problem();
+}
+
+// The game makes its player with the font loading on a thread: a player gone before
+// the font has loaded (a game quit at once) stops the reading rather than wait for it.
+TEST(MusicPlayer, LoadsTheWholeFontOnAThreadThatStopsWhenThePlayerGoes) {
+  REQUIRE_SOUNDFONT(font);
+  using Clock = std::chrono::steady_clock;
+  auto t0 = Clock::now();
+  {
+    MusicPlayer player(MusicOptions{kRate, *font});
+    while (!player.ready() && !player.failed()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    ASSERT_TRUE(player.ready()) << player.problem();
+  }
+  const double whole = std::chrono::duration<double>(Clock::now() - t0).count();
+  t0 = Clock::now();
+  { MusicPlayer gone(MusicOptions{kRate, *font}); }
+  const double stopped = std::chrono::duration<double>(Clock::now() - t0).count();
+  std::printf("the whole font (%s): loaded in %.2f s; a player gone at once: %.3f s\n", font->c_str(), whole, stopped);
+  EXPECT_LT(stopped, std::max(0.2, whole / 2));
 }
 
 // Not silent, and Doom's volume scales it: 8 plays at 64/120 of 15's level (Chocolate's
