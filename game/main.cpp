@@ -74,6 +74,14 @@ std::string warp_map(const bsp::LevelSource& source, const std::vector<int>& war
   return name;
 }
 
+// Doom's music: -nomusic, the sound font, the volume (the lead's menus will set these).
+void add_music_options(CLI::App& app, bool& no_music, std::string& soundfont, int& volume) {
+  app.add_flag("--nomusic", no_music, "no music (Doom's -nomusic)");
+  app.add_option("--soundfont", soundfont,
+                 "the music's SoundFont (.sf2); default: $SDL_SOUNDFONTS, else Debian's fluid-soundfont-gm");
+  app.add_option("--music-volume", volume, "Doom's music volume, 0 to 15")->check(CLI::Range(0, 15))->capture_default_str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -82,7 +90,9 @@ int main(int argc, char** argv) {
   std::vector<int> warp;
   std::string record, play, out_dir, resolution, window = "960x600", renderer = "bsp", autopilot;
   bool headless = false, fullscreen = false, no_vsync = false, map_reload = false, timedemo = false, all_keys = false;
-  bool json = false, no_sound = false, no_status_bar = false, stats_only = false;
+  bool json = false, no_sound = false, no_music = false, no_status_bar = false, stats_only = false;
+  std::string soundfont;
+  int music_volume = 8;
   game::GameFlags flags;
   int capture_every = 35;
   uint64_t quit_after = 0;
@@ -113,7 +123,8 @@ int main(int argc, char** argv) {
   app.add_flag("--no-vsync", no_vsync, "uncapped frame rate");
   app.add_option("--renderer", renderer, "bsp, painter, dda, sphere, sphere-naive or reference")->capture_default_str();
   app.add_option("--fov", fov, "horizontal field of view")->check(cli::finite_range(30.0, 160.0))->capture_default_str();
-  app.add_flag("--nosound", no_sound, "no sound effects (headless runs are always silent)");
+  app.add_flag("--nosound", no_sound, "no sound effects and no music (headless runs are always silent)");
+  add_music_options(app, no_music, soundfont, music_volume);
   app.add_flag("--no-status-bar", no_status_bar, "WAD levels: the view fills the frame, without Doom's status bar");
   app.add_flag("--map-reload", map_reload, "recompile and reload the level when its source or WAD changes on disk");
   app.add_option("--autopilot", autopilot,
@@ -200,6 +211,9 @@ int main(int argc, char** argv) {
     o.vsync = !no_vsync;
     o.map_reload = map_reload;
     o.sound = !no_sound;
+    o.music = !no_music;
+    o.soundfont = soundfont;
+    o.music_volume = music_volume;
     o.record = record;
     o.play = demo;
     o.timedemo = timedemo;

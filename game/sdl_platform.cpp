@@ -10,6 +10,7 @@
 #include "engine/image/image.h"
 #include "engine/util/file.h"
 #include "game/autopilot.h"
+#include "game/music_player.h"
 #include "game/sound_mixer.h"
 
 namespace p3d::game {
@@ -123,6 +124,7 @@ class Window {
         accumulator -= kTicSeconds;
       }
       play_sounds();
+      update_music();
       const double t1 = now_seconds();
       session_.reload_if_saved(t1);
       const double alpha = accumulator / kTicSeconds;
@@ -170,10 +172,13 @@ class Window {
     want.samples = 512;
     want.callback = [](void* self, Uint8* bytes, int length) {
       auto* w = static_cast<Window*>(self);
-      w->mixer_->mix(std::span<int16_t>(reinterpret_cast<int16_t*>(bytes), size_t(length) / sizeof(int16_t)));
+      const std::span<int16_t> stereo(reinterpret_cast<int16_t*>(bytes), size_t(length) / sizeof(int16_t));
+      w->mixer_->mix(stereo);
+      if (w->music_) w->music_->mix(stereo);  // added to the effects
     };
     want.userdata = this;
     mixer_.emplace(want.freq, [this](play::Sound s) { return session_.sound_clip(s); });
+    if (o_.music) open_music(want.freq);
     audio_ = SDL_OpenAudioDevice(nullptr, 0, &want, &have, 0);
     if (!audio_) {
       std::fprintf(stderr, "game: no sound (%s)\n", SDL_GetError());
@@ -181,6 +186,40 @@ class Window {
     }
     SDL_PauseAudioDevice(audio_, 0);
     session_.listen();
+  }
+
+  // ---- music: the player made before the device starts calling it; its sound font
+  // loads on a thread of its own meanwhile
+  void open_music(int rate) {
+    std::string why;
+    const std::optional<std::filesystem::path> font = find_soundfont(o_.soundfont, why);
+    if (!font) {
+      std::fprintf(stderr, "game: no music: %s\n", why.c_str());
+      return;
+    }
+    music_ = std::make_unique<MusicPlayer>(MusicOptions{rate, *font});
+    music_->set_volume(o_.music_volume);
+  }
+
+  // Once a frame: the track Doom plays now (the map's, the intermission's) started when
+  // it changes, read from the WADs outside the device's lock.
+  void update_music() {
+    if (!music_ || !audio_) return;
+    if (music_->failed()) {
+      std::fprintf(stderr, "game: no music: %s\n", music_->problem().c_str());
+      SDL_LockAudioDevice(audio_);  // the callback looks at music_
+      const std::unique_ptr<MusicPlayer> gone = std::move(music_);
+      SDL_UnlockAudioDevice(audio_);
+      return;
+    }
+    const play::Track want = session_.music();
+    if (want == music_track_) return;
+    music_track_ = want;
+    std::optional<wad::MidiSong> song = session_.music_song(want.music);
+    SDL_LockAudioDevice(audio_);
+    if (song) music_->play(std::move(*song), want.looping);
+    else music_->stop();
+    SDL_UnlockAudioDevice(audio_);
   }
 
   // Starts the sounds of the tics just run and moves the others with the listener.
@@ -342,6 +381,8 @@ class Window {
   size_t played_ = 0;
   std::optional<Autopilot> autopilot_;
   std::optional<SoundMixer> mixer_;
+  std::unique_ptr<MusicPlayer> music_;
+  play::Track music_track_;  // what the player was last asked to play
   bool use_held_ = false;
   SDL_AudioDeviceID audio_ = 0;
 };

@@ -64,8 +64,10 @@ void Session::start_world(const play::Inventory* carried) {
     const std::string map_name = bsp::resolve_map_name(wads, source_.map);
     o = play::game_options_for(wads, map_name, skill_);
     map = play::map_from_wads(wads, map_name, *level_);
+    choose_music(map_name);
   } else {
     map = play::map_from_level(*level_);
+    choose_music("");
   }
   o.fast = flags_.fast;
   o.respawn = flags_.respawn;
@@ -273,6 +275,28 @@ void Session::keep_sounds() {
       sounds_.push_back({e.sound, e.origin, std::nullopt});
     else
       sounds_.push_back({e.sound, e.origin, geom::Vec2(play::to_double(e.x), play::to_double(e.y))});
+  }
+}
+
+// Doom's S_Start and WI_Ticker: the map's track; the tally's, Doom II's (D_DM2INT)
+// after its MAPxx maps, else Doom's (D_INTER).
+void Session::choose_music(const std::string& map_name) {
+  map_music_ = play::map_track(map_name);
+  tally_music_ = map_music_.music == play::Music::kNone ? play::Track{}
+                                                          : play::intermission_track(map_name.rfind("MAP", 0) == 0);
+}
+
+std::optional<wad::MidiSong> Session::music_song(play::Music music) {
+  if (!source_.is_wad() || music == play::Music::kNone) return std::nullopt;
+  try {
+    if (!sound_wads_) sound_wads_ = std::make_unique<wad::Stack>(bsp::read_wads(source_.wads));
+    std::vector<std::string> warnings;
+    wad::MidiSong song = play::read_song(*sound_wads_, music, &warnings);
+    for (const std::string& w : warnings) std::fprintf(stderr, "game: %s\n", w.c_str());
+    return song;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "game: %s (no music)\n", e.what());
+    return std::nullopt;
   }
 }
 

@@ -14,6 +14,7 @@
 #include "engine/bsp/load.h"
 #include "engine/play/music.h"
 #include "game/music_player.h"
+#include "game/session.h"
 #include "tests/support/support.h"
 
 namespace p3d::game {
@@ -178,6 +179,29 @@ TEST(MusicPlayer, LoopsOrPlaysOnce) {
   EXPECT_GT(rms(std::span(once).subspan(0, note)), 100);
   EXPECT_EQ(rms(std::span(once).subspan(quarter)), 0) << "reset at the song's end, as FluidSynth's player does";
   EXPECT_FALSE(player.playing());
+}
+
+// What the window plays (Session::music): the map's track, the intermission's during
+// the tally, the next map's after it; nothing for a level that is no Doom map.
+TEST(SessionMusic, MapIntermissionAndNextMap) {
+  Session doom2(bsp::LevelSource{{}, {test::freedoom_path("freedoom2.wad")}, "MAP01"});
+  EXPECT_EQ(doom2.music(), (play::Track{play::Music::kRunnin, true}));
+  ASSERT_TRUE(doom2.start_intermission());
+  EXPECT_EQ(doom2.music(), (play::Track{play::Music::kDm2int, true}));
+  doom2.enter_next_map();
+  EXPECT_EQ(doom2.music(), (play::Track{play::Music::kStalks, true}));
+  const std::optional<wad::MidiSong> song = doom2.music_song(doom2.music().music);
+  ASSERT_TRUE(song);
+  EXPECT_FALSE(song->messages.empty());
+
+  Session doom(bsp::LevelSource{{}, {test::freedoom_path("freedoom1.wad")}, "E4M1"});
+  EXPECT_EQ(doom.music().music, play::Music::kE3M4);
+  ASSERT_TRUE(doom.start_intermission());
+  EXPECT_EQ(doom.music().music, play::Music::kInter);
+
+  Session mine(test::source_dir() / "maps/outpost.map");
+  EXPECT_EQ(mine.music().music, play::Music::kNone);
+  EXPECT_FALSE(mine.music_song(play::Music::kE1M1));
 }
 
 // The listening check a machine can do: 10 s of MAP01's music as the game plays it
