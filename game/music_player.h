@@ -31,8 +31,9 @@ struct MusicOptions {
   int rate = 44100;                 // the audio device's samples a second
   std::filesystem::path soundfont;  // find_soundfont's
   bool wait_for_soundfont = false;  // load it before the constructor returns (tests, tools)
-  bool samples_on_demand = false;   // FluidSynth's dynamic sample loading: starts in a second rather
-                                    // than five, but reads the font's samples while playing (tests)
+  bool samples_on_demand = false;   // FluidSynth's dynamic sample loading: ready in a fifth of a second
+                                    // rather than a second or more, but reads the font's samples from
+                                    // disk as songs need them, on the audio thread (tests)
 };
 
 class MusicPlayer {
