@@ -5,6 +5,8 @@
 // MIDI files read back into timed messages.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
