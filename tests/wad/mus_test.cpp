@@ -34,9 +34,11 @@ int random_groups(int seed) { return 20 + seed * 7; }
 
 Bytes mus(std::initializer_list<uint8_t> score, int instruments = 0) {
   const int start = 16 + 2 * instruments;
-  Bytes out = {'M', 'U', 'S', 0x1A, uint8_t(score.size()), 0, uint8_t(start), 0, 1, 0, 0, 0, uint8_t(instruments), 0};
-  out.resize(size_t(start), 0);  // the reserved field, the instruments (0)
-  out.insert(out.end(), score.begin(), score.end());
+  const uint8_t header[] = {'M', 'U', 'S', 0x1A, uint8_t(score.size()), 0, uint8_t(start), 0, 1, 0, 0, 0,
+                            uint8_t(instruments), 0};
+  Bytes out(size_t(start) + score.size(), 0);  // after the header: the reserved field, the instruments (0)
+  std::copy(std::begin(header), std::end(header), out.begin());
+  std::copy(score.begin(), score.end(), out.begin() + start);
   return out;
 }
 
