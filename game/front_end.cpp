@@ -33,13 +33,6 @@ std::optional<std::string> slot_description(const std::filesystem::path& path) {
   }
 }
 
-// Doom's music for a map (S_Start) and for the tally. TODO(music): the music room's.
-std::string map_music(const std::string& map, bool commercial) {
-  (void)map, (void)commercial;
-  return "";
-}
-std::string intermission_music(bool commercial) { return commercial ? "D_DM2INT" : "D_INTER"; }
-
 }  // namespace
 
 FrontEnd::FrontEnd(const bsp::LevelSource& wads, Settings& settings, FrontEndOptions options)
@@ -121,7 +114,7 @@ void FrontEnd::advance_demo() {
     };
     if (state_ == State::kPage) show_page();  // one page after another: the same screen state, no melt
     else change_screen(show_page);
-    if (!step.music.empty()) play_music(step.music, false);
+    if (!step.music.empty()) play_music(play::title_track(mode_ == front::GameMode::kCommercial));
     return;
   }
 }
@@ -444,7 +437,7 @@ void FrontEnd::level_tic(const play::DemoTic& player) {
   if (s.exited() == play::ExitKind::kNone || !user_game_) return;
   bool tally = false;
   change_screen([&] { tally = s.start_intermission(); });
-  if (tally) play_music(intermission_music(mode_ == front::GameMode::kCommercial), true);
+  if (tally) play_music(s.music());
   else next_map();
 }
 
@@ -460,12 +453,21 @@ void FrontEnd::next_map() {
 
 // ---- music
 
-void FrontEnd::play_music(const std::string& lump, bool loop) { music_ = {lump, loop, music_.serial + 1}; }
-
 void FrontEnd::level_music() {
-  if (!session_ || !stack_) return;
-  const std::string lump = map_music(session_->map_name(), mode_ == front::GameMode::kCommercial);
-  if (!lump.empty()) play_music(lump, true);
+  if (session_) play_music(session_->music());
+}
+
+std::optional<wad::MidiSong> FrontEnd::music_song(play::Music music) const {
+  if (!stack_ || music == play::Music::kNone) return std::nullopt;
+  try {
+    std::vector<std::string> warnings;
+    wad::MidiSong song = play::read_song(*stack_, music, &warnings);
+    for (const std::string& w : warnings) std::fprintf(stderr, "game: %s\n", w.c_str());
+    return song;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "game: %s (no music)\n", e.what());
+    return std::nullopt;
+  }
 }
 
 // ---- the screen

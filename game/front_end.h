@@ -19,20 +19,13 @@
 #include "engine/front/menu.h"
 #include "engine/front/menu_art.h"
 #include "engine/front/wipe.h"
+#include "engine/play/music.h"
 #include "game/input.h"
 #include "game/session.h"
 #include "game/settings.h"
 #include "game/sound_bank.h"
 
 namespace p3d::game {
-
-// The music the front end wants playing: a lump of the WADs, once or round and round.
-// `serial` changes with every request (Doom restarts a track asked for again).
-struct MusicCue {
-  std::string lump;  // empty: silence
-  bool loop = false;
-  uint64_t serial = 0;
-};
 
 struct FrontEndOptions {
   GameFlags flags;                 // -fast, -respawn, -nomonsters for the games it starts
@@ -78,6 +71,7 @@ class FrontEnd {
   bool in_level() const { return state_ == State::kLevel && session_; }
   // The game waits (menu open in a game, or paused): the window stops its tic clock.
   bool waiting() const;
+  bool paused() const { return paused_; }
   bool quit_requested() const { return quit_ && quit_delay_ == 0; }
   bool screenshot_requested() { return std::exchange(screenshot_, false); }
   // The settings changed since the last call (the window applies and saves them).
@@ -85,7 +79,11 @@ class FrontEnd {
   // Sounds to play: the menu's (from nowhere) and the game's, placed.
   std::vector<Session::PlacedSound> take_sounds();
   const play::SoundClip* sound_clip(play::Sound sound) { return sounds_ ? sounds_->clip(sound) : nullptr; }
-  const MusicCue& music() const { return music_; }
+  // The music Doom plays now (engine/play/music.h): the title's, the map's, the tally's;
+  // a player starts it when it changes (Doom's S_ChangeMusic). Its song from the WADs,
+  // or nullopt (a lump missing or broken, said on stderr).
+  const play::Track& music() const { return music_; }
+  std::optional<wad::MidiSong> music_song(play::Music music) const;
   uint64_t game_tic() const { return game_tic_; }
   bool has_menus() const { return art_ && art_->complete(); }
   bool menu_active() const { return menu_ ? menu_->active() : text_menu_.is_open(); }
@@ -120,7 +118,7 @@ class FrontEnd {
   void draw_menus(render::Frame& frame) const;
   void draw_text_menu(render::Frame& frame) const;
   void level_music();
-  void play_music(const std::string& lump, bool loop);
+  void play_music(const play::Track& track) { music_ = track; }
   void apply_settings();
   front::MenuContext menu_context() const;
   std::array<std::optional<std::string>, front::kSaveSlots> read_slots() const;
@@ -155,7 +153,7 @@ class FrontEnd {
   int quit_delay_ = 0;  // tics the quit sound plays before the game goes
   bool screenshot_ = false, settings_changed_ = false;
   std::vector<Session::PlacedSound> menu_sounds_;
-  MusicCue music_;
+  play::Track music_{play::Music::kNone, false};
   Menu text_menu_;
   // Doom's melt from the last screen shown to the next (front/wipe.h).
   image::Image last_frame_, wipe_start_;

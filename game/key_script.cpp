@@ -65,8 +65,7 @@ ScriptResult run_key_script(FrontEnd& front, const std::vector<ScriptStep>& step
   std::filesystem::create_directories(out_dir);
   ScriptResult result;
   render::Frame frame(width, height);
-  std::string last_music;
-  uint64_t last_serial = front.music().serial;
+  play::Track last_music{play::Music::kNone, false};
   size_t next = 0;
   front.draw(frame, 1.0, {});
   for (uint64_t tic = 0;; ++tic) {
@@ -107,10 +106,11 @@ ScriptResult run_key_script(FrontEnd& front, const std::vector<ScriptStep>& step
     front.draw(frame, 1.0, {});  // a frame a tic, as the window draws: Doom's melt starts from the last
     for (const Session::PlacedSound& s : front.take_sounds())
       result.log += std::to_string(tic + 1) + " sound " + play::sound_lump_name(s.sound).substr(2) + "\n";
-    if (front.music().serial != last_serial) {
-      last_serial = front.music().serial;
-      result.log += std::to_string(tic + 1) + " music " + (front.music().lump.empty() ? "-" : front.music().lump) +
-                    (front.music().loop ? " loop" : " once") + "\n";
+    if (front.music() != last_music) {  // as a player hears it: a change of track (S_ChangeMusic)
+      last_music = front.music();
+      result.log += std::to_string(tic + 1) + " music " +
+                    (last_music.music == play::Music::kNone ? "-" : play::music_lump_name(last_music.music)) +
+                    (last_music.looping ? " loop" : " once") + "\n";
     }
   }
   write_file_atomically(out_dir / "log.txt", result.log);

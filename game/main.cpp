@@ -85,6 +85,15 @@ game::Settings read_settings(const std::filesystem::path& path) {
   return s;
 }
 
+// Doom's music: -nomusic, the sound font, the volume.
+void add_music_options(CLI::App& app, bool& no_music, std::string& soundfont, int& volume) {
+  app.add_flag("--nomusic", no_music, "no music (Doom's -nomusic)");
+  app.add_option("--soundfont", soundfont,
+                 "the music's SoundFont (.sf2); default: $SDL_SOUNDFONTS, else Debian's fluid-soundfont-gm");
+  app.add_option("--music-volume", volume, "Doom's music volume, 0 to 15 (default: the settings', 8)")
+      ->check(CLI::Range(0, 15));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -94,6 +103,9 @@ int main(int argc, char** argv) {
   std::string record, play, out_dir, resolution, window, renderer, autopilot, script, config;
   bool headless = false, fullscreen = false, windowed = false, no_vsync = false, map_reload = false, timedemo = false;
   bool all_keys = false, json = false, no_sound = false, no_status_bar = false, stats_only = false;
+  bool no_music = false;
+  std::string soundfont;
+  int music_volume = -1;
   game::GameFlags flags;
   int capture_every = 35;
   uint64_t quit_after = 0;
@@ -128,7 +140,8 @@ int main(int argc, char** argv) {
   app.add_flag("--no-vsync", no_vsync, "uncapped frame rate");
   app.add_option("--renderer", renderer, "bsp, painter, dda, sphere, sphere-naive or reference (default: the settings', bsp)");
   app.add_option("--fov", fov, "horizontal field of view")->check(cli::finite_range(30.0, 160.0))->capture_default_str();
-  app.add_flag("--nosound", no_sound, "no sound effects (headless runs are always silent)");
+  app.add_flag("--nosound", no_sound, "no sound effects and no music (headless runs are always silent)");
+  add_music_options(app, no_music, soundfont, music_volume);
   app.add_flag("--no-status-bar", no_status_bar, "WAD levels: the view fills the frame, without Doom's status bar");
   app.add_flag("--map-reload", map_reload, "recompile and reload the level when its source or WAD changes on disk");
   app.add_option("--autopilot", autopilot,
@@ -164,6 +177,7 @@ int main(int argc, char** argv) {
     if (!window.empty()) cli::parse_size(window, settings.window_width, settings.window_height, "--window");
     if (fullscreen || windowed) settings.fullscreen = fullscreen;
     if (!renderer.empty()) settings.renderer = renderer;
+    if (music_volume >= 0) settings.menu.music_volume = music_volume;
 
     // No level named: the WAD played last, or an IWAD found where Doom's are.
     if (level_args.path.empty() && level_args.iwad.empty()) {
@@ -230,6 +244,7 @@ int main(int argc, char** argv) {
       if (!window.empty()) out.window_width = saved.window_width, out.window_height = saved.window_height;
       if (fullscreen || windowed) out.fullscreen = saved.fullscreen;
       if (!renderer.empty()) out.renderer = saved.renderer;
+      if (music_volume >= 0 && out.menu.music_volume == music_volume) out.menu.music_volume = saved.menu.music_volume;
       std::string why;
       if (!settings_file.empty() && !game::save_settings(out, settings_file, why))
         std::fprintf(stderr, "game: settings not saved: %s\n", why.c_str());
@@ -238,6 +253,8 @@ int main(int argc, char** argv) {
     o.render_width = rw, o.render_height = rh;
     o.vsync = !no_vsync;
     o.sound = !no_sound;
+    o.music = !no_music && !no_sound;
+    o.soundfont = soundfont;
     o.keep_settings = keep_settings;
     o.wad_changed = settings.last_wad != saved.last_wad;
     if (title) {

@@ -10,6 +10,7 @@
 #include "engine/front/keys.h"
 #include "engine/image/image.h"
 #include "engine/util/file.h"
+#include "game/music_player.h"
 #include "game/sound_mixer.h"
 
 namespace p3d::game {
@@ -196,10 +197,13 @@ class Window {
     want.samples = 512;
     want.callback = [](void* self, Uint8* bytes, int length) {
       auto* w = static_cast<Window*>(self);
-      w->mixer_->mix(std::span<int16_t>(reinterpret_cast<int16_t*>(bytes), size_t(length) / sizeof(int16_t)));
+      const std::span<int16_t> stereo(reinterpret_cast<int16_t*>(bytes), size_t(length) / sizeof(int16_t));
+      w->mixer_->mix(stereo);
+      if (w->music_) w->music_->mix(stereo);  // added to the effects
     };
     want.userdata = this;
     mixer_.emplace(want.freq, [this](play::Sound s) { return front_.sound_clip(s); });
+    if (o_.music) open_music(want.freq);
     audio_ = SDL_OpenAudioDevice(nullptr, 0, &want, &have, 0);
     if (!audio_) {
       std::fprintf(stderr, "game: no sound (%s)\n", SDL_GetError());
@@ -212,6 +216,46 @@ class Window {
     if (!audio_) return;
     SDL_LockAudioDevice(audio_);
     mixer_->set_volume(settings_.menu.sfx_volume * 8);  // Doom's S_SetSfxVolume
+    if (music_) music_->set_volume(settings_.menu.music_volume);
+    SDL_UnlockAudioDevice(audio_);
+  }
+
+  // ---- music: the player made before the device starts calling it; its sound font
+  // loads on a thread of its own meanwhile
+  void open_music(int rate) {
+    std::string why;
+    const std::optional<std::filesystem::path> font = find_soundfont(o_.soundfont, why);
+    if (!font) {
+      std::fprintf(stderr, "game: no music: %s\n", why.c_str());
+      return;
+    }
+    music_ = std::make_unique<MusicPlayer>(MusicOptions{rate, *font});
+    music_->set_volume(settings_.menu.music_volume);
+  }
+
+  // Once a frame: the track Doom plays now (the map's, the intermission's) started when
+  // it changes, read from the WADs outside the device's lock.
+  void update_music() {
+    if (!music_ || !audio_) return;
+    if (music_->failed()) {
+      std::fprintf(stderr, "game: no music: %s\n", music_->problem().c_str());
+      SDL_LockAudioDevice(audio_);  // the callback looks at music_
+      const std::unique_ptr<MusicPlayer> gone = std::move(music_);
+      SDL_UnlockAudioDevice(audio_);
+      return;
+    }
+    if (front_.paused() != music_->paused()) {  // Doom's pause holds the music too (S_PauseSound)
+      SDL_LockAudioDevice(audio_);
+      front_.paused() ? music_->pause() : music_->resume();
+      SDL_UnlockAudioDevice(audio_);
+    }
+    const play::Track want = front_.music();
+    if (want == music_track_) return;  // Doom's S_ChangeMusic: the same track goes on
+    music_track_ = want;
+    std::optional<wad::MidiSong> song = front_.music_song(want.music);
+    SDL_LockAudioDevice(audio_);
+    if (song) music_->play(std::move(*song), want.looping);
+    else music_->stop();
     SDL_UnlockAudioDevice(audio_);
   }
 
@@ -228,9 +272,10 @@ class Window {
     SDL_UnlockAudioDevice(audio_);
   }
 
-  // What the tics asked for: sounds, settings to apply and keep, the quit.
+  // What the tics asked for: sounds and music, settings to apply and keep, the quit.
   void after_tics() {
     play_sounds();
+    update_music();
     if (front_.settings_changed()) {
       apply_volumes();
       if (o_.keep_settings) o_.keep_settings(settings_);
@@ -371,6 +416,8 @@ class Window {
   size_t played_ = 0;
   std::optional<Autopilot> autopilot_;
   std::optional<SoundMixer> mixer_;
+  std::unique_ptr<MusicPlayer> music_;
+  play::Track music_track_{play::Music::kNone, false};  // what the player was last asked to play
   SDL_AudioDeviceID audio_ = 0;
 };
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "game/autopilot.h"
@@ -17,7 +18,9 @@ namespace p3d::game {
 struct WindowOptions {
   int render_width = 0, render_height = 0;  // 0: render at the window's size
   bool vsync = true;
-  bool sound = true;                        // Doom's sound effects from the level's WADs
+  bool sound = true;                        // Doom's sound effects (and music) from the level's WADs
+  bool music = true;                        // Doom's music, through FluidSynth (game/music_player.h)
+  std::string soundfont;                    // the music's sound font; empty: find_soundfont's
   bool map_reload = false;                  // recompile the source map when it changes on disk
   std::filesystem::path record;             // write the tics played to this demo on exit
   std::optional<play::Demo> play;           // replay this demo, then quit

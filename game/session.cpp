@@ -79,8 +79,10 @@ void Session::start_world(const play::Inventory* carried) {
     const std::string map_name = bsp::resolve_map_name(wads, source_.map);
     o = play::game_options_for(wads, map_name, skill_);
     map = play::map_from_wads(wads, map_name, *level_);
+    choose_music(map_name);
   } else {
     map = play::map_from_level(*level_);
+    choose_music("");
   }
   o.fast = flags_.fast;
   o.respawn = flags_.respawn;
@@ -319,6 +321,14 @@ void Session::keep_sounds() {
     else
       sounds_.push_back({e.sound, e.origin, geom::Vec2(play::to_double(e.x), play::to_double(e.y))});
   }
+}
+
+// Doom's S_Start and WI_Ticker: the map's track; the tally's, Doom II's (D_DM2INT)
+// after its MAPxx maps, else Doom's (D_INTER).
+void Session::choose_music(const std::string& map_name) {
+  map_music_ = play::map_track(map_name);
+  tally_music_ = map_music_.music == play::Music::kNone ? play::Track{}
+                                                          : play::intermission_track(map_name.rfind("MAP", 0) == 0);
 }
 
 const play::SoundClip* Session::sound_clip(play::Sound sound) {

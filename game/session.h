@@ -20,6 +20,7 @@
 #include "engine/play/demo.h"
 #include "engine/play/hud_font.h"
 #include "engine/play/intermission.h"
+#include "engine/play/music.h"
 #include "engine/play/sound.h"
 #include "engine/play/status_bar.h"
 #include "engine/play/weapon_view.h"
@@ -131,6 +132,11 @@ class Session {
   // once the thing is gone.
   std::optional<geom::Vec2> sound_origin(uint64_t origin) const;
 
+  // ---- music (the window's MusicPlayer plays it)
+  // What Doom plays now (engine/play/music.h): the map's track, or the intermission's
+  // during the tally; kNone for a level that is no Doom map.
+  play::Track music() const { return intermission_ ? tally_music_ : map_music_; }
+
   // ---- rendering
   // Switches renderer; false (with a message) if it cannot draw this level. `announce`:
   // say which renderer now draws (a key pressed), not at the start.
@@ -186,6 +192,7 @@ class Session {
   void start_world(const play::Inventory* carried);
   void after_tic();
   void keep_sounds();  // the tic's, placed
+  void choose_music(const std::string& map_name);  // "" for a level that is no Doom map
   bool doom_map_numbers(int& episode, int& number) const;
   bool doom_messages(const render::Frame& frame) const;  // drawn in Doom's font as part of its screen
   Pose pose_now() const;
@@ -219,6 +226,7 @@ class Session {
   std::vector<PlacedSound> sounds_;
   bool listening_ = false;
   std::unique_ptr<SoundBank> sound_bank_;
+  play::Track map_music_, tally_music_;  // the map's (S_Start) and its intermission's (WI_Ticker)
   bool recording_on_ = false, doom_turns_ = false;
   play::Demo recording_;
   std::optional<FileWatch> watch_;

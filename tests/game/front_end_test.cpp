@@ -27,12 +27,12 @@ TEST(FrontEnd, TheTitleLoopShowsThePageThenADemoAndAnyKeyOpensTheMenu) {
   Settings settings;
   FrontEnd f(freedoom2(), settings, {});
   EXPECT_FALSE(f.session()) << "TITLEPIC first";
-  EXPECT_EQ(f.music().lump, "D_DM2TTL");
-  EXPECT_FALSE(f.music().loop) << "Doom plays the title music once";
+  EXPECT_EQ(f.music(), (play::Track{play::Music::kDm2ttl, false})) << "Doom plays the title music once";
   for (int t = 0; t < 11 * 35 + 1; ++t) f.tic();
   ASSERT_TRUE(f.session()) << "DEMO1 after eleven seconds";
   EXPECT_FALSE(f.playing()) << "a demo is watched, not played";
   EXPECT_EQ(f.session()->map_name(), "MAP15") << "freedoom2's DEMO1";
+  EXPECT_EQ(f.music(), (play::Track{play::Music::kRunni2, true})) << "MAP15's own track";
   const uint64_t before = f.session()->tics();
   f.tic();
   EXPECT_EQ(f.session()->tics(), before + 1);
@@ -84,7 +84,7 @@ TEST(FrontEnd, EndGameGoesBackToTheTitleAndQuitWaitsForItsSound) {
   press(f, 'y');
   f.tic();
   EXPECT_FALSE(f.session()) << "back on the title page";
-  EXPECT_EQ(f.music().lump, "D_DM2TTL");
+  EXPECT_EQ(f.music().music, play::Music::kDm2ttl);
   press(f, front::kKeyF10);
   press(f, 'y');
   EXPECT_FALSE(f.quit_requested()) << "the quit sound plays first";
@@ -96,13 +96,14 @@ TEST(FrontEnd, EndGameGoesBackToTheTitleAndQuitWaitsForItsSound) {
 TEST(FrontEnd, MenuSoundsAndMusicAreLoggedByAKeyScript) {
   Settings settings;
   FrontEnd f(freedoom2(), settings, {});
-  const auto steps = parse_key_script("3 key escape\n5 key down\n8 key enter\n10 end\n", "s");
+  const auto steps = parse_key_script("3 key escape\n8 key enter\n9 key enter\n12 end\n", "s");
   const std::filesystem::path out = test::temp_dir("front_end_log");
   const ScriptResult r = run_key_script(f, steps, out, 320, 200);
-  EXPECT_EQ(r.tics, 10u);
+  EXPECT_EQ(r.tics, 12u);
   EXPECT_NE(r.log.find("4 sound SWTCHN"), std::string::npos) << r.log;
-  EXPECT_NE(r.log.find("6 sound PSTOP"), std::string::npos) << r.log;
   EXPECT_NE(r.log.find("9 sound PISTOL"), std::string::npos) << r.log;
+  EXPECT_NE(r.log.find("1 music D_DM2TTL once"), std::string::npos) << r.log;
+  EXPECT_NE(r.log.find("10 music D_RUNNIN loop"), std::string::npos) << r.log << " (MAP01's, from the tic it starts)";
 }
 
 TEST(KeyScript, BadStepsNameTheirLine) {
