@@ -410,6 +410,7 @@ void FrontEnd::tic(const play::DemoTic& player) {
       session_->tic(demo_[demo_tic_++]);
       break;
     case State::kLevel: level_tic(player); break;
+    case State::kFinale: finale_tic(player); break;
   }
 }
 
@@ -435,18 +436,58 @@ void FrontEnd::level_tic(const play::DemoTic& player) {
   else
     s.tic(player);
   if (s.exited() == play::ExitKind::kNone || !user_game_) return;
+  if (mode_ != front::GameMode::kCommercial && start_finale()) return;  // Doom's eighth maps: no tally
   bool tally = false;
   change_screen([&] { tally = s.start_intermission(); });
   if (tally) play_music(s.music());
   else next_map();
 }
 
+// Doom's G_WorldDone after the tally: Doom II's finale between clusters, or the next
+// map; after the last, the title.
 void FrontEnd::next_map() {
+  if (mode_ == front::GameMode::kCommercial && start_finale()) return;
   if (loop_ && session_->next_map_name().empty()) {
     start_title();  // the end of the episode or the game
     return;
   }
   change_screen([&] { session_->enter_next_map(); });
+  apply_settings();
+  level_music();
+}
+
+// F_StartFinale where Doom has one after the map just left; false where it has none.
+bool FrontEnd::start_finale() {
+  int episode = 0, map = 0;
+  const std::string name = session_->map_name();
+  if (!menu_ || (std::sscanf(name.c_str(), "MAP%d", &map) != 1 && std::sscanf(name.c_str(), "E%dM%d", &episode, &map) != 2))
+    return false;
+  if (!front::has_finale(mode_, episode, map, session_->exited() == play::ExitKind::kSecret)) return false;
+  change_screen([&] {
+    finale_.emplace(mode_, episode, map, [this](const std::string& m) { return menu_->doom_text(m); });
+    state_ = State::kFinale;
+  });
+  play_music(finale_->music());
+  return true;
+}
+
+// F_Ticker: Doom II's text gives way at a button (to the next map, or after MAP30 the
+// end); Doom's turns into its episode's last picture.
+void FrontEnd::finale_tic(const play::DemoTic& player) {
+  const front::Finale::Next next = finale_->tic(player.cmd.buttons != 0);
+  for (play::Sound s : finale_->take_sounds()) menu_sounds_.push_back({s, 0, std::nullopt});
+  if (finale_->screen_changed()) change_screen([] {});
+  play_music(finale_->music());
+  if (next == front::Finale::Next::kStay) return;
+  finale_.reset();
+  if (next == front::Finale::Next::kEnd || session_->next_map_name().empty()) {
+    start_title();
+    return;
+  }
+  change_screen([&] {
+    session_->enter_next_map();
+    state_ = State::kLevel;
+  });
   apply_settings();
   level_music();
 }
@@ -499,7 +540,9 @@ void FrontEnd::draw(render::Frame& frame, double alpha, const FrameTimes& times)
 }
 
 void FrontEnd::draw_state(render::Frame& frame, double alpha, const FrameTimes& times) {
-  if (state_ == State::kPage) {
+  if (state_ == State::kFinale) {
+    finale_->draw(*art_, *stack_, frame, palette_);
+  } else if (state_ == State::kPage) {
     std::fill(frame.pixels.begin(), frame.pixels.end(), palette_.empty() ? 0xFF000000u : palette_[0]);
     art_->draw_page(page_, frame, palette_);
   } else if (session_) {

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "engine/front/demo_loop.h"
+#include "engine/front/finale.h"
 #include "engine/front/menu.h"
 #include "engine/front/menu_art.h"
 #include "engine/front/wipe.h"
@@ -103,7 +104,7 @@ class FrontEnd {
   std::filesystem::path slot_path(int slot) const;
 
  private:
-  enum class State : uint8_t { kPage, kDemo, kLevel };
+  enum class State : uint8_t { kPage, kDemo, kLevel, kFinale };
   void start(const bsp::LevelSource& wads);
   void advance_demo();
   bool start_demo(const std::string& lump);
@@ -113,6 +114,8 @@ class FrontEnd {
   play::DemoTic command_from_keys();
   void level_tic(const play::DemoTic& player);
   void next_map();
+  bool start_finale();
+  void finale_tic(const play::DemoTic& player);
   void change_screen(const std::function<void()>& change);
   void draw_state(render::Frame& frame, double alpha, const FrameTimes& times);
   void draw_menus(render::Frame& frame) const;
@@ -130,6 +133,7 @@ class FrontEnd {
   std::unique_ptr<front::MenuArt> art_;
   std::optional<front::Menu> menu_;
   std::optional<front::DemoLoop> loop_;
+  std::optional<front::Finale> finale_;
   std::unique_ptr<SoundBank> sounds_;
   std::vector<uint32_t> palette_;
   front::GameMode mode_ = front::GameMode::kCommercial;

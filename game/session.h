@@ -74,6 +74,9 @@ class Session {
   void tic(const play::DemoTic& tic);
   void tic(const play::TicCmd& cmd) { tic(play::DemoTic{cmd, 0}); }
   play::ExitKind exited() const { return world_->exit(); }
+  // The level ends here as if its exit were taken (Doom's G_ExitLevel), for tests and
+  // scripts that need the finale or the tally without walking there.
+  void end_level(bool secret) { world_->exit_level(secret); }
   // Doom's M_Random, which the status bar's face and the screen's melt draw from.
   play::Random& screen_random() { return other_random_; }
   // A tic in which the world waits (a menu open, or paused): what Doom's status bar

@@ -8,7 +8,6 @@ namespace {
 
 constexpr int kLineHeight = 16;
 constexpr int kSkullOffset = -32;  // Doom's SKULLXOFF
-constexpr int kTextLineHeight = 12;
 
 }  // namespace
 
@@ -36,13 +35,13 @@ void MenuArt::put(const std::string& name, int x, int y, image::Image& frame, co
 }
 
 void MenuArt::write_text(int x, int y, const std::string& text, image::Image& frame,
-                         const std::vector<uint32_t>& palette, const play::ScreenPlace& at) const {
+                         const std::vector<uint32_t>& palette, const play::ScreenPlace& at, int line_height) const {
   if (!font_) return;
   int cx = x, cy = y;
   for (char c : text) {
     if (c == '\n') {
       cx = x;
-      cy += kTextLineHeight;
+      cy += line_height;
       continue;
     }
     const wad::IndexedImage* glyph = font_->glyph(c);
@@ -53,6 +52,21 @@ void MenuArt::write_text(int x, int y, const std::string& text, image::Image& fr
     if (cx + glyph->width > play::kScreenWidth) break;  // Doom stops writing at the edge
     play::draw_picture(frame, *glyph, cx, cy, at, palette);
     cx += glyph->width;
+  }
+}
+
+void MenuArt::draw_column(const wad::IndexedImage& pic, int column, int x, image::Image& frame,
+                          const std::vector<uint32_t>& palette, const play::ScreenPlace& at) const {
+  if (column < 0 || column >= pic.width) return;
+  const int s = at.scale;
+  for (int r = 0; r < pic.height; ++r) {
+    if (!pic.opaque[pic.at(column, r)]) continue;
+    const uint32_t colour = palette[pic.indices[pic.at(column, r)]];
+    for (int dy = 0; dy < s; ++dy)
+      for (int dx = 0; dx < s; ++dx) {
+        const int px = at.left + x * s + dx, py = at.top + r * s + dy;
+        if (px >= 0 && py >= 0 && px < frame.width && py < frame.height) frame.at(px, py) = colour;
+      }
   }
 }
 

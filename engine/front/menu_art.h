@@ -35,9 +35,14 @@ class MenuArt {
   // in Doom's screen coordinates.
   void draw_pause(int view_x, int view_width, int view_y, image::Image& frame,
                   const std::vector<uint32_t>& palette) const;
-  // Doom's M_WriteText: lines 12 rows apart, stopping at the screen's right edge.
+  // Doom's M_WriteText: lines 12 rows apart (the finale's 11), stopping at the screen's
+  // right edge.
   void write_text(int x, int y, const std::string& text, image::Image& frame, const std::vector<uint32_t>& palette,
-                  const play::ScreenPlace& at) const;
+                  const play::ScreenPlace& at, int line_height = 12) const;
+  // Column `column` of a picture at Doom's screen column x, its posts from the top row
+  // (Doom's F_DrawPatchCol: no offsets).
+  void draw_column(const wad::IndexedImage& pic, int column, int x, image::Image& frame,
+                   const std::vector<uint32_t>& palette, const play::ScreenPlace& at) const;
   // Doom's M_StringWidth, for the menu's typed descriptions.
   int text_width(const std::string& text) const { return font_ ? font_->width(text) : int(text.size()) * 8; }
 

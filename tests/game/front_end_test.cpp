@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "engine/front/keys.h"
 #include "engine/image/image.h"
 #include "engine/util/error.h"
@@ -91,6 +93,43 @@ TEST(FrontEnd, EndGameGoesBackToTheTitleAndQuitWaitsForItsSound) {
   int tics = 0;
   while (!f.quit_requested() && tics < 100) f.tic(), ++tics;
   EXPECT_EQ(tics, 53) << "Doom's 105 VBLs";
+}
+
+// Doom II's MAP06: the tally, then C1TEXT typed over its flat with D_READ_M, then at a
+// button MAP07; Doom's E1M8: the text at once (no tally), then the episode's picture.
+TEST(FrontEnd, FinalesBetweenClustersAndAfterEpisodes) {
+  Settings settings;
+  FrontEnd f(freedoom2(), settings, {});
+  f.new_game(1, 6, 3);
+  f.tic();
+  f.session()->end_level(false);
+  f.tic();
+  ASSERT_TRUE(f.session()->in_intermission());
+  EXPECT_EQ(f.music().music, play::Music::kDm2int);
+  f.tic(play::DemoTic{play::TicCmd{0, 0, 0, play::kBtUse}, 0});
+  EXPECT_FALSE(f.in_level()) << "the finale's text";
+  EXPECT_EQ(f.music(), (play::Track{play::Music::kReadM, true}));
+  render::Frame frame(320, 200);
+  for (int t = 0; t < 300; ++t) f.tic();
+  f.draw(frame, 1, {});
+  std::set<uint32_t> colours(frame.pixels.begin(), frame.pixels.end());
+  EXPECT_GT(colours.size(), 8u) << "a flat and letters";
+  f.tic(play::DemoTic{play::TicCmd{0, 0, 0, play::kBtAttack}, 0});
+  ASSERT_TRUE(f.in_level());
+  EXPECT_EQ(f.session()->map_name(), "MAP07");
+  EXPECT_EQ(f.music().music, play::Music::kShawn) << "MAP07's track";
+
+  FrontEnd doom({{}, {test::freedoom_path("freedoom1.wad")}, ""}, settings, {});
+  doom.new_game(1, 8, 3);
+  doom.tic();
+  doom.session()->end_level(false);
+  doom.tic();
+  EXPECT_FALSE(doom.in_level());
+  EXPECT_FALSE(doom.session()->in_intermission()) << "no tally after an episode's end";
+  EXPECT_EQ(doom.music(), (play::Track{play::Music::kVictor, true}));
+  for (int t = 0; t < 3000; ++t) doom.tic();
+  doom.draw(frame, 1, {});
+  EXPECT_FALSE(doom.in_level()) << "the episode ends on its picture, for as long as the player looks";
 }
 
 TEST(FrontEnd, MenuSoundsAndMusicAreLoggedByAKeyScript) {
