@@ -257,6 +257,7 @@ int main(int argc, char** argv) {
     o.soundfont = soundfont;
     o.keep_settings = keep_settings;
     o.wad_changed = settings.last_wad != saved.last_wad;
+    o.quit_after_tics = quit_after;
     if (title) {
       game::FrontEnd front(source, settings, front_options);
       return game::run_window(front, settings, o);
@@ -296,7 +297,6 @@ int main(int argc, char** argv) {
     o.timedemo = timedemo;
     if (timedemo) o.vsync = false;
     if (!autopilot.empty()) o.autopilot = route(autopilot);
-    o.quit_after_tics = quit_after;
     front_options.watching = demo || !autopilot.empty();
     game::FrontEnd front(std::move(session), settings, front_options);
     return game::run_window(front, settings, o);

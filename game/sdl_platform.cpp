@@ -397,7 +397,7 @@ class Window {
     }
     const Session* s = front_.session();
     if (s && (o_.play || autopilot_) && s->exited() != play::ExitKind::kNone) running_ = false;  // a demo or a route holds one level
-    if (s && o_.quit_after_tics && s->tics() >= o_.quit_after_tics) running_ = false;
+    if (o_.quit_after_tics && ++tics_run_ >= o_.quit_after_tics) running_ = false;
   }
 
   FrontEnd& front_;
@@ -414,6 +414,7 @@ class Window {
   double summed_start_ = now_seconds();
   bool running_ = true;
   size_t played_ = 0;
+  uint64_t tics_run_ = 0;
   std::optional<Autopilot> autopilot_;
   std::optional<SoundMixer> mixer_;
   std::unique_ptr<MusicPlayer> music_;
