@@ -225,8 +225,11 @@ class SaveReader {
   }
   size_t position() const { return pos_; }
   size_t remaining() const { return bytes_.size() - pos_; }
-  // The section being read, for truncation messages.
-  void section(const char* name) { section_ = name; }
+  // The section being read, for truncation messages, and what a cut there may mean.
+  void section(const char* name, const char* hint = "") {
+    section_ = name;
+    hint_ = hint;
+  }
   [[noreturn]] void fail_at(size_t at, const std::string& message) const {
     throw Error(what_ + ": byte " + std::to_string(at) + ": " + message);
   }
@@ -235,13 +238,18 @@ class SaveReader {
   void need(size_t n) const {
     if (n > remaining())
       fail_at(bytes_.size(), std::string("truncated in ") + section_ + " (" + std::to_string(n - remaining()) +
-                                 " more bytes expected)");
+                                 " more bytes expected)" + hint_);
   }
   std::span<const uint8_t> bytes_;
   std::string what_;
   size_t pos_ = 0;
   const char* section_ = "the header";
+  const char* hint_ = "";
 };
+
+// A save of another map of the same name (another game's) runs out of bytes or meets
+// bytes that are no record where this map's records should be.
+constexpr char kAnotherMap[] = " (a save of another game's map of this name, or cut short)";
 
 // ---- [write] ------------------------------------------------------------------
 
@@ -772,13 +780,13 @@ DoomSave parse_doom_save(std::span<const uint8_t> bytes, const std::string& what
   in.pad();
   s.player_at = in.position();
   s.player = read_player(in);
-  in.section("the sectors");
+  in.section("the sectors", kAnotherMap);
   s.world_at = in.position();
   for (size_t i = 0; i < map.sectors.size(); ++i) {
     DoomSector& d = s.sectors.emplace_back();
     for (int16_t* v : {&d.floor_height, &d.ceiling_height, &d.floor_pic, &d.ceiling_pic, &d.light, &d.special, &d.tag}) *v = in.i16();
   }
-  in.section("the lines");
+  in.section("the lines", kAnotherMap);
   for (const Line& line : map.lines) {
     DoomLine& d = s.lines.emplace_back();
     d.flags = in.i16(), d.special = in.i16(), d.tag = in.i16();
@@ -789,20 +797,21 @@ DoomSave parse_doom_save(std::span<const uint8_t> bytes, const std::string& what
       d.sides[k] = side;
     }
   }
-  in.section("the things");
+  in.section("the things", kAnotherMap);
   s.thinkers_at = in.position();
   for (;;) {
     const size_t at = in.position();
     const uint8_t cls = in.u8();
     if (cls == kTcEnd) break;
-    if (cls != kTcMobj) in.fail_at(at, "unknown thinker class " + std::to_string(cls) + " (Doom's: 0 end, 1 thing)");
+    if (cls != kTcMobj)
+      in.fail_at(at, "unknown thinker class " + std::to_string(cls) + " (Doom's: 0 end, 1 thing)" + kAnotherMap);
     in.pad();
     s.mobj_at.push_back(in.position());
     s.mobjs.push_back(read_mobj(in));
   }
   if (std::none_of(s.mobjs.begin(), s.mobjs.end(), [](const DoomMobj& m) { return m.player == 1; }))
     in.fail_at(s.thinkers_at, "no thing is player 1's");
-  in.section("the specials");
+  in.section("the specials", kAnotherMap);
   s.specials_at = in.position();
   for (;;) {
     const size_t at = in.position();
