@@ -913,6 +913,9 @@ void apply_world(World& w, const DoomSave& s, const DoomNumbers& numbers, Warnin
                          numbers.flat_name(number) + ") is not in this level (kept " + name(pic) + ")");
   };
   auto texture = [&](int number, int& t, size_t at, size_t line) {
+    // Doom's texture 0 is "-" and also the first of TEXTURE1 (which Doom never draws):
+    // a side that has either keeps it.
+    if (number == 0 && numbers.texture_number(t) == 0) return;
     if (const auto found = numbers.level_texture(number)) {
       t = *found;
       return;

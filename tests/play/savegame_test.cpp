@@ -15,6 +15,7 @@
 #include "engine/util/bytes.h"
 #include "engine/util/file.h"
 #include "tests/support/support.h"
+#include "tests/support/wad_writer.h"
 
 namespace p3d::play {
 namespace {
@@ -265,6 +266,141 @@ TEST(Saves, HeaderAndDescription) {
   EXPECT_EQ(std::string(bytes.begin() + 24, bytes.begin() + 35), "version 109");
   EXPECT_EQ(save_description(bytes), "a very long description");
   EXPECT_EQ(save_description(std::vector<uint8_t>(30, 'x')), std::nullopt);
+}
+
+// What Freedoom's demos may not show: a perpetual lift and a crusher stopped in stasis
+// (Doom's format drops the lift), fire flickers (not in Doom's format), a switch
+// counting down to flip back, strobes, flashes and glows. A corridor east with lines
+// that start and stop them, the switch on its east wall.
+test::TestMap movers_map() {
+  test::TestMap m;
+  const int xs[] = {0, 256, 512, 768, 1024, 1536, 1792, 2048};
+  for (int i = 0; i < 7; ++i) m.add_room({{xs[i], 0}, {xs[i], 128}, {xs[i + 1], 128}, {xs[i + 1], 0}}, {});
+  auto north = [&](int x0, int x1, int y0, test::TestMap::Sector sector) {
+    m.add_room({{x0, y0}, {x0, y0 + 128}, {x1, y0 + 128}, {x1, y0}}, sector);
+  };
+  north(0, 256, 128, {0, 128, "FLOOR", "CEIL", 160, 0, 1});        // the perpetual lift
+  north(0, 256, 256, {64, 192, "STEP", "CEIL", 160, 0, 0});         // its top
+  north(256, 512, 128, {0, 128, "FLOOR", "CEIL", 160, 0, 2});      // the crusher
+  north(256, 512, 256, {0, 128, "FLOOR", "CEIL", 200, 8, 0});      // a glow
+  north(512, 768, 128, {0, 128, "NUKAGE1", "CEIL", 192, 17, 0});   // a fire flicker
+  north(768, 1024, 128, {0, 128, "FLOOR", "F_SKY1", 192, 1, 0});   // a flash
+  north(1024, 1536, 128, {0, 128, "FLOOR", "CEIL", 192, 2, 0});    // a strobe
+  north(1792, 2048, 128, {64, 192, "STEP", "CEIL", 160, 0, 3});    // the switch's lift
+  // Start the lift (W1 53) and the crusher (W1 6), stop them (W1 54, 57), start them
+  // again from stasis (WR 87, 73).
+  const std::pair<int, int> crossings[] = {{256, 53}, {512, 6}, {768, 54}, {1024, 57}, {1536, 87}, {1792, 73}};
+  for (const auto& [x, special] : crossings) {
+    test::TestMap::Line& l = m.line_at({x, 0}, {x, 128});
+    l.special = special;
+    l.tag = special == 53 || special == 54 || special == 87 ? 1 : 2;
+  }
+  test::TestMap::Line& sw = m.line_at({2048, 128}, {2048, 0});
+  sw.special = 62;  // SR: the lift down, the switch back after a second
+  sw.tag = 3;
+  m.sides[size_t(sw.front)].middle = "SW1BRCOM";
+  m.things.push_back({64, 64, 0, 1});
+  return m;
+}
+
+// The test art with Doom's switch pair SW1BRCOM and SW2BRCOM in a TEXTURE2 (Doom knows
+// its switches by name), numbered after TEXTURE1's.
+wad::Stack movers_wad() {
+  ByteWriter textures;
+  textures.u32(2), textures.u32(12), textures.u32(12 + 32);
+  for (const auto& [name, patch] : {std::pair{"SW1BRCOM", 0}, std::pair{"SW2BRCOM", 2}}) {
+    textures.raw(std::span(reinterpret_cast<const uint8_t*>(name), 8));
+    textures.u32(0), textures.u16(64), textures.u16(72), textures.u32(0), textures.u16(1);  // one patch
+    textures.u16(0), textures.u16(0), textures.u16(uint16_t(patch)), textures.u16(1), textures.u16(0);
+  }
+  test::WadWriter w(true);
+  test::add_test_art(w);
+  w.lump("TEXTURE2", textures.release());
+  movers_map().add_to(w, "MAP01");
+  wad::Stack stack;
+  stack.add(wad::Wad(w.bytes(), "movers.wad"));
+  return stack;
+}
+
+TEST(Saves, LiftsAndCrushersInStasisFlickersAndSwitchesGoOnExactly) {
+  const wad::Stack wads = movers_wad();
+  const level::Level level = bsp::build_wad_map(wads, "MAP01", {}, nullptr);
+  const GameOptions options = game_options_for(wads, "MAP01", 3);
+  const DoomNumbers numbers(wads, level);
+  auto fresh = [&] { return std::make_unique<World>(map_from_wads(wads, "MAP01", level), level, options, Random{}); };
+  // Run east, pressing use at the far wall.
+  auto input = [](const World& w, int t) {
+    return TicCmd{50, 0, 0, uint8_t(w.player().mo->x > 1950 * kFracUnit && t % 2 ? kBtUse : 0)};
+  };
+  struct Seen {
+    bool lift_stopped = false, crusher_stopped = false, flicker = false, button = false;
+  };
+  auto seen = [](const World& w) {
+    Seen s;
+    for (const Plat* p : w.active_plats_) s.lift_stopped |= p && !p->active;
+    for (const Ceiling* c : w.active_ceilings_) s.crusher_stopped |= c && !c->active;
+    for (const World::Button& b : w.buttons_) s.button |= b.timer > 0;
+    s.flicker = w.thinker_count() > w.things().size() + 4;
+    return s;
+  };
+  const int tics = 260;
+  auto plain = fresh();
+  int stasis = -1, button = -1;
+  for (int t = 0; t < tics; ++t) {
+    plain->tick(input(*plain, t));
+    const Seen s = seen(*plain);
+    if (stasis < 0 && s.lift_stopped && s.crusher_stopped && s.flicker) stasis = t + 5;
+    if (button < 0 && s.button) button = t + 2;
+  }
+  ASSERT_GT(stasis, 0) << "the lift and the crusher stopped";
+  ASSERT_GT(button, stasis) << "then the switch counts";
+  const std::vector<int> save_tics = {20, 45, stasis, button};
+
+  auto saved = fresh();
+  auto again = fresh();
+  for (int t = 0; t < tics; ++t) {
+    saved->tick(input(*saved, t));
+    if (std::find(save_tics.begin(), save_tics.end(), t) == save_tics.end()) continue;
+    const std::vector<uint8_t> bytes = write_save(*saved, numbers, "movers", {});
+    if (t == stasis) {
+      const DoomSave doom = parse_doom_save(bytes, "movers", saved->map());
+      EXPECT_TRUE(std::none_of(doom.specials.begin(), doom.specials.end(), [](const DoomSpecial& sp) {
+        return std::holds_alternative<DoomPlat>(sp) && std::get<DoomPlat>(sp).sector == 7;
+      })) << "Doom's format drops the lift in stasis (sector 7)";
+      EXPECT_TRUE(std::any_of(doom.specials.begin(), doom.specials.end(), [](const DoomSpecial& sp) {
+        return std::holds_alternative<DoomCeiling>(sp) && !std::get<DoomCeiling>(sp).thinking;
+      })) << "and keeps a crusher in stasis, without its function";
+    }
+    const SaveHeader header = read_save_header(bytes, "movers");
+    if (t == button) {  // as Doom loads it: every texture and flat by Doom's numbers, back to the level's
+      auto doom = fresh();
+      carry_over(*doom, *saved, header);
+      EXPECT_TRUE(read_save(*doom, bytes, "movers", numbers, true).warnings.empty());
+      for (size_t i = 0; i < saved->map().sides.size(); ++i) {
+        const Side &a = saved->map().sides[i], &b = doom->map().sides[i];
+        EXPECT_EQ(std::tuple(a.top, a.middle, a.bottom), std::tuple(b.top, b.middle, b.bottom)) << "side " << i;
+      }
+      for (size_t i = 0; i < saved->map().sectors.size(); ++i) {
+        const Sector &a = saved->map().sectors[i], &b = doom->map().sectors[i];
+        EXPECT_EQ(std::pair(a.floor_pic, a.ceiling_pic), std::pair(b.floor_pic, b.ceiling_pic)) << "sector " << i;
+      }
+      const auto sw_line = std::find_if(saved->map().lines.begin(), saved->map().lines.end(), [](const Line& l) { return l.special == 62; });
+      const int sw = sw_line->side[0];
+      EXPECT_EQ(level.textures[size_t(doom->map().sides[size_t(sw)].middle)].name, "SW2BRCOM") << "the switch, on";
+    }
+    auto loaded = fresh();
+    carry_over(*loaded, *saved, header);
+    read_save(*loaded, bytes, "movers", numbers);
+    EXPECT_EQ(write_save(*loaded, numbers, "movers", {}), bytes) << "tic " << t;
+    saved = std::move(loaded);
+  }
+  EXPECT_EQ(write_save(*saved, numbers, "end", {}), write_save(*plain, numbers, "end", {}));
+  EXPECT_EQ(saved->state().sectors.size(), plain->state().sectors.size());
+  for (size_t i = 0; i < plain->map().sectors.size(); ++i) {
+    EXPECT_EQ(saved->map().sectors[i].floor_height, plain->map().sectors[i].floor_height) << "sector " << i;
+    EXPECT_EQ(saved->map().sectors[i].ceiling_height, plain->map().sectors[i].ceiling_height) << "sector " << i;
+    EXPECT_EQ(saved->map().sectors[i].light, plain->map().sectors[i].light) << "sector " << i;
+  }
 }
 
 // ---- broken saves: refused with "<what>: byte N: ...", never a crash
