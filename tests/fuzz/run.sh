@@ -25,6 +25,7 @@ seed wad tests/fuzz/seeds/map01.wad
 seed udmf tests/fuzz/seeds/textmap.udmf
 seed lmp tests/fuzz/seeds/walk.lmp tests/fuzz/seeds/old.lmp
 seed dmx tests/fuzz/seeds/beep.dmx
+seed save tests/fuzz/seeds/room.dsg tests/golden/saves/*.dsg
 mkdir -p "$work/bsp"
 if [ -x build/tools/mapc ]; then
   build/tools/mapc tests/fuzz/seeds/room.map -o "$work/bsp/room.bsp" >/dev/null
@@ -32,7 +33,7 @@ if [ -x build/tools/mapc ]; then
 fi
 printf '| target | seconds | executions | coverage (edges) | crashes |\n|---|---:|---:|---:|---:|\n'
 status=0
-for target in map grid bsp demo cameras png wad udmf lmp dmx; do
+for target in map grid bsp demo cameras png wad udmf lmp dmx save; do
   mkdir -p "build-fuzz/crashes/$target"
   log="build-fuzz/fuzz_$target.log"
   if build-fuzz/tests/fuzz/fuzz_$target "$work/$target" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2560 \

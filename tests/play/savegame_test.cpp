@@ -14,6 +14,7 @@
 #include "engine/play/savegame.h"
 #include "engine/util/bytes.h"
 #include "engine/util/file.h"
+#include "tests/fuzz/save_map.h"
 #include "tests/support/support.h"
 #include "tests/support/wad_writer.h"
 
@@ -401,6 +402,19 @@ TEST(Saves, LiftsAndCrushersInStasisFlickersAndSwitchesGoOnExactly) {
     EXPECT_EQ(saved->map().sectors[i].ceiling_height, plain->map().sectors[i].ceiling_height) << "sector " << i;
     EXPECT_EQ(saved->map().sectors[i].light, plain->map().sectors[i].light) << "sector " << i;
   }
+}
+
+// fuzz_save's seed is a save of its map after a second of play (P3D_WRITE_SEEDS=1
+// writes it anew when the format changes).
+TEST(Saves, TheFuzzSeedIsASaveOfTheFuzzMap) {
+  const wad::Stack wads = fuzz::save_map_wads();
+  const level::Level level = bsp::build_wad_map(wads, "MAP01", {}, nullptr);
+  World w(map_from_wads(wads, "MAP01", level), level, game_options_for(wads, "MAP01", 3), Random{});
+  for (int t = 0; t < 35; ++t) w.tick(TicCmd{25, 0, 128, uint8_t(t == 20 ? kBtAttack : 0)});
+  const std::vector<uint8_t> bytes = write_save(w, DoomNumbers(wads, level), "fuzz seed", {});
+  const auto seed = test::source_dir() / "tests/fuzz/seeds/room.dsg";
+  if (std::getenv("P3D_WRITE_SEEDS")) write_file_atomically(seed, bytes);
+  EXPECT_EQ(read_file_bytes(seed), bytes) << "P3D_WRITE_SEEDS=1 writes it anew";
 }
 
 // ---- broken saves: refused with "<what>: byte N: ...", never a crash
