@@ -27,19 +27,23 @@
 #   exact:         our game loads its own save with our extension, against its replay
 #                  that never saved;
 # and the player (position, angle, momentum, health, view height, random index) is
-# compared tic by tic from N + 1 to the demo's end. Prints a Markdown table (tics in sync
-# after the load of as many compared) and writes DIR/table.md. Needs freedoom and a
-# Release build of game.
+# compared tic by tic from N + 1 to the demo's end. Two more columns: Chocolate Doom's
+# play after loading our save beside its play after loading its own (the two saves hold
+# the same game), and the first tic where Chocolate Doom's play after loading its save
+# parts from its play that never loaded (Doom's load resets the random index and more,
+# so the rest of the demo plays another game: what the columns before follow). Prints a
+# Markdown table (tics in sync after the load, of as many compared) and writes
+# DIR/table.md. Needs freedoom and a Release build of game.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-[ $# -ge 1 ] || { sed -n '2,32p' "$0"; exit 2; }
+[ $# -ge 1 ] || { sed -n '2,36p' "$0"; exit 2; }
 choc=$1; shift
 out=out/peer_saves build=build
 while [ $# -gt 0 ]; do
   case $1 in
     --out) out=$2; shift 2 ;;
     --build) build=$2; shift 2 ;;
-    --help|-h) sed -n '2,32p' "$0"; exit 0 ;;
+    --help|-h) sed -n '2,36p' "$0"; exit 0 ;;
     --*) echo "$0: unknown option $1" >&2; exit 2 ;;
     *) break ;;
   esac
@@ -71,6 +75,12 @@ ours() {
            $c["tic"] > 0 { print $c["tic"] - 1, $c["x_raw"], $c["y_raw"], $c["z_raw"], $c["angle_raw"], $c["momx_raw"],
                            $c["momy_raw"], $c["health"], $c["random"], $c["viewz_raw"] }' "$work/ours/stats.csv" > "$csv"
 }
+# parts A B N: the first tic after N where the traces differ ("never" if none).
+parts() {
+  awk -v n="$3" 'NR == FNR { a[$1] = $0; next }
+                 $1 > n && !found && a[$1] != $0 { found = $1 }
+                 END { print found ? found : "never" }' "$1" "$2"
+}
 # synced A B N: "in sync of compared" over the tics after N (from the first).
 synced() {
   awk -v n="$3" 'NR == FNR { if ($1 > n) a[$1] = $0; next }
@@ -84,8 +94,8 @@ if [ ${#specs[@]} -eq 0 ]; then
   for wad in freedoom1 freedoom2; do for d in 1 2 3 4; do specs+=("$wad:demo$d:"); done; done
   specs+=("freedoom2:recorded:")
 fi
-table="| demo | map | saved after tic | ours -> Chocolate Doom | Chocolate Doom -> ours | ours, exact |
-|---|---|---:|---:|---:|---:|"
+table="| demo | map | saved after tic | ours -> Chocolate Doom | Chocolate Doom -> ours | ours, exact | Chocolate Doom: our save as its own | Doom's load parts from the unsaved play at tic |
+|---|---|---:|---:|---:|---:|---:|---:|"
 echo "$table"
 for spec in "${specs[@]}"; do
   IFS=: read -r wad demo tics <<< "$spec"
@@ -107,7 +117,7 @@ for spec in "${specs[@]}"; do
     if [ "$wad" = freedoom2 ]; then map=$(printf 'MAP%02d' "$number"); else map="E${episode}M$number"; fi
     name=$wad\ $(echo "$demo" | tr a-z A-Z)
     [ "$demo" = recorded ] && name="$wad recorded_freedoom2_map01.lmp"
-    row="| $name | $map | $tic | $(synced "$work/c_ours.trace" "$work/o_ours.trace" "$tic") | $(synced "$work/c_choc.trace" "$work/o_choc.trace" "$tic") | $(synced "$work/o_plain.trace" "$work/o_exact.trace" "$tic") |"
+    row="| $name | $map | $tic | $(synced "$work/c_ours.trace" "$work/o_ours.trace" "$tic") | $(synced "$work/c_choc.trace" "$work/o_choc.trace" "$tic") | $(synced "$work/o_plain.trace" "$work/o_exact.trace" "$tic") | $(synced "$work/c_choc.trace" "$work/c_ours.trace" "$tic") | $(parts "$work/c_plain.trace" "$work/c_choc.trace" "$tic") |"
     echo "$row"
     table+=$'\n'"$row"
   done
