@@ -278,11 +278,11 @@ Extension read_extension(SaveReader& file, const DoomSave& doom, const World& w)
     if (t == level::kNone || (flat && t == level::kSky)) return;
     check_range(in, at, t, 0, textures - 1, flat ? "a flat" : "a texture");
   };
-  auto sized = [&](size_t expected, const char* what) {
+  auto sized = [&](size_t expected, const char* what, const char* where = "the map") {
     const size_t at = in.position();
     const uint32_t n = in.u32();
     if (n != expected)
-      in.fail_at(at, std::to_string(n) + " " + what + " in our extension, " + std::to_string(expected) + " in the map");
+      in.fail_at(at, std::to_string(n) + " " + what + " in our extension, " + std::to_string(expected) + " in " + where);
   };
   in.section("our extension's sectors");
   sized(map.sectors.size(), "sectors");
@@ -310,8 +310,8 @@ Extension read_extension(SaveReader& file, const DoomSave& doom, const World& w)
     for (int32_t& v : x.lines.emplace_back()) v = in.i32();
 
   in.section("our extension's thinkers");
-  sized(doom.mobjs.size(), "things");
-  sized(doom.specials.size(), "specials");
+  sized(doom.mobjs.size(), "things", "Doom's part");
+  sized(doom.specials.size(), "specials", "Doom's part");
   const uint32_t own = in.count(17, "own thinkers");
   for (uint32_t i = 0; i < own; ++i) {
     Extension::Own& o = x.own.emplace_back();

@@ -537,6 +537,22 @@ TEST_F(BrokenSaves, CountsThatDoNotFitTheMap) {
       << m;
   m = message(with_payload_u32(sectors_at + 4, 0x7fffffff));  // the first sector's floor: fine
   EXPECT_EQ(m, "");
+  // Then each sector (7 numbers, its sound target and mover, its things), the sides (5
+  // numbers each), the lines.
+  size_t sides_at = sectors_at + 4;
+  for (const Sector& sec : before_->map().sectors) {
+    sides_at += 4 * 7 + 4 + 4 + 4;
+    for (const Mobj* t = sec.thing_list; t; t = t->snext) sides_at += 4;
+  }
+  const uint32_t sides = uint32_t(before_->map().sides.size()), lines = uint32_t(before_->map().lines.size());
+  m = message(with_payload_u32(sides_at, sides - 1));
+  EXPECT_NE(m.find(std::to_string(sides - 1) + " sides in our extension, " + std::to_string(sides) + " in the map"), std::string::npos) << m;
+  m = message(with_payload_u32(sides_at + 4 + 20 * sides, 70000));
+  EXPECT_NE(m.find("70000 lines in our extension, " + std::to_string(lines) + " in the map"), std::string::npos) << m;
+  m = message(with_payload_u32(sides_at + 4 + 20 * sides + 4 + 12 * lines, uint32_t(doom_->mobjs.size() + 3)));
+  EXPECT_NE(m.find(" things in our extension, " + std::to_string(doom_->mobjs.size()) + " in Doom's part"), std::string::npos) << m;
+  m = message(with_payload_u32(sides_at + 4 + 2 * 4, 9999));  // the first side's top texture
+  EXPECT_NE(m.find("a texture 9999 is out of range"), std::string::npos) << m;
   // Doom's part for another map: too few sectors and lines for the file.
   std::vector<uint8_t> cut(bytes_->begin(), bytes_->begin() + std::ptrdiff_t(doom_->world_at + 14 * 3));
   m = message(cut);
