@@ -236,6 +236,37 @@ void check_range(SaveReader& in, size_t at, int64_t value, int64_t low, int64_t 
     in.fail_at(at, what + " " + std::to_string(value) + " is out of range (" + std::to_string(low) + ".." + std::to_string(high) + ")");
 }
 
+
+void check_counter(SaveReader& in, size_t at, int64_t value, const std::string& what) {
+  check_range(in, at, value, -kMostCount, kMostCount, what);
+}
+
+void check_mobj_counters(SaveReader& in, const DoomMobj& d, const std::array<size_t, 10>& at) {
+  const int32_t values[] = {d.radius, d.height, d.mom_x, d.mom_y, d.mom_z, d.tics, d.health, d.move_count, d.reaction_time, d.threshold};
+  const char* names[] = {"radius", "height", "momentum", "momentum", "momentum", "tics", "health", "move count", "reaction time", "threshold"};
+  for (size_t i = 0; i < at.size(); ++i) check_counter(in, at[i], values[i], std::string("a thing's ") + names[i]);
+}
+
+void check_special_counters(SaveReader& in, const DoomSpecial& s, size_t at) {
+  // (field, its place after the thinker) for every counted field of the record
+  std::vector<std::pair<int32_t, size_t>> counted;
+  std::visit(
+      [&](const auto& r) {
+        using T = std::decay_t<decltype(r)>;
+        if constexpr (std::is_same_v<T, DoomCeiling>) counted = {{r.direction, 24}, {r.old_direction, 32}};
+        else if constexpr (std::is_same_v<T, DoomDoor>) counted = {{r.direction, 16}, {r.top_wait, 20}, {r.top_countdown, 24}};
+        else if constexpr (std::is_same_v<T, DoomFloor>) counted = {{r.direction, 12}, {r.new_special, 16}};
+        else if constexpr (std::is_same_v<T, DoomPlat>) counted = {{r.wait, 16}, {r.count, 20}};
+        else if constexpr (std::is_same_v<T, DoomFlash>)
+          counted = {{r.count, 4}, {r.max_light, 8}, {r.min_light, 12}, {r.max_time, 16}, {r.min_time, 20}};
+        else if constexpr (std::is_same_v<T, DoomStrobe>)
+          counted = {{r.count, 4}, {r.min_light, 8}, {r.max_light, 12}, {r.dark_time, 16}, {r.bright_time, 20}};
+        else counted = {{r.min_light, 4}, {r.max_light, 8}, {r.direction, 12}};
+      },
+      s);
+  for (const auto& [value, offset] : counted) check_counter(in, at + offset, value, "a mover's or light's count");
+}
+
 namespace {
 
 MapThing spawn_point_of(const World& w, const DoomMobj& d) {
@@ -575,14 +606,19 @@ SaveHeader read_header(SaveReader& in) {
 DoomPlayer read_player(SaveReader& in) {
   DoomPlayer d;
   const size_t at = in.position();
+  auto counter = [&](int32_t& v, const std::string& what) {
+    const size_t field = in.position();
+    v = in.i32();
+    check_counter(in, field, v, "the player's " + what);
+  };
   in.u32();  // mo
   d.state = in.i32();
   check_range(in, at + 4, d.state, 0, 2, "the player's state");
   d.forward = int8_t(in.u8()), d.side = int8_t(in.u8()), d.turn = in.i16(), d.consistancy = in.i16();
   d.chat = in.u8(), d.buttons = in.u8();
-  for (int32_t* v : {&d.view_z, &d.view_height, &d.delta_view_height, &d.bob, &d.health, &d.armor_points, &d.armor_type})
-    *v = in.i32();
-  for (int32_t& v : d.powers) v = in.i32();
+  counter(d.view_z, "view height"), counter(d.view_height, "eye height"), counter(d.delta_view_height, "eye's spring");
+  counter(d.bob, "bob"), counter(d.health, "health"), counter(d.armor_points, "armor"), counter(d.armor_type, "armor type");
+  for (int32_t& v : d.powers) counter(v, "power");
   for (int32_t& v : d.cards) v = in.i32();
   d.backpack = in.i32();
   for (int32_t& v : d.frags) v = in.i32();
@@ -592,19 +628,23 @@ DoomPlayer read_player(SaveReader& in) {
   if (d.pending_weapon != kNoWeaponChange)
     check_range(in, weapons_at + 4, d.pending_weapon, 0, int(Weapon::kCount) - 1, "the pending weapon");
   for (int32_t& v : d.weapon_owned) v = in.i32();
-  for (int32_t& v : d.ammo) v = in.i32();
-  for (int32_t& v : d.max_ammo) v = in.i32();
-  for (int32_t* v : {&d.attack_down, &d.use_down, &d.cheats, &d.refire, &d.kill_count, &d.item_count, &d.secret_count})
-    *v = in.i32();
+  for (int32_t& v : d.ammo) counter(v, "ammo");
+  for (int32_t& v : d.max_ammo) counter(v, "most ammo");
+  d.attack_down = in.i32(), d.use_down = in.i32(), d.cheats = in.i32();
+  counter(d.refire, "refire count"), counter(d.kill_count, "kills"), counter(d.item_count, "items");
+  counter(d.secret_count, "secrets");
   in.u32();  // message
-  d.damage_count = in.i32(), d.bonus_count = in.i32();
+  counter(d.damage_count, "red flash"), counter(d.bonus_count, "gold flash");
   in.u32();  // attacker
-  d.extra_light = in.i32(), d.fixed_colormap = in.i32(), d.colormap = in.i32();
+  counter(d.extra_light, "gun light");
+  const size_t colormap_at = in.position();
+  d.fixed_colormap = in.i32(), d.colormap = in.i32();
+  check_range(in, colormap_at, d.fixed_colormap, 0, kInverseColormap, "the player's fixed light map");
   for (DoomPlayer::Psprite& p : d.psprites) {
     const size_t state_at = in.position();
     p.state = in.i32();
     check_range(in, state_at, p.state, 0, int(StateId::kCount) - 1, "a weapon sprite's state");
-    p.tics = in.i32(), p.sx = in.i32(), p.sy = in.i32();
+    counter(p.tics, "weapon sprite's tics"), counter(p.sx, "weapon sprite's place"), counter(p.sy, "weapon sprite's place");
   }
   d.did_secret = in.i32();
   return d;
@@ -633,10 +673,21 @@ DoomMobj read_mobj(SaveReader& in) {
   check_range(in, at + 112, d.move_dir, 0, 8, "a thing's direction");
   check_range(in, at + 132, d.player, 0, 1, "a thing's player (single player: 0 or 1)");
   check_range(in, at + 136, d.last_look, 0, kMaxPlayers - 1, "a thing's last player looked at");
+  check_mobj_counters(in, d, {at + 64, at + 68, at + 72, at + 76, at + 80, at + 96, at + 108, at + 116, at + 124, at + 128});
   return d;
 }
 
+constexpr size_t kSpecialSize[] = {48, 40, 42, 56, 36, 36, 28};  // ceiling, door, floor, plat, flash, strobe, glow
+
+DoomSpecial read_special_fields(SaveReader& in, uint8_t cls, size_t sectors);
+
 DoomSpecial read_special(SaveReader& in, uint8_t cls, size_t sectors) {
+  const DoomSpecial s = read_special_fields(in, cls, sectors);
+  check_special_counters(in, s, in.position() - kSpecialSize[cls] + 12);
+  return s;
+}
+
+DoomSpecial read_special_fields(SaveReader& in, uint8_t cls, size_t sectors) {
   const size_t at = in.position();
   in.skip(8);  // prev, next
   const bool thinking = in.u32() != 0;
@@ -984,7 +1035,8 @@ void carry_over(World& fresh, const World& before, const SaveHeader& header) {
     fresh.thing_info_[size_t(t)].speed = before.thing_info_[size_t(t)].speed;
   fresh.on_ground_ = before.on_ground_;
   fresh.brain_easy_ = before.brain_easy_;
-  fresh.game_tic_at_start_ = before.game_tic_at_start_ + before.level_time_ - header.level_time;
+  fresh.game_tic_at_start_ =
+      int(uint32_t(before.game_tic_at_start_) + uint32_t(before.level_time_) - uint32_t(header.level_time));
 }
 
 std::vector<uint8_t> write_save(const World& world, const DoomNumbers& numbers, const std::string& description,

@@ -198,6 +198,7 @@ DoomMobj get_mobj_full(SaveReader& in) {
   check_range(in, at + 76, d.move_dir, 0, 8, "a removed thing's direction");
   check_range(in, at + 92, d.player, 0, 1, "a removed thing's player");
   check_range(in, at + 96, d.last_look, 0, kMaxPlayers - 1, "a removed thing's last player looked at");
+  check_mobj_counters(in, d, {at + 32, at + 36, at + 40, at + 44, at + 48, at + 60, at + 72, at + 80, at + 84, at + 88});
   return d;
 }
 
@@ -211,6 +212,8 @@ DoomPlat get_plat(SaveReader& in, size_t sectors) {
   check_range(in, at + 25, r.status, 0, int(Plat::Status::kInStasis), "a lift's status");
   check_range(in, at + 29, r.old_status, 0, int(Plat::Status::kInStasis), "a lift's old status");
   check_range(in, at + 41, r.type, 0, int(Plat::Type::kBlazeDwus), "a lift's type");
+  check_counter(in, at + 17, r.wait, "a lift's wait");
+  check_counter(in, at + 21, r.count, "a lift's count");
   return r;
 }
 
@@ -247,21 +250,28 @@ Extension read_extension(SaveReader& file, const DoomSave& doom, const World& w)
   e.tics = in.u64();
   e.message = in.str(kMaxMessage);
   e.message_tics = in.i32();
+  check_counter(in, in.position() - 4, e.message_tics, "the message's time");
   e.other_random = in.u8();
   const size_t face_at = in.position();
   for (int* v : {&e.face.index, &e.face.count, &e.face.priority, &e.face.old_health, &e.face.attack_countdown}) *v = in.i32();
   check_range(in, face_at, e.face.index, 0, kFaceCount - 1, "the face");
+  const int memory[] = {e.face.count, e.face.priority, e.face.old_health, e.face.attack_countdown};
+  for (size_t k = 0; k < 4; ++k) check_counter(in, face_at + 4 * (k + 1), memory[k], "the face's memory");
   for (bool& b : e.face.old_weapons) b = in.u8() != 0;
   for (double& v : e.previous_pose) v = in.f64();
   x.play_random = in.u8(), x.other_random = in.u8();
   x.level_time = in.i32(), x.game_tic_at_start = in.i32();
-  if (x.level_time < 0) in.fail_at(in.position() - 8, "a negative level time");
+  if (x.level_time < 0 || x.level_time > (1 << 30))
+    in.fail_at(in.position() - 8, "level time " + std::to_string(x.level_time) + " (a game reaches 0..2^30)");
   x.on_ground = in.u8() != 0;
   const size_t exit_at = in.position();
   x.exit = in.u8();
   check_range(in, exit_at, x.exit, 0, int(ExitKind::kSecret), "the exit taken");
   x.next_id = in.u32();
+  const size_t totals_at = in.position();
   x.total_kills = in.i32(), x.total_items = in.i32(), x.total_secrets = in.i32();
+  const int32_t totals[] = {x.total_kills, x.total_items, x.total_secrets};
+  for (size_t k = 0; k < 3; ++k) check_counter(in, totals_at + 4 * k, totals[k], "the level's totals");
   x.brain_easy = in.u8() != 0;
   const size_t on_at = in.position();
   x.brain_target_on = in.u32();
@@ -292,6 +302,7 @@ Extension read_extension(SaveReader& file, const DoomSave& doom, const World& w)
     for (int32_t* v : {&s.floor, &s.ceiling, &s.floor_pic, &s.ceiling_pic, &s.light, &s.special, &s.tag}) *v = in.i32();
     texture_index(s.floor_pic, at + 8, true);
     texture_index(s.ceiling_pic, at + 12, true);
+    check_counter(in, at + 16, s.light, "a sector's light");
     s.sound_target = in.i32(), s.special_data = in.i32();
     const uint32_t n = in.count(4, "things in a sector");
     for (uint32_t k = 0; k < n; ++k) s.things.push_back(in.i32());
@@ -320,6 +331,7 @@ Extension read_extension(SaveReader& file, const DoomSave& doom, const World& w)
     if (o.kind == 0) {
       for (int32_t& v : o.flicker) v = in.i32();
       check_range(in, at + 1, o.flicker[0], 0, int64_t(map.sectors.size()) - 1, "a fire flicker's sector");
+      for (size_t k = 1; k < 4; ++k) check_counter(in, at + 1 + 4 * k, o.flicker[k], "a fire flicker's count or light");
     } else if (o.kind == 1) {
       o.plat = get_plat(in, map.sectors.size());
     } else if (o.kind == 2) {
@@ -329,6 +341,8 @@ Extension read_extension(SaveReader& file, const DoomSave& doom, const World& w)
         *v = in.i32();
       check_range(in, at + 2, c.type, 0, int(Ceiling::Type::kSilentCrushAndRaise), "a ceiling's type");
       check_range(in, at + 6, c.sector, 0, int64_t(map.sectors.size()) - 1, "a ceiling's sector");
+      check_counter(in, at + 26, c.direction, "a ceiling's direction");
+      check_counter(in, at + 34, c.old_direction, "a ceiling's direction");
     } else {
       in.fail_at(at, "own thinker kind " + std::to_string(o.kind) + " (0 fire flicker, 1 lift, 2 crusher)");
     }
@@ -373,6 +387,7 @@ Extension read_extension(SaveReader& file, const DoomSave& doom, const World& w)
     check_range(in, at, b.line, 0, int64_t(map.lines.size()) - 1, "a switch's line");
     if (map.lines[size_t(b.line)].side[0] < 0) in.fail_at(at, "a switch on a line without a front side");
     check_range(in, at + 4, b.where, 0, 2, "a switch's place");
+    check_counter(in, at + 12, b.timer, "a switch's timer");
     texture_index(b.texture, at + 8, false);
     check_range(in, at + 16, b.sound_sector, 0, int64_t(map.sectors.size()) - 1, "a switch's sector");
   }

@@ -4,6 +4,7 @@
 // (that is savegame.h).
 #pragma once
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -107,6 +108,18 @@ class SaveReader {
 
 // A number Doom uses as an index, checked: "<what> N is out of range (low..high)".
 void check_range(SaveReader& in, size_t at, int64_t value, int64_t low, int64_t high, const std::string& what);
+
+constexpr int kInverseColormap = 32;   // the last light map a player's view may be fixed to (invulnerability)
+constexpr int32_t kMostCount = 1 << 30;
+// A number play counts up or down by small steps (health, ammo, tics, timers, lights,
+// momentum): within +-2^30, years of tics from overflowing.
+void check_counter(SaveReader& in, size_t at, int64_t value, const std::string& what);
+// A thing's counted fields (radius, height, momentum x, y, z, tics, health, move count,
+// reaction time, threshold), read at these places.
+void check_mobj_counters(SaveReader& in, const DoomMobj& d, const std::array<size_t, 10>& at);
+// A mover's or light's counted fields (timers, counts, directions, lights), its first
+// field after the thinker at `at`.
+void check_special_counters(SaveReader& in, const DoomSpecial& s, size_t at);
 
 // The thinkers as Doom's sections list them, and the rest.
 struct ThinkerLists {
