@@ -241,22 +241,38 @@ void check_counter(SaveReader& in, size_t at, int64_t value, const std::string& 
   check_range(in, at, value, -kMostCount, kMostCount, what);
 }
 
-void check_mobj_counters(SaveReader& in, const DoomMobj& d, const std::array<size_t, 10>& at) {
+void check_height(SaveReader& in, size_t at, int64_t value, const std::string& what) {
+  check_range(in, at, value, -kMostHeight, kMostHeight, what);
+}
+
+void check_mobj_counters(SaveReader& in, const DoomMobj& d, const std::array<size_t, 13>& at) {
   const int32_t values[] = {d.radius, d.height, d.mom_x, d.mom_y, d.mom_z, d.tics, d.health, d.move_count, d.reaction_time, d.threshold};
   const char* names[] = {"radius", "height", "momentum", "momentum", "momentum", "tics", "health", "move count", "reaction time", "threshold"};
-  for (size_t i = 0; i < at.size(); ++i) check_counter(in, at[i], values[i], std::string("a thing's ") + names[i]);
+  for (size_t i = 0; i < 2; ++i) check_range(in, at[i], values[i], 0, kMostHeight / 8, std::string("a thing's ") + names[i]);
+  for (size_t i = 2; i < 10; ++i) check_counter(in, at[i], values[i], std::string("a thing's ") + names[i]);
+  const int32_t heights[] = {d.z, d.floor_z, d.ceiling_z};
+  for (size_t i = 0; i < 3; ++i) check_height(in, at[10 + i], heights[i], "a thing's z, floor or ceiling");
 }
 
 void check_special_counters(SaveReader& in, const DoomSpecial& s, size_t at) {
   // (field, its place after the thinker) for every counted field of the record
-  std::vector<std::pair<int32_t, size_t>> counted;
+  std::vector<std::pair<int32_t, size_t>> counted, heights;
   std::visit(
       [&](const auto& r) {
         using T = std::decay_t<decltype(r)>;
-        if constexpr (std::is_same_v<T, DoomCeiling>) counted = {{r.direction, 24}, {r.old_direction, 32}};
-        else if constexpr (std::is_same_v<T, DoomDoor>) counted = {{r.direction, 16}, {r.top_wait, 20}, {r.top_countdown, 24}};
-        else if constexpr (std::is_same_v<T, DoomFloor>) counted = {{r.direction, 12}, {r.new_special, 16}};
-        else if constexpr (std::is_same_v<T, DoomPlat>) counted = {{r.wait, 16}, {r.count, 20}};
+        if constexpr (std::is_same_v<T, DoomCeiling>) {
+          counted = {{r.direction, 24}, {r.old_direction, 32}};
+          heights = {{r.bottom_height, 8}, {r.top_height, 12}};
+        } else if constexpr (std::is_same_v<T, DoomDoor>) {
+          counted = {{r.direction, 16}, {r.top_wait, 20}, {r.top_countdown, 24}};
+          heights = {{r.top_height, 8}};
+        } else if constexpr (std::is_same_v<T, DoomFloor>) {
+          counted = {{r.direction, 12}, {r.new_special, 16}};
+          heights = {{r.destination, 22}};
+        } else if constexpr (std::is_same_v<T, DoomPlat>) {
+          counted = {{r.wait, 16}, {r.count, 20}};
+          heights = {{r.low, 8}, {r.high, 12}};
+        }
         else if constexpr (std::is_same_v<T, DoomFlash>)
           counted = {{r.count, 4}, {r.max_light, 8}, {r.min_light, 12}, {r.max_time, 16}, {r.min_time, 20}};
         else if constexpr (std::is_same_v<T, DoomStrobe>)
@@ -265,6 +281,7 @@ void check_special_counters(SaveReader& in, const DoomSpecial& s, size_t at) {
       },
       s);
   for (const auto& [value, offset] : counted) check_counter(in, at + offset, value, "a mover's or light's count");
+  for (const auto& [value, offset] : heights) check_height(in, at + offset, value, "a mover's height");
 }
 
 namespace {
@@ -616,7 +633,12 @@ DoomPlayer read_player(SaveReader& in) {
   check_range(in, at + 4, d.state, 0, 2, "the player's state");
   d.forward = int8_t(in.u8()), d.side = int8_t(in.u8()), d.turn = in.i16(), d.consistancy = in.i16();
   d.chat = in.u8(), d.buttons = in.u8();
-  counter(d.view_z, "view height"), counter(d.view_height, "eye height"), counter(d.delta_view_height, "eye's spring");
+  auto height = [&](int32_t& v, const std::string& what) {
+    const size_t field = in.position();
+    v = in.i32();
+    check_height(in, field, v, "the player's " + what);
+  };
+  height(d.view_z, "view height"), height(d.view_height, "eye height"), height(d.delta_view_height, "eye's spring");
   counter(d.bob, "bob"), counter(d.health, "health"), counter(d.armor_points, "armor"), counter(d.armor_type, "armor type");
   for (int32_t& v : d.powers) counter(v, "power");
   for (int32_t& v : d.cards) v = in.i32();
@@ -673,7 +695,8 @@ DoomMobj read_mobj(SaveReader& in) {
   check_range(in, at + 112, d.move_dir, 0, 8, "a thing's direction");
   check_range(in, at + 132, d.player, 0, 1, "a thing's player (single player: 0 or 1)");
   check_range(in, at + 136, d.last_look, 0, kMaxPlayers - 1, "a thing's last player looked at");
-  check_mobj_counters(in, d, {at + 64, at + 68, at + 72, at + 76, at + 80, at + 96, at + 108, at + 116, at + 124, at + 128});
+  check_mobj_counters(in, d, {at + 64, at + 68, at + 72, at + 76, at + 80, at + 96, at + 108, at + 116, at + 124, at + 128,
+                             at + 20, at + 56, at + 60});
   return d;
 }
 
@@ -782,7 +805,10 @@ DoomSave parse_doom_save(std::span<const uint8_t> bytes, const std::string& what
   s.world_at = in.position();
   for (size_t i = 0; i < map.sectors.size(); ++i) {
     DoomSector& d = s.sectors.emplace_back();
+    const size_t at = in.position();
     for (int16_t* v : {&d.floor_height, &d.ceiling_height, &d.floor_pic, &d.ceiling_pic, &d.light, &d.special, &d.tag}) *v = in.i16();
+    check_range(in, at, d.floor_height, -(kMostHeight >> 16), kMostHeight >> 16, "a sector's floor");
+    check_range(in, at + 2, d.ceiling_height, -(kMostHeight >> 16), kMostHeight >> 16, "a sector's ceiling");
   }
   in.section("the lines", kAnotherMap);
   for (const Line& line : map.lines) {

@@ -198,7 +198,8 @@ DoomMobj get_mobj_full(SaveReader& in) {
   check_range(in, at + 76, d.move_dir, 0, 8, "a removed thing's direction");
   check_range(in, at + 92, d.player, 0, 1, "a removed thing's player");
   check_range(in, at + 96, d.last_look, 0, kMaxPlayers - 1, "a removed thing's last player looked at");
-  check_mobj_counters(in, d, {at + 32, at + 36, at + 40, at + 44, at + 48, at + 60, at + 72, at + 80, at + 84, at + 88});
+  check_mobj_counters(in, d, {at + 32, at + 36, at + 40, at + 44, at + 48, at + 60, at + 72, at + 80, at + 84, at + 88,
+                             at + 8, at + 24, at + 28});
   return d;
 }
 
@@ -212,6 +213,8 @@ DoomPlat get_plat(SaveReader& in, size_t sectors) {
   check_range(in, at + 25, r.status, 0, int(Plat::Status::kInStasis), "a lift's status");
   check_range(in, at + 29, r.old_status, 0, int(Plat::Status::kInStasis), "a lift's old status");
   check_range(in, at + 41, r.type, 0, int(Plat::Type::kBlazeDwus), "a lift's type");
+  check_height(in, at + 9, r.low, "a lift's height");
+  check_height(in, at + 13, r.high, "a lift's height");
   check_counter(in, at + 17, r.wait, "a lift's wait");
   check_counter(in, at + 21, r.count, "a lift's count");
   return r;
@@ -303,6 +306,8 @@ Extension read_extension(SaveReader& file, const DoomSave& doom, const World& w)
     texture_index(s.floor_pic, at + 8, true);
     texture_index(s.ceiling_pic, at + 12, true);
     check_counter(in, at + 16, s.light, "a sector's light");
+    check_height(in, at, s.floor, "a sector's floor");
+    check_height(in, at + 4, s.ceiling, "a sector's ceiling");
     s.sound_target = in.i32(), s.special_data = in.i32();
     const uint32_t n = in.count(4, "things in a sector");
     for (uint32_t k = 0; k < n; ++k) s.things.push_back(in.i32());
@@ -341,6 +346,8 @@ Extension read_extension(SaveReader& file, const DoomSave& doom, const World& w)
         *v = in.i32();
       check_range(in, at + 2, c.type, 0, int(Ceiling::Type::kSilentCrushAndRaise), "a ceiling's type");
       check_range(in, at + 6, c.sector, 0, int64_t(map.sectors.size()) - 1, "a ceiling's sector");
+      check_height(in, at + 10, c.bottom_height, "a ceiling's height");
+      check_height(in, at + 14, c.top_height, "a ceiling's height");
       check_counter(in, at + 26, c.direction, "a ceiling's direction");
       check_counter(in, at + 34, c.old_direction, "a ceiling's direction");
     } else {

@@ -114,9 +114,14 @@ constexpr int32_t kMostCount = 1 << 30;
 // A number play counts up or down by small steps (health, ammo, tics, timers, lights,
 // momentum): within +-2^30, years of tics from overflowing.
 void check_counter(SaveReader& in, size_t at, int64_t value, const std::string& what);
+// A height (a floor, a ceiling, a thing's z, a mover's destination, the view's): within
+// +-8192 units, where Doom's maps keep theirs by far (beyond, play's arithmetic on
+// heights overflows).
+constexpr int32_t kMostHeight = 8192 << 16;
+void check_height(SaveReader& in, size_t at, int64_t value, const std::string& what);
 // A thing's counted fields (radius, height, momentum x, y, z, tics, health, move count,
-// reaction time, threshold), read at these places.
-void check_mobj_counters(SaveReader& in, const DoomMobj& d, const std::array<size_t, 10>& at);
+// reaction time, threshold) and heights (z, floor, ceiling), read at these places.
+void check_mobj_counters(SaveReader& in, const DoomMobj& d, const std::array<size_t, 13>& at);
 // A mover's or light's counted fields (timers, counts, directions, lights), its first
 // field after the thinker at `at`.
 void check_special_counters(SaveReader& in, const DoomSpecial& s, size_t at);

@@ -537,7 +537,9 @@ TEST_F(BrokenSaves, CountsThatDoNotFitTheMap) {
   EXPECT_NE(m.find(std::to_string(sectors + 1) + " sectors in our extension, " + std::to_string(sectors) + " in the map"),
             std::string::npos)
       << m;
-  m = message(with_payload_u32(sectors_at + 4, 0x7fffffff));  // the first sector's floor: fine
+  m = message(with_payload_u32(sectors_at + 4, 0x7fffffff));  // the first sector's floor
+  EXPECT_NE(m.find("a sector's floor 2147483647 is out of range (-536870912..536870912)"), std::string::npos) << m;
+  m = message(with_payload_u32(sectors_at + 4, 0x12340000));  // a floor that may be
   EXPECT_EQ(m, "");
   // Then each sector (7 numbers, its sound target and mover, its things), the sides (5
   // numbers each), the lines.
