@@ -20,10 +20,10 @@ const char* exit_name(play::ExitKind exit) {
 namespace {
 
 // Where the player stands and what it carries, as the CSV and JSON give it.
-Stats player_fields(const Session& session, int frame, size_t tic) {
+Stats player_fields(const Session& session, int frame, size_t tic, bool raw) {
   const Session::Pose pose = session.pose();
   const play::Player& p = session.player();
-  return {{"frame", double(frame)},
+  Stats out = {{"frame", double(frame)},
           {"tic", double(tic)},
           {"x", pose.pos.x},
           {"y", pose.pos.y},
@@ -35,6 +35,16 @@ Stats player_fields(const Session& session, int frame, size_t tic) {
           {"items", double(p.inv.items)},
           {"secrets", double(p.secret_count)},
           {"keys", double(p.cards)}};
+  if (raw && p.mo)
+    for (const auto& [name, value] : {std::pair<const char*, double>{"x_raw", p.mo->x}, {"y_raw", p.mo->y}, {"z_raw", p.mo->z},
+                                      {"angle_raw", double(p.mo->angle)}, {"momx_raw", p.mo->mom_x}, {"momy_raw", p.mo->mom_y},
+                                      {"viewz_raw", p.view_z}, {"random", session.world().random().play_index()}})
+      out.push_back({name, value});
+  return out;
+}
+
+void save_to(const Session& session, const std::filesystem::path& file) {
+  write_file_atomically(file, session.save_game("p3d " + session.name().substr(session.name().rfind(':') + 1)));
 }
 
 }  // namespace
@@ -59,7 +69,7 @@ HeadlessResult replay_headless(Session& session, const play::Demo& demo, const H
         std::snprintf(name, sizeof name, "frame%05d.png", result.frames);
         image::save_png(frame, o.out_dir / name);
       }
-      const Stats where = player_fields(session, result.frames, tic);
+      const Stats where = player_fields(session, result.frames, tic, o.raw);
       const std::vector<Stat> drawn = o.frames ? render::stat_fields(s) : std::vector<Stat>{};
       if (csv.empty()) {  // the header, from the first row's fields
         for (const Stat& f : where) csv += (csv.empty() ? "" : ",") + f.name;
@@ -83,6 +93,10 @@ HeadlessResult replay_headless(Session& session, const play::Demo& demo, const H
       break;
     }
     session.tic(demo.tics[tic]);
+    for (const HeadlessOptions::SaveAt& s : o.saves)
+      if (s.tic == tic) save_to(session, s.file);
+    for (const HeadlessOptions::SaveAt& l : o.loads)
+      if (l.tic == tic) session.load_game(read_file_bytes(l.file), l.file.string(), o.loads_doom_only);
   }
   result.exit = session.exited();
   write_file_atomically(o.out_dir / "stats.csv", csv);

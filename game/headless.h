@@ -17,6 +17,18 @@ struct HeadlessOptions {
   int width = 640, height = 400;
   bool json = false;  // also stats.json: the same fields by name
   bool frames = true;  // false: the statistics alone (no PNG, no rendering)
+  // Savegames at any tic: after the demo's tic N (0 the first), the game written to the
+  // file (Doom's format with our extension), or replaced by the file's, the demo's
+  // input going on. At the same tic, saves come before loads.
+  struct SaveAt {
+    size_t tic = 0;
+    std::filesystem::path file;
+  };
+  std::vector<SaveAt> saves, loads;
+  bool loads_doom_only = false;  // load as Doom does, ignoring our extension
+  // stats.csv (and JSON): also the player's exact values as Doom keeps them: 16.16 x, y,
+  // z, momentum and view height, the binary angle, Doom's random index.
+  bool raw = false;
 };
 
 struct HeadlessResult {

@@ -129,6 +129,20 @@ int main(int argc, char** argv) {
   app.add_option("--out", out_dir, "--headless: directory for the frames and stats.csv");
   app.add_flag("--json", json, "--headless --play: also stats.json, the same statistics by name");
   app.add_flag("--stats-only", stats_only, "--headless --play: stats.csv alone, no frames drawn (as fast as the rules run)");
+  std::vector<std::pair<size_t, std::string>> save_at, load_at;
+  bool load_doom_only = false, raw_stats = false;
+  app.add_option("--save-at", save_at,
+                 "--headless --play: after the demo's tic N (0 the first), save the game to FILE (Doom's format); "
+                 "repeatable")
+      ->type_name("N FILE");
+  app.add_option("--load-at", load_at,
+                 "--headless --play: after the demo's tic N, load FILE's game and go on with the demo's input; repeatable")
+      ->type_name("N FILE");
+  app.add_flag("--load-doom-only", load_doom_only,
+               "--load-at: load as Doom (Chocolate Doom) does, ignoring what our extension keeps");
+  app.add_flag("--raw-stats", raw_stats,
+               "--headless --play: stats.csv also gives Doom's exact values (16.16 x, y, z, momentum, view z, "
+               "binary angle, random index)");
   app.add_flag("--fast", flags.fast, "Doom's -fast: faster demons and monster missiles");
   app.add_flag("--respawn", flags.respawn, "Doom's -respawn: dead monsters come back (as in nightmare)");
   app.add_flag("--nomonsters", flags.no_monsters, "Doom's -nomonsters: no monsters are spawned");
@@ -223,6 +237,9 @@ int main(int argc, char** argv) {
     std::optional<play::Demo> demo;
     std::optional<play::DoomDemo> doom_demo;
     if (stats_only && (!headless || play.empty())) throw CLI::ValidationError("--stats-only", "needs --headless --play");
+    if ((!save_at.empty() || !load_at.empty() || raw_stats) && (!headless || play.empty()))
+      throw CLI::ValidationError("--save-at", "--save-at, --load-at and --raw-stats need --headless --play");
+    if (load_doom_only && load_at.empty()) throw CLI::ValidationError("--load-doom-only", "needs --load-at");
     if (!play.empty()) {
       const DemoBytes bytes = demo_bytes(play, source);
       if (play::is_our_demo(bytes.bytes)) {
@@ -277,6 +294,10 @@ int main(int argc, char** argv) {
     if (headless) {
       if (demo) {
         game::HeadlessOptions h{capture_every, out_dir, rw ? rw : 640, rh ? rh : 400, json, !stats_only};
+        for (const auto& [tic, file] : save_at) h.saves.push_back({tic, file});
+        for (const auto& [tic, file] : load_at) h.loads.push_back({tic, file});
+        h.loads_doom_only = load_doom_only;
+        h.raw = raw_stats;
         const game::HeadlessResult r = game::replay_headless(*session, *demo, h);
         std::printf("replayed %zu of %zu tics (exit: %s), wrote %d %s to %s\n", r.tics, demo->tics.size(),
                     game::exit_name(r.exit), r.frames, stats_only ? "rows of stats.csv" : "frames and stats.csv",

@@ -5,6 +5,7 @@
 
 #include "engine/bsp/load.h"
 #include "engine/front/game_mode.h"
+#include "engine/play/savegame.h"
 #include "engine/util/doom.h"
 #include "engine/util/error.h"
 #include "game/sound_mixer.h"
@@ -412,6 +413,97 @@ void Session::start_recording(bool doom_turns) {
     recording_.custom_start = true;
     recording_.start = pose_.pos;
     recording_.angle = pose_.angle;
+  }
+}
+
+// ---- savegames ------------------------------------------------------------------
+
+std::vector<uint8_t> Session::save_game(const std::string& description) const {
+  if (!source_.is_wad())
+    throw Error("cannot save " + name_ + ": Doom's savegames hold a WAD's MAPxx or ExMy, not a hand-made level");
+  if (world_->exit() != play::ExitKind::kNone || intermission_)
+    throw Error("cannot save " + name_ + ": the level is over (Doom saves only while a level is played)");
+  const wad::Stack wads = bsp::read_wads(source_.wads);
+  play::SaveExtras extras;
+  extras.tics = tics_;
+  extras.message = message_;
+  extras.message_tics = message_tics_;
+  extras.other_random = other_random_.other_index();
+  extras.face = face_.memory();
+  extras.previous_pose = {previous_.pos.x, previous_.pos.y, previous_.z, previous_.view_z, previous_.angle};
+  std::vector<std::string> warnings;
+  std::vector<uint8_t> bytes = play::write_save(*world_, play::DoomNumbers(wads, *level_), description, extras, &warnings);
+  for (const std::string& w : warnings) std::fprintf(stderr, "game: saving %s: %s\n", name_.c_str(), w.c_str());
+  return bytes;
+}
+
+std::optional<std::string> Session::save_description(std::span<const uint8_t> bytes) {
+  return play::save_description(bytes);
+}
+
+// Doom's G_DoLoadGame: the save's game started anew (G_InitNew: the random index
+// cleared, the map set up), then the save's player, world and thinkers in place of the
+// new ones; then what our extension keeps. Everything is built aside and swapped in
+// only when the whole save has been read.
+void Session::load_game(std::span<const uint8_t> bytes, const std::string& what, bool doom_only) {
+  const play::SaveHeader header = play::read_save_header(bytes, what);
+  if (!source_.is_wad()) throw Error(what + ": a Doom savegame loads a WAD's map, and " + name_ + " is none");
+  const wad::Stack wads = bsp::read_wads(source_.wads);
+  const std::vector<std::string> maps = wads.map_names();
+  const bool commercial = std::any_of(maps.begin(), maps.end(), [](const std::string& n) { return n.rfind("MAP", 0) == 0; });
+  const std::string map_name = header.map_name(commercial);
+  if (!wads.map(map_name))
+    throw Error(what + ": byte 41: the save is of " + map_name + ", which these WADs lack (" +
+                (commercial ? "a Doom save on Doom II?" : "a Doom II save on Doom?") + ")");
+  // The level: this one if the save is of the map played, else the save's map compiled.
+  std::unique_ptr<level::Level> new_level;
+  std::string new_name = name_;
+  if (map_name != bsp::resolve_map_name(wads, source_.map)) {
+    bsp::LevelSource source = source_;
+    source.map = map_name;
+    bsp::OpenedLevel opened = bsp::open_level(source);
+    new_level = std::make_unique<level::Level>(std::move(opened.level));
+    new_name = opened.name;
+  }
+  const level::Level& level = new_level ? *new_level : *level_;
+  play::GameOptions o = play::game_options_for(wads, map_name, header.skill);
+  o.fast = flags_.fast;
+  o.respawn = flags_.respawn;
+  o.no_monsters = flags_.no_monsters;
+  auto world = std::make_unique<play::World>(play::map_from_wads(wads, map_name, level), level, o, play::Random{}, nullptr);
+  play::carry_over(*world, *world_, header);
+  const play::FaceInput fresh_face = play::face_input(world->player());  // ST_Start sees the new player
+  const play::LoadedSave loaded = play::read_save(*world, bytes, what, play::DoomNumbers(wads, level), doom_only);
+  for (const std::string& w : loaded.warnings) std::fprintf(stderr, "game: %s\n", w.c_str());
+
+  // The swap: nothing below throws.
+  world_ = std::move(world);
+  if (new_level) {
+    level_ = std::move(new_level);
+    name_ = new_name;
+    source_.map = map_name;
+    automap_view_.set_level(*level_);
+    if (!select_renderer(renderer_name_, false)) select_renderer("bsp", false);
+  }
+  skill_ = header.skill;
+  intermission_.reset();
+  recording_on_ = false;  // a demo holds one level from its start
+  pose_ = pose_now();
+  if (loaded.extended) {
+    const play::SaveExtras& x = loaded.extras;
+    tics_ = x.tics;
+    message_ = x.message;
+    message_tics_ = x.message_tics;
+    other_random_ = play::Random::at(0, x.other_random);
+    face_.restore(x.face);
+    previous_ = {{x.previous_pose[0], x.previous_pose[1]}, x.previous_pose[2], x.previous_pose[3], x.previous_pose[4]};
+  } else {  // as Doom: the messages cleared (HU_Start), M_Random cleared, the face started anew (ST_Start)
+    tics_ = uint64_t(world_->level_time());
+    message_.clear();
+    message_tics_ = 0;
+    other_random_ = play::Random{};
+    face_.start_level(fresh_face);
+    previous_ = pose_;
   }
 }
 

@@ -166,9 +166,18 @@ class Session {
   void say(const std::string& text);  // a message shown on screen for a few seconds
   void advance_message();             // once per tic
 
-  // ---- saved games (Doom's format: engine/play/savegame.h)
+  // ---- savegames: Doom's format (Chocolate Doom's layout) with our extension, which
+  // makes a loaded save go on exactly as the game it was saved from (engine/play/savegame.h)
+  // The game as a savegame's bytes. Throws Error when Doom's format cannot hold it (a
+  // level that is no WAD's MAPxx or ExMy) or the level is over.
   std::vector<uint8_t> save_game(const std::string& description) const;
-  void load_game(std::span<const uint8_t> bytes, const std::string& what);
+  // Replaces the game by the save's (its map from the session's WADs, its skill), as
+  // Doom's G_DoLoadGame does, then puts back what our extension keeps unless doom_only
+  // (Chocolate Doom's load). Throws Error("<what>: byte N: ...") and leaves the game as
+  // it was for a save it cannot load.
+  void load_game(std::span<const uint8_t> bytes, const std::string& what, bool doom_only = false);
+  // A save's description, for a load menu's slots; nullopt when the bytes are no Doom save.
+  static std::optional<std::string> save_description(std::span<const uint8_t> bytes);
 
   // ---- demos and reloading
   // Records every tic from now. With doom_turns, turns are rounded as a Doom demo

@@ -104,8 +104,8 @@ void World::xy_movement(Mobj* mo) {
 
 void World::z_movement(Mobj* mo) {
   if (mo->player && mo->z < mo->floor_z) {  // the view squats after a step up
-    mo->player->view_height -= mo->floor_z - mo->z;
-    mo->player->delta_view_height = (kViewHeight - mo->player->view_height) >> 3;
+    mo->player->view_height = wrap_sub(mo->player->view_height, wrap_sub(mo->floor_z, mo->z));  // Doom's ints wrap
+    mo->player->delta_view_height = wrap_sub(kViewHeight, mo->player->view_height) >> 3;
   }
   mo->z = wrap_add(mo->z, mo->mom_z);
   if ((mo->flags & kFloat) && mo->target && !(mo->flags & kSkullfly) && !(mo->flags & kInfloat)) {

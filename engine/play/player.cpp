@@ -27,7 +27,7 @@ void World::calc_height(Player& player) {
     player.view_z = wrap_add(mo->z, player.view_height);
     return;
   }
-  const int angle = (kFineAngles / 20 * level_time_) & kFineMask;
+  const int angle = int((uint32_t(kFineAngles / 20) * uint32_t(level_time_)) & kFineMask);  // Doom's int wraps
   const Fixed bob = fixed_mul(player.bob / 2, fine_sine(angle));
   if (player.state == PlayerState::kLive) {
     // The view springs back after a landing or a step up.

@@ -23,6 +23,14 @@ class Random {
   // M_ClearRandom: both streams back to their start (at each level's start).
   void clear() { play_index_ = other_index_ = 0; }
   uint8_t play_index() const { return play_index_; }
+  uint8_t other_index() const { return other_index_; }
+  // Both streams where a savegame left them.
+  static Random at(uint8_t play_index, uint8_t other_index) {
+    Random r;
+    r.play_index_ = play_index;
+    r.other_index_ = other_index;
+    return r;
+  }
 
  private:
   uint8_t play_index_ = 0, other_index_ = 0;

@@ -67,6 +67,16 @@ class Face {
   void tic(Random& random, const FaceInput& in);
   // Into Doom's faces: 5 pains x 8 (straight 0..2, right, left, ouch, grin, rampage), god, dead.
   int index() const { return index_; }
+  // What the face remembers from tic to tic, for savegames (Doom's saves lose it).
+  struct Memory {
+    int index = 0, count = 0, priority = 0, old_health = -1, attack_countdown = -1;
+    std::array<bool, kFaceWeapons> old_weapons{};
+  };
+  Memory memory() const { return {index_, count_, priority_, old_health_, attack_countdown_, old_weapons_}; }
+  void restore(const Memory& m) {
+    index_ = m.index, count_ = m.count, priority_ = m.priority, old_health_ = m.old_health;
+    attack_countdown_ = m.attack_countdown, old_weapons_ = m.old_weapons;
+  }
 
  private:
   int pain_offset(int health) const;

@@ -203,7 +203,7 @@ void WeaponActions::lower() {
     w_.set_psprite(player_, kPsWeapon, S::kNull);
     return;
   }
-  inv_.ready = inv_.pending;
+  if (inv_.pending != Weapon::kCount) inv_.ready = inv_.pending;  // (no weapon pending: only a broken save; Doom read past its table)
   w_.bring_up_weapon(player_);
 }
 

@@ -57,6 +57,8 @@ class Art {
   std::optional<IndexedImage> flat(std::string_view name, std::vector<std::string>& problems) const;
 
   const std::map<std::string, TextureDef>& texture_defs() const { return textures_; }
+  // Every definition's name in TEXTURE1 then TEXTURE2 order: Doom's texture numbers.
+  const std::vector<std::string>& texture_numbers() const { return texture_numbers_; }
 
   // The frames of one of Doom's animated ranges, in Doom's order (texture definitions;
   // flats as their lumps lie), and Doom's number of the first frame; no names when

@@ -26,6 +26,7 @@ seed udmf tests/fuzz/seeds/textmap.udmf
 seed lmp tests/fuzz/seeds/walk.lmp tests/fuzz/seeds/old.lmp
 seed dmx tests/fuzz/seeds/beep.dmx
 seed mus tests/fuzz/seeds/tune.mus tests/fuzz/seeds/tune.mid
+seed save tests/fuzz/seeds/room.dsg tests/golden/saves/*.dsg
 mkdir -p "$work/bsp"
 if [ -x build/tools/mapc ]; then
   build/tools/mapc tests/fuzz/seeds/room.map -o "$work/bsp/room.bsp" >/dev/null
@@ -33,7 +34,7 @@ if [ -x build/tools/mapc ]; then
 fi
 printf '| target | seconds | executions | coverage (edges) | crashes |\n|---|---:|---:|---:|---:|\n'
 status=0
-for target in map grid bsp demo cameras png wad udmf lmp dmx mus; do
+for target in map grid bsp demo cameras png wad udmf lmp dmx mus save; do
   mkdir -p "build-fuzz/crashes/$target"
   log="build-fuzz/fuzz_$target.log"
   if build-fuzz/tests/fuzz/fuzz_$target "$work/$target" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2560 \
