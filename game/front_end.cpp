@@ -546,6 +546,7 @@ void FrontEnd::draw_state(render::Frame& frame, double alpha, const FrameTimes& 
     std::fill(frame.pixels.begin(), frame.pixels.end(), palette_.empty() ? 0xFF000000u : palette_[0]);
     art_->draw_page(page_, frame, palette_);
   } else if (session_) {
+    session_->menu_over_border = menu_active();
     session_->render(frame, alpha);
     session_->draw_overlays(frame, times, alpha);
   }

@@ -260,7 +260,10 @@ const render::RenderStats& Session::render(render::Frame& frame, double alpha) {
     const play::Player& p = player();
     status_art_->draw(p.inv.status(p.cards, face_.index()), frame, palette);
   }
-  if (message_tics_ > 0 && doom_messages(frame)) {  // Doom's message line, top left, in its own font
+  // Doom's message line, top left, in its own font; over a smaller view's border Doom
+  // redraws the border after it while a menu is open (D_Display's R_DrawViewBorder).
+  const bool border_hides = menu_over_border && window.height < frame.height - bar;
+  if (message_tics_ > 0 && doom_messages(frame) && !border_hides) {
     const int doom_scale = play::ScreenPlace::scale_for(frame.width, frame.height);
     hud_font_->draw(frame, message_, 0, 0, doom_scale, 0, 0, palettes_[size_t(flash)]);
   }

@@ -160,6 +160,7 @@ class Session {
   int screen_blocks = 10;       // Doom's screen size: 3..9 a smaller view in a border, 11 no status bar
   bool low_detail = false;      // Doom's low detail: columns twice as wide (each pair shows its left one)
   bool show_messages = true;    // the rules' messages (pickups...); say() always shows
+  bool menu_over_border = false;  // a menu is open: Doom's border, redrawn, hides the message line
   AutomapSettings automap;
   Menu menu;
   double fov = 90;

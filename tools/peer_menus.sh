@@ -15,8 +15,10 @@
 # closest counted (Chocolate's skull and face); Doom picks the quit message by the tic
 # F10 is pressed at, so ours asks at each of 8 tics. Writes DIR/results.txt and, per
 # screen, DIR/<iwad>_<screen>.png (ours | Chocolate's | differences in red).
-# Needs chocolate-doom, freedoom, xvfb, xdotool, imagemagick (Debian packages) and a
-# build of the game.
+# Chocolate's side is timed by the clock: on a busy machine its keys may arrive late
+# enough to leave it on another screen (the title's demo instead of the game), which
+# the pictures show; run it on a quiet machine. Needs chocolate-doom, freedoom, xvfb,
+# xdotool, imagemagick (Debian packages) and a build of the game.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=out/peer_menus build=build
@@ -73,7 +75,7 @@ walk() {
   echo "14.2 key escape"; echo "14.6 key escape"; echo "15.0 key down"; echo "15.4 key enter"; echo "15.8 key enter"
   echo "16.2 type hello"; echo "17.0 window save_typed"; echo "17.4 key enter"
   echo "18.6 key escape"; echo "19.0 key up"; echo "19.4 key enter"; echo "19.8 shot load_saved"
-  echo "20.2 key escape"; echo "20.6 quit quit"
+  echo "20.2 key escape"; echo "23.0 quit quit"  # after the message line has cleared (4 s)
 }
 
 xkey() {  # Doom's key names as X's

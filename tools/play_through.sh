@@ -59,7 +59,7 @@ shot title
 xdotool key Escape; sleep 0.5; shot menu
 xdotool key Return; sleep 0.5; shot skill
 xdotool key Return; sleep 2.5; shot start
-hold w 1.2; hold Right 0.3; sleep 0.5; shot walked
+hold w 1.2; hold Right 0.3; sleep 1.5; shot walked
 xdotool key F2; sleep 0.4; xdotool key Return; sleep 0.3; xdotool type --delay 80 pseudo; sleep 0.3; shot save
 xdotool key Return; sleep 1; shot saved
 xdotool key F10; sleep 0.5; shot quit
@@ -79,8 +79,9 @@ wait $pid 2>/dev/null || true
 geometry=$(identify -format '%wx%h' "$out"/*_walked.png)
 w=${geometry%x*} h=${geometry#*x}
 crop="${w}x$((h * 130 / 200))+0+$((h * 20 / 200))"
-differ=$(compare -metric AE <(convert "$out"/*_walked.png -crop "$crop" png:-) \
-  <(convert "$out"/*_loaded.png -crop "$crop" png:-) null: 2>&1 || true)
+convert "$out"/*_walked.png -crop "$crop" +repage "$out/xdg/before.png"
+convert "$out"/*_loaded.png -crop "$crop" +repage "$out/xdg/after.png"
+differ=$(compare -metric AE "$out/xdg/before.png" "$out/xdg/after.png" null: 2>&1 || true)
 total=$((w * h * 130 / 200))
 printf 'the view after the load: %.2f%% of its pixels as before the quit\n' \
   "$(echo "(${total} - ${differ%% *}) * 100 / ${total}" | bc -l)"
