@@ -223,6 +223,7 @@ int main(int argc, char** argv) {
                        record.empty() && !map_reload;
     if (headless && !script.empty()) {
       if (!source.is_wad()) throw CLI::ValidationError("--script", "drives Doom's front end: name a WAD with --iwad");
+      front_options.save_dir = std::filesystem::path(out_dir) / "savegames";  // never the player's own slots
       std::unique_ptr<game::FrontEnd> front =
           title ? std::make_unique<game::FrontEnd>(source, settings, front_options)
                 : std::make_unique<game::FrontEnd>(std::make_unique<game::Session>(source, skill, flags), settings,

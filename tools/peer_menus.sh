@@ -78,6 +78,13 @@ walk() {
   echo "20.2 key escape"; echo "23.0 quit quit"  # after the message line has cleared (4 s)
 }
 
+# Then each loads the other's save from the first slot (Load Game, the slot, and the
+# melt): Chocolate Doom the one our game wrote, ours Chocolate's.
+walk_load() {
+  echo "1.4 key escape"; echo "1.8 key down"; echo "2.2 key down"; echo "2.6 key enter"; echo "3.0 key enter"
+  echo "6.0 shot loaded"
+}
+
 xkey() {  # Doom's key names as X's
   case $1 in
     escape) echo Escape ;; enter) echo Return ;; up) echo Up ;; down) echo Down ;; f1) echo F1 ;; f10) echo F10 ;;
@@ -85,8 +92,8 @@ xkey() {  # Doom's key names as X's
   esac
 }
 
-run_chocolate() {  # iwad dir
-  local iwad=$1 dir=$2 now=0
+run_chocolate() {  # iwad dir walk
+  local iwad=$1 dir=$2 walk=$3
   mkdir -p "$dir/home"
   (cd "$dir" && HOME="$dir/home" DISPLAY=$display exec /usr/games/chocolate-doom -iwad "/usr/share/games/doom/$iwad.wad" \
      -nosound -config "$work/default.cfg" -extraconfig "$work/extra.cfg" >"$dir/log.txt" 2>&1) &
@@ -111,17 +118,17 @@ run_chocolate() {  # iwad dir
       window)  # the window itself (its screenshot key would type into a save's slot), 320x200 at 1:1
         DISPLAY=$display import -window "$wid" "$dir/$arg.png"; echo "$arg" >> "$dir/window_shots" ;;
     esac
-  done < <(walk "$iwad")
+  done < <($walk "$iwad")
   kill $pid 2>/dev/null || true
   wait $pid 2>/dev/null || true
 }
 
 # Ours: the same walk as a key script, each shot taken at the 24 tics around its time
 # (Chocolate's keys arrive a few tics late, or early).
-run_ours() {  # iwad dir
-  local iwad=$1 dir=$2
+run_ours() {  # iwad dir walk
+  local iwad=$1 dir=$2 walk=$3
   mkdir -p "$dir"
-  walk "$iwad" | while read -r at what arg; do
+  $walk "$iwad" | while read -r at what arg; do
     local tic; tic=$(echo "$at * 35 / 1" | bc)
     case $what in
       shot|window) for k in $(seq 0 23); do echo "$((tic - 4 + k)) shot ${arg}_$k.png"; done ;;
@@ -137,26 +144,40 @@ run_ours() {  # iwad dir
 }
 
 : > "$out/results.txt"
-printf '%-10s %-12s %s\n' iwad screen "equal pixels" >> "$out/results.txt"
-for iwad in "${iwads[@]}"; do
-  run_chocolate "$iwad" "$work/$iwad/chocolate"
-  run_ours "$iwad" "$work/$iwad/ours"
-  for theirs in "$work/$iwad/chocolate"/*.png; do
+printf '%-10s %-18s %s\n' iwad screen "equal pixels" >> "$out/results.txt"
+compare_screens() {  # iwad chocolate-dir ours-dir [label-prefix]
+  local iwad=$1 theirs_dir=$2 ours_dir=$3 prefix=${4:-}
+  for theirs in "$theirs_dir"/*.png; do
     screen=$(basename "$theirs" .png)
     best=-1 best_k=0 fuzz=0
     # The window's colours are the palette's to 6 bits (Chocolate's VGA rounding).
-    grep -qx "$screen" "$work/$iwad/chocolate/window_shots" 2>/dev/null && fuzz=2.5%
+    grep -qx "$screen" "$theirs_dir/window_shots" 2>/dev/null && fuzz=2.5%
     for k in $(seq 0 23); do
-      ours="$work/$iwad/ours/${screen}_$k.png"
+      ours="$ours_dir/${screen}_$k.png"
       [ -f "$ours" ] || continue
       differ=$(compare -metric AE -fuzz $fuzz "$ours" "$theirs" null: 2>&1 || true)
       equal=$((64000 - ${differ%% *}))
       if [ "$equal" -gt "$best" ]; then best=$equal best_k=$k; fi
     done
-    ours="$work/$iwad/ours/${screen}_$best_k.png"
-    printf '%-10s %-12s %6.2f%%\n' "$iwad" "$screen" "$(echo "$best * 100 / 64000" | bc -l)" >> "$out/results.txt"
+    ours="$ours_dir/${screen}_$best_k.png"
+    printf '%-10s %-18s %6.2f%%\n' "$iwad" "$prefix$screen" "$(echo "$best * 100 / 64000" | bc -l)" >> "$out/results.txt"
     compare -fuzz $fuzz -highlight-color red -lowlight-color none "$ours" "$theirs" "$work/diff.png" 2>/dev/null || true
-    convert "$ours" "$theirs" "$work/diff.png" +append "$out/${iwad}_$screen.png"
+    convert "$ours" "$theirs" "$work/diff.png" +append "$out/${iwad}_$prefix$screen.png"
   done
+}
+for iwad in "${iwads[@]}"; do
+  w=$work/$iwad
+  run_chocolate "$iwad" "$w/chocolate" walk
+  run_ours "$iwad" "$w/ours" walk
+  compare_screens "$iwad" "$w/chocolate" "$w/ours"
+  # Each side's save into the other's first slot.
+  theirs_saves=$w/chocolate_loads/home/.local/share/chocolate-doom/savegames/$iwad.wad
+  ours_saves=$w/ours_loads/data/pseudo3d/savegames/$iwad.wad
+  mkdir -p "$theirs_saves" "$ours_saves"
+  cp "$w/ours/data/pseudo3d/savegames/$iwad.wad/doomsav0.dsg" "$theirs_saves/"
+  cp "$w/chocolate/home/.local/share/chocolate-doom/savegames/$iwad.wad/doomsav0.dsg" "$ours_saves/"
+  run_chocolate "$iwad" "$w/chocolate_loads" walk_load
+  run_ours "$iwad" "$w/ours_loads" walk_load
+  compare_screens "$iwad" "$w/chocolate_loads" "$w/ours_loads" "each_loads_"
 done
 cat "$out/results.txt"
