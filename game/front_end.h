@@ -37,7 +37,7 @@ struct FrontEndOptions {
 
 // The turn (1/65536 of a turn) a pixel of mouse motion gives at Doom's sensitivity
 // 0..9: Doom's (sensitivity + 5) / 10 scaling, 24 units at its default of 5.
-constexpr double mouse_turn_per_pixel(int sensitivity) { return 48.0 * (sensitivity + 5) / 10; }
+constexpr double mouse_turn_per_pixel(int sensitivity) { return 24.0 * (sensitivity + 5) / 10; }
 
 class FrontEnd {
  public:
