@@ -15,6 +15,8 @@
 #include "game/settings.h"
 #include "tests/support/support.h"
 
+#include <span>
+
 namespace p3d::game {
 namespace {
 
@@ -143,6 +145,63 @@ TEST(FrontEnd, MenuSoundsAndMusicAreLoggedByAKeyScript) {
   EXPECT_NE(r.log.find("9 sound PISTOL"), std::string::npos) << r.log;
   EXPECT_NE(r.log.find("1 music D_DM2TTL once"), std::string::npos) << r.log;
   EXPECT_NE(r.log.find("10 music D_RUNNIN loop"), std::string::npos) << r.log << " (MAP01's, from the tic it starts)";
+}
+
+// The menu's slots: a save written through the menu loads from the title back to the
+// same place; a broken or foreign slot is refused with a message and the game goes on.
+TEST(FrontEnd, SlotsSaveAndLoadAndABrokenSaveLeavesTheGame) {
+  Settings settings;
+  FrontEndOptions options;
+  options.save_dir = test::temp_dir("front_end_slots");
+  FrontEnd f(freedoom2(), settings, options);
+  f.new_game(1, 1, 3);
+  f.key_down('w');
+  for (int t = 0; t < 20; ++t) f.tic();
+  f.key_up('w');
+  for (int t = 0; t < 20; ++t) f.tic();
+  press(f, front::kKeyF2);
+  press(f, front::kKeyEnter);
+  for (char c : std::string("here")) press(f, c);
+  press(f, front::kKeyEnter);
+  f.tic();  // the game saved goes on a tic: so shall the one loaded (Doom loads, then plays the tic)
+  const Session::Pose saved = f.session()->pose();
+  ASSERT_TRUE(std::filesystem::exists(f.slot_path(0)));
+  const std::vector<uint8_t> good = read_file_bytes(f.slot_path(0));
+  EXPECT_EQ(std::string(good.begin(), good.begin() + 4), "HERE") << "Doom's description opens the file";
+  press(f, front::kKeyF7);
+  press(f, 'y');
+  f.tic();
+  ASSERT_FALSE(f.session()) << "back on the title";
+  press(f, front::kKeyF3);
+  press(f, front::kKeyEnter);
+  f.tic();
+  ASSERT_TRUE(f.playing());
+  EXPECT_EQ(f.session()->pose().pos, saved.pos);
+  EXPECT_EQ(f.session()->pose().angle, saved.angle);
+
+  // A save cut short, and one of Doom (freedoom1) in a Doom II game: refused, the game goes on.
+  write_file_atomically(f.slot_path(1), std::span(good.data(), good.size() / 2));
+  const std::vector<uint8_t> doom1 = [] {
+    Settings s;
+    FrontEndOptions o;
+    o.save_dir = test::temp_dir("front_end_slots_doom1");
+    FrontEnd d({{}, {test::freedoom_path("freedoom1.wad")}, ""}, s, o);
+    d.new_game(1, 1, 3);
+    d.tic();
+    EXPECT_TRUE(d.save_slot(0, "E1M1"));
+    return read_file_bytes(d.slot_path(0));
+  }();
+  write_file_atomically(f.slot_path(2), doom1);
+  for (int slot : {1, 2}) {
+    const uint64_t tics = f.session()->tics();
+    const Session::Pose before = f.session()->pose();
+    EXPECT_FALSE(f.load_slot(slot)) << slot;
+    ASSERT_TRUE(f.playing());
+    EXPECT_EQ(f.session()->map_name(), "MAP01");
+    EXPECT_EQ(f.session()->pose().pos, before.pos);
+    f.tic();
+    EXPECT_EQ(f.session()->tics(), tics + 1) << "the game goes on";
+  }
 }
 
 TEST(KeyScript, BadStepsNameTheirLine) {

@@ -3,6 +3,8 @@
 // and byte-for-byte reproducible outputs.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <sys/stat.h>
 
 #include <chrono>
@@ -328,6 +330,42 @@ TEST_F(Tools, GamePlaysTheBundledDemoWithoutADisplay) {
   EXPECT_NE(o.find("624 tics, 625"), std::string::npos) << o << " (one frame per tic, plus the first)";
   ASSERT_EQ(run_in_source(game + " maps/bunker.grid --renderer dda --resolution 160x100 --quit-after-tics 35 --no-vsync", o), 0)
       << o;
+}
+
+// Doom's music as the window plays it, through SDL's disk audio driver: MAP01's track
+// sounds, at the music volume asked for (Chocolate's gain: volume x 8 / 127), and not
+// at all at volume 0 (MAP01's start is otherwise quiet). Five seconds each: the sound
+// font loads meanwhile; the last two are measured.
+TEST_F(Tools, TheGamesMusicSoundsAtItsVolume) {
+#ifdef P3D_SANITIZE
+  GTEST_SKIP() << "the Release build plays it (FluidSynth under the sanitizers is slow to start)";
+#endif
+  auto rms_of_last_seconds = [&](int volume) {
+    const std::string raw = out("music" + std::to_string(volume) + ".raw");
+    std::string o;
+    const std::string game = "SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=disk SDL_DISKAUDIOFILE=" + raw + " " + P3D_GAME;
+    EXPECT_EQ(run_in_source(game + " --iwad " + test::freedoom_path("freedoom2.wad").string() +
+                                " --warp 1 --window 320x200 --music-volume " + std::to_string(volume) +
+                                " --quit-after-tics 175",
+                            o),
+              0)
+        << o;
+    const std::vector<uint8_t> bytes = read_file_bytes(raw);
+    constexpr size_t kLast = 2 * 44100 * 2;  // two seconds of stereo samples
+    const size_t samples = bytes.size() / 2;
+    EXPECT_GT(samples, kLast) << "the device played five seconds";
+    double sum = 0;
+    for (size_t i = samples > kLast ? samples - kLast : 0; i < samples; ++i) {
+      const double v = int16_t(bytes[2 * i] | bytes[2 * i + 1] << 8);
+      sum += v * v;
+    }
+    return std::sqrt(sum / double(std::min(samples, kLast)));
+  };
+  const double loud = rms_of_last_seconds(15), half = rms_of_last_seconds(8), off = rms_of_last_seconds(0);
+  EXPECT_GT(loud, 500) << "D_RUNNIN plays";
+  EXPECT_LT(half, loud * 0.8) << "volume 8 is 64/120 of 15's gain";
+  EXPECT_GT(half, loud * 0.25);
+  EXPECT_LT(off, 5) << "volume 0 is silent";
 }
 
 // Without a display the game says so and exits 1 at once, rather than running unseen.
