@@ -1,10 +1,8 @@
 #include "game/front_end.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 
-#include "engine/front/gamma.h"
 #include "engine/front/keys.h"
 #include "engine/front/texts.h"
 #include "engine/play/dehacked.h"
@@ -114,7 +112,7 @@ void FrontEnd::advance_demo() {
     };
     if (state_ == State::kPage) show_page();  // one page after another: the same screen state, no melt
     else change_screen(show_page);
-    if (!step.music.empty()) play_music(play::title_track(mode_ == front::GameMode::kCommercial));
+    if (step.music.music != play::Music::kNone) play_music(step.music);
     return;
   }
 }
@@ -244,7 +242,7 @@ void FrontEnd::key_down(int key) {
     text_menu_.open();
     return;
   }
-  if (state_ != State::kLevel || options_.watching) {  // any other key pops up the menu in demos
+  if (state_ == State::kPage || state_ == State::kDemo || options_.watching) {  // any other key pops up the menu in demos
     if (menu_) menu_->open();
     return;
   }
@@ -252,7 +250,7 @@ void FrontEnd::key_down(int key) {
     paused_ = !paused_;
     return;
   }
-  game_key(key);
+  if (state_ == State::kLevel) game_key(key);
 }
 
 void FrontEnd::key_up(int key) { held_.erase(key); }

@@ -3,9 +3,11 @@
 // the order Doom, the Ultimate Doom and Doom II use, round and round.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "engine/front/game_mode.h"
+#include "engine/play/music.h"
 
 namespace p3d::front {
 
@@ -14,7 +16,7 @@ struct DemoStep {
   Kind kind = Kind::kPage;
   std::string lump;   // the page's picture (TITLEPIC, CREDIT, HELP2) or the demo (DEMO1..DEMO4)
   int tics = 0;       // a page's time on screen
-  std::string music;  // a page's music lump (the title's), or empty: the music goes on
+  play::Track music{play::Music::kNone, false};  // a page's music (the title's, once), or none: it goes on
 };
 
 class DemoLoop {

@@ -345,7 +345,7 @@ TEST(DemoLoop, DoomIIShowsTheTitleAndThreeDemos) {
   loop.restart();
   const DemoStep title = loop.advance();
   EXPECT_EQ(title.tics, 11 * 35);
-  EXPECT_EQ(title.music, "D_DM2TTL");
+  EXPECT_EQ(title.music, (play::Track{play::Music::kDm2ttl, false}));
 }
 
 TEST(DemoLoop, UltimateDoomAddsTheFourthDemo) {
