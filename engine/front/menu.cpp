@@ -11,8 +11,6 @@ namespace p3d::front {
 
 namespace {
 
-constexpr int kLineHeight = 16;
-
 // The keys of Doom's menus (Chocolate Doom's defaults).
 constexpr int kMenuActivate = kKeyEscape, kMenuUp = kKeyUp, kMenuDown = kKeyDown, kMenuLeft = kKeyLeft,
               kMenuRight = kKeyRight, kMenuBack = kKeyBackspace, kMenuForward = kKeyEnter, kMenuConfirm = 'y',

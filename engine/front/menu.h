@@ -31,6 +31,7 @@ struct MenuSettings {
 };
 constexpr int kMinScreenBlocks = 3, kMaxScreenBlocks = 11;
 
+constexpr int kMenuLineHeight = 16;  // rows between a menu's items (Doom's LINEHEIGHT)
 constexpr int kSaveSlots = 6;
 constexpr int kSaveStringSize = 24;
 constexpr int kFontFirst = '!', kFontLast = '_';  // Doom's heads-up font (HU_FONTSTART, its last letter)  // a description's bytes with its terminating zero (Doom's SAVESTRINGSIZE)

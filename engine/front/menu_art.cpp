@@ -6,7 +6,6 @@ namespace p3d::front {
 
 namespace {
 
-constexpr int kLineHeight = 16;
 constexpr int kSkullOffset = -32;  // Doom's SKULLXOFF
 
 }  // namespace
@@ -126,10 +125,10 @@ void MenuArt::draw_menu(const Menu& menu, image::Image& frame, const std::vector
       break;
     case Page::kOptions:
       put("M_OPTTTL", 108, 15, frame, palette, at);
-      put(settings.low_detail ? "M_GDLOW" : "M_GDHIGH", s.x + 175, s.y + kLineHeight * 2, frame, palette, at);
-      put(settings.show_messages ? "M_MSGON" : "M_MSGOFF", s.x + 120, s.y + kLineHeight * 1, frame, palette, at);
-      thermometer(s.x, s.y + kLineHeight * 6, 10, settings.mouse_sensitivity, frame, palette, at);
-      thermometer(s.x, s.y + kLineHeight * 4, 9, menu.screen_size_slider(), frame, palette, at);
+      put(settings.low_detail ? "M_GDLOW" : "M_GDHIGH", s.x + 175, s.y + kMenuLineHeight * 2, frame, palette, at);
+      put(settings.show_messages ? "M_MSGON" : "M_MSGOFF", s.x + 120, s.y + kMenuLineHeight * 1, frame, palette, at);
+      thermometer(s.x, s.y + kMenuLineHeight * 6, 10, settings.mouse_sensitivity, frame, palette, at);
+      thermometer(s.x, s.y + kMenuLineHeight * 4, 9, menu.screen_size_slider(), frame, palette, at);
       break;
     case Page::kReadThis1:  // Doom II's one help page, or Doom's first
       put(menu.mode() == GameMode::kCommercial ? "HELP" : "HELP2", 0, 0, frame, palette, at);
@@ -137,28 +136,28 @@ void MenuArt::draw_menu(const Menu& menu, image::Image& frame, const std::vector
     case Page::kReadThis2: put("HELP1", 0, 0, frame, palette, at); break;
     case Page::kSound:
       put("M_SVOL", 60, 38, frame, palette, at);
-      thermometer(s.x, s.y + kLineHeight * 1, 16, settings.sfx_volume, frame, palette, at);
-      thermometer(s.x, s.y + kLineHeight * 3, 16, settings.music_volume, frame, palette, at);
+      thermometer(s.x, s.y + kMenuLineHeight * 1, 16, settings.sfx_volume, frame, palette, at);
+      thermometer(s.x, s.y + kMenuLineHeight * 3, 16, settings.music_volume, frame, palette, at);
       break;
     case Page::kLoad:
     case Page::kSave:
       put(s.page == Page::kLoad ? "M_LOADG" : "M_SAVEG", 72, 28, frame, palette, at);
       for (int i = 0; i < kSaveSlots; ++i) {
-        save_load_border(s.x, s.y + kLineHeight * i, frame, palette, at);
-        write_text(s.x, s.y + kLineHeight * i, menu.slot_texts()[size_t(i)], frame, palette, at);
+        save_load_border(s.x, s.y + kMenuLineHeight * i, frame, palette, at);
+        write_text(s.x, s.y + kMenuLineHeight * i, menu.slot_texts()[size_t(i)], frame, palette, at);
       }
       if (s.page == Page::kSave && menu.entering_save_name()) {
         const int slot = menu.save_slot();
-        write_text(s.x + text_width(menu.slot_texts()[size_t(slot)]), s.y + kLineHeight * slot, "_", frame, palette, at);
+        write_text(s.x + text_width(menu.slot_texts()[size_t(slot)]), s.y + kMenuLineHeight * slot, "_", frame, palette, at);
       }
       break;
   }
   int y = s.y;
   for (const Menu::Item& item : s.items) {
     if (!item.picture.empty()) put(item.picture, s.x, y, frame, palette, at);
-    y += kLineHeight;
+    y += kMenuLineHeight;
   }
-  put(s.skull ? "M_SKULL2" : "M_SKULL1", s.x + kSkullOffset, s.y - 5 + s.item_on * kLineHeight, frame, palette, at);
+  put(s.skull ? "M_SKULL2" : "M_SKULL1", s.x + kSkullOffset, s.y - 5 + s.item_on * kMenuLineHeight, frame, palette, at);
 }
 
 bool MenuArt::draw_page(const std::string& lump, image::Image& frame, const std::vector<uint32_t>& palette) const {

@@ -34,7 +34,7 @@ struct Demo {
   int skill = level::kDefaultSkill;
   bool fast = false, respawn = false, no_monsters = false;
   bool custom_start = false;  // the player starts at `start`, not the map's player 1 start
-  geom::Vec2 start;
+  geom::Vec2 start{0, 0};     // (GLM leaves a vector unset by default)
   double angle = 0;           // degrees, counter-clockwise from east
   uint8_t keys = 0;           // the six keys held at the start (--all-keys)
   std::vector<DemoTic> tics;

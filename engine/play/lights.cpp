@@ -9,7 +9,6 @@ namespace {
 
 constexpr int kGlowSpeed = 8;     // light units a tic
 constexpr int kStrobeBright = 5;  // tics a strobe stays bright
-constexpr int kSlowDark = 35;
 
 }  // namespace
 

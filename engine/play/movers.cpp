@@ -14,7 +14,6 @@ constexpr Fixed kDoorSpeed = 2 * kFracUnit;
 constexpr int kDoorWait = 150;  // tics a raised door stays open
 constexpr Fixed kPlatSpeed = kFracUnit;
 constexpr int kPlatWait = 3;  // seconds a lift waits
-constexpr Fixed kFloorSpeed = kFracUnit;
 constexpr Fixed kCeilingSpeed = kFracUnit;
 constexpr int kTicRate = 35;
 

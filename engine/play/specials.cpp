@@ -14,9 +14,7 @@ namespace p3d::play {
 
 namespace {
 
-constexpr Fixed kFloorSpeed = kFracUnit;
 constexpr int kButtonTime = 35;                // tics before a button pops back out
-constexpr int kFastDark = 15, kSlowDark = 35;  // strobes' dark tics
 constexpr int kMaxAdjoiningSectors = 20;       // the size of Doom's list in P_FindNextHighestFloor
 constexpr int kTeleportFreezeTics = 18;
 constexpr bool kOnce = false, kAgain = true;  // a switch stays flipped, or is a button

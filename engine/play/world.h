@@ -39,6 +39,8 @@ namespace p3d::play {
 constexpr Fixed kGravity = kFracUnit;
 constexpr Fixed kMaxMove = 30 * kFracUnit;
 constexpr Fixed kFloatSpeed = 4 * kFracUnit;
+constexpr Fixed kFloorSpeed = kFracUnit;      // Doom's FLOORSPEED: floors and stairs, a unit a tic
+constexpr int kFastDark = 15, kSlowDark = 35;  // strobes' dark tics (Doom's FASTDARK, SLOWDARK)
 constexpr Fixed kPlayerRadius = 16 * kFracUnit;
 constexpr Fixed kMaxRadius = 32 * kFracUnit;
 constexpr Fixed kViewHeight = 41 * kFracUnit;

@@ -5,23 +5,18 @@
 #include <span>
 
 #include "engine/wad/art.h"
+#include "engine/wad/map_data.h"
 
 namespace p3d::wad {
-
-namespace {
-
-constexpr size_t kVertexRecord = 4, kSegRecord = 12, kLineRecord = 14;
-
-}  // namespace
 
 void attach_doom_segs(const MapLumps& lumps, level::Level& level) {
   level.doom_segs.clear();
   level.doom_seg_start.clear();
   const Lump *vertexes = lumps.find("VERTEXES"), *segs = lumps.find("SEGS"), *lines = lumps.find("LINEDEFS");
   if (lumps.udmf() || !vertexes || !segs || !lines || vertexes->bytes.size() % kVertexRecord ||
-      segs->bytes.empty() || segs->bytes.size() % kSegRecord || lines->bytes.size() % kLineRecord)
+      segs->bytes.empty() || segs->bytes.size() % kSegRecord || lines->bytes.size() % kLinedefRecord)
     return;
-  const size_t vertex_count = vertexes->bytes.size() / kVertexRecord, line_count = lines->bytes.size() / kLineRecord;
+  const size_t vertex_count = vertexes->bytes.size() / kVertexRecord, line_count = lines->bytes.size() / kLinedefRecord;
   auto u16 = [](std::span<const uint8_t> b, size_t at) { return uint16_t(b[at] | b[at + 1] << 8); };
   // The segs of each LINEDEF side.
   std::vector<std::vector<size_t>> by_side(line_count * 2);

@@ -13,7 +13,6 @@ namespace p3d::wad {
 
 namespace {
 
-constexpr size_t kThingRecord = 10, kLinedefRecord = 14, kSidedefRecord = 30, kVertexRecord = 4, kSectorRecord = 26;
 constexpr uint16_t kNoSidedef = 0xFFFF;
 
 std::string name8(ByteReader& in) {

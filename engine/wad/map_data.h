@@ -3,6 +3,7 @@
 // the compiler builds its own tree) and UDMF's TEXTMAP both decode to this.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -13,6 +14,10 @@
 namespace p3d::wad {
 
 constexpr int kNoSide = -1;
+
+// The sizes of Doom's binary map lumps' records, in bytes.
+constexpr size_t kThingRecord = 10, kLinedefRecord = 14, kSidedefRecord = 30, kVertexRecord = 4, kSectorRecord = 26,
+                 kSegRecord = 12, kSubsectorRecord = 4, kNodeRecord = 28;
 
 // Doom's linedef flags (the binary format's bits; UDMF's booleans map onto them).
 enum LineFlag : uint32_t {

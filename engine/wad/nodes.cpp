@@ -8,12 +8,12 @@
 #include <cmath>
 
 #include "engine/util/bytes.h"
+#include "engine/wad/map_data.h"
 
 namespace p3d::wad {
 
 namespace {
 
-constexpr size_t kNodeRecord = 28, kSubsectorRecord = 4, kSegRecord = 12;
 constexpr uint16_t kSubsectorBit = 0x8000;
 constexpr int kFracBits = 16;
 

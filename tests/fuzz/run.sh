@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-5}
-CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DENGINE_FUZZ=ON >/dev/null
+CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DENGINE_FUZZ=ON -DCMAKE_UNITY_BUILD=ON >/dev/null
 cmake --build build-fuzz
 work=build-fuzz/corpus
 rm -rf "$work" && mkdir -p "$work"

@@ -102,6 +102,9 @@ TEST_F(Tools, InstalledToolsRunFromAScratchPrefix) {
 // cpack -G DEB: a Debian package of the programs and the bundled maps, its
 // dependencies found from the libraries the programs link.
 TEST_F(Tools, DebianPackageHoldsTheProgramsAndDeclaresItsDependencies) {
+#ifdef P3D_SANITIZE
+  GTEST_SKIP() << "the Release build packages its own programs (a package of sanitized ones helps no one)";
+#endif
   std::string o;
   if (test::run("command -v dpkg-deb && command -v dpkg-shlibdeps", o) != 0) GTEST_SKIP() << "not a Debian machine";
   const std::filesystem::path build = test::tools_dir().parent_path();
@@ -562,6 +565,9 @@ TEST_F(Tools, BehaveLikeProgramsPeopleKnow) {
 }
 
 TEST_F(Tools, BenchWritesItsTablesAsJson) {
+#ifdef P3D_SANITIZE
+  GTEST_SKIP() << "the Release build runs the benchmark's sections (the sanitizers check the code they run elsewhere)";
+#endif
   std::string o;
   ASSERT_EQ(test::run(tool("bench") + " grids --size 32x20 --repeat 1 --budget 0.01 --json " + out("b.json"), o), 0) << o;
   const std::string json = read_file_text(out("b.json"));
