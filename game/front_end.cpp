@@ -6,6 +6,7 @@
 #include "engine/front/keys.h"
 #include "engine/front/texts.h"
 #include "engine/play/dehacked.h"
+#include "engine/util/doom.h"
 #include "engine/util/error.h"
 #include "engine/util/file.h"
 #include "engine/wad/art.h"
@@ -146,18 +147,14 @@ bool FrontEnd::start_demo(const std::string& lump) {
 // ---- games, saves and loads
 
 void FrontEnd::new_game(int episode, int map, int skill) {
-  char name[16];
-  if (mode_ == front::GameMode::kCommercial)
-    std::snprintf(name, sizeof name, "MAP%02d", map);
-  else
-    std::snprintf(name, sizeof name, "E%dM%d", episode, map);
+  const std::string name = doom::map_name(mode_ == front::GameMode::kCommercial, episode, map);
   bsp::LevelSource source = *wads_;
   source.map = name;
   std::unique_ptr<Session> session;
   try {
     session = std::make_unique<Session>(source, skill, options_.flags);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "game: cannot start %s: %s\n", name, e.what());
+    std::fprintf(stderr, "game: cannot start %s: %s\n", name.c_str(), e.what());
     if (!session_ && !start_title()) quit_ = true;
     return;
   }

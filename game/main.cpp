@@ -7,6 +7,7 @@
 #include "engine/bsp/load.h"
 #include "engine/play/doom_demo.h"
 #include "engine/render/camera_file.h"
+#include "engine/util/doom.h"
 #include "engine/util/file.h"
 #include "game/autopilot.h"
 #include "game/headless.h"
@@ -68,13 +69,8 @@ void say_what_is_not_played(const play::DoomDemo& d, const std::string& what) {
 
 // Doom's -warp: "MAP" on a Doom II IWAD (MAPxx maps), "EPISODE [MAP]" on Doom's (ExMy).
 std::string warp_map(const bsp::LevelSource& source, const std::vector<int>& warp) {
-  const bool doom2 = has_doom2_maps(source);
-  char name[16];
-  if (doom2)
-    std::snprintf(name, sizeof name, "MAP%02d", warp[0]);
-  else
-    std::snprintf(name, sizeof name, "E%dM%d", warp[0], warp.size() > 1 ? warp[1] : 1);
-  return name;
+  if (has_doom2_maps(source)) return doom::map_name(true, 1, warp[0]);
+  return doom::map_name(false, warp[0], warp.size() > 1 ? warp[1] : 1);
 }
 
 // The settings from their file, each warning said once.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "engine/util/doom.h"
 #include "engine/util/error.h"
 
 namespace p3d::play {
@@ -20,14 +21,7 @@ DoomTic DoomDemo::console_tic(size_t tic) const {
   return commands[tic * size_t(player_count()) + size_t(slot)];
 }
 
-std::string DoomDemo::map_name(bool commercial) const {
-  char name[16];
-  if (commercial)
-    std::snprintf(name, sizeof name, "MAP%02d", map);
-  else
-    std::snprintf(name, sizeof name, "E%dM%d", episode, map);
-  return name;
-}
+std::string DoomDemo::map_name(bool commercial) const { return doom::map_name(commercial, episode, map); }
 
 bool looks_like_doom_demo(std::span<const uint8_t> bytes) {
   if (bytes.empty()) return false;

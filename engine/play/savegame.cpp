@@ -17,6 +17,7 @@
 
 #include "engine/play/savegame_local.h"
 #include "engine/util/bytes.h"
+#include "engine/util/doom.h"
 #include "engine/util/error.h"
 #include "engine/wad/art.h"
 
@@ -37,14 +38,7 @@ enum : uint8_t { kTcCeiling, kTcDoor, kTcFloor, kTcPlat, kTcFlash, kTcStrobe, kT
 
 }  // namespace
 
-std::string SaveHeader::map_name(bool commercial) const {
-  char name[16];
-  if (commercial)
-    std::snprintf(name, sizeof name, "MAP%02d", map);
-  else
-    std::snprintf(name, sizeof name, "E%dM%d", episode, map);
-  return name;
-}
+std::string SaveHeader::map_name(bool commercial) const { return doom::map_name(commercial, episode, map); }
 
 // ---- [numbers] ----------------------------------------------------------------
 

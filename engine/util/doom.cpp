@@ -68,4 +68,13 @@ std::string next_map(std::string_view current, bool secret, const std::function<
   return exists(name) ? name : std::string();
 }
 
+std::string map_name(bool commercial, int episode, int map) {
+  char name[24];
+  if (commercial)
+    std::snprintf(name, sizeof name, "MAP%02d", map);
+  else
+    std::snprintf(name, sizeof name, "E%dM%d", episode, map);
+  return name;
+}
+
 }  // namespace p3d::doom

@@ -92,6 +92,8 @@ struct AnimatedRange {
 };
 std::span<const AnimatedRange> animated_ranges();
 
+// A map's lump name: Doom II's MAPxx (commercial games), else Doom's ExMy.
+std::string map_name(bool commercial, int episode, int map);
 // The map an exit leads to, in Doom's order (ExMy: M8 ends the episode, a secret
 // exit goes to M9, M9 returns where its episode's secret exit left; MAPxx: MAP15's
 // secret exit goes to MAP31, MAP31's to MAP32, both return to MAP16, MAP30 ends the
