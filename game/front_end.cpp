@@ -136,7 +136,7 @@ bool FrontEnd::start_demo(const std::string& lump) {
       state_ = State::kDemo;
     });
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "game: %s: not played in the title loop (%s)\n", lump.c_str(), e.what());
+    std::fprintf(stderr, "pseudo3d: %s: not played in the title loop (%s)\n", lump.c_str(), e.what());
     return false;
   }
   apply_settings();
@@ -154,7 +154,7 @@ void FrontEnd::new_game(int episode, int map, int skill) {
   try {
     session = std::make_unique<Session>(source, skill, options_.flags);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "game: cannot start %s: %s\n", name.c_str(), e.what());
+    std::fprintf(stderr, "pseudo3d: cannot start %s: %s\n", name.c_str(), e.what());
     if (!session_ && !start_title()) quit_ = true;
     return;
   }
@@ -188,7 +188,7 @@ bool FrontEnd::save_slot(int slot, const std::string& description) {
     write_file_atomically(slot_path(slot), bytes);
   } catch (const std::exception& e) {
     say(std::string("not saved: ") + e.what());
-    std::fprintf(stderr, "game: not saved: %s\n", e.what());
+    std::fprintf(stderr, "pseudo3d: not saved: %s\n", e.what());
     return false;
   }
   say(menu_ ? menu_->doom_text(front::kGameSaved) : "game saved.");
@@ -207,7 +207,7 @@ bool FrontEnd::load_slot(int slot) {
     }
     game->load_game(bytes, path.string());
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "game: not loaded: %s\n", e.what());
+    std::fprintf(stderr, "pseudo3d: not loaded: %s\n", e.what());
     say(std::string("not loaded: ") + e.what());  // the game goes on as it was
     return false;
   }
@@ -498,10 +498,10 @@ std::optional<wad::MidiSong> FrontEnd::music_song(play::Music music) const {
   try {
     std::vector<std::string> warnings;
     wad::MidiSong song = play::read_song(*stack_, music, &warnings);
-    for (const std::string& w : warnings) std::fprintf(stderr, "game: %s\n", w.c_str());
+    for (const std::string& w : warnings) std::fprintf(stderr, "pseudo3d: %s\n", w.c_str());
     return song;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "game: %s (no music)\n", e.what());
+    std::fprintf(stderr, "pseudo3d: %s (no music)\n", e.what());
     return std::nullopt;
   }
 }

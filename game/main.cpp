@@ -63,8 +63,8 @@ void say_what_is_not_played(const play::DoomDemo& d, const std::string& what) {
   std::string missing;
   for (const auto& [on, name] : {std::pair{d.deathmatch, "deathmatch"}, {d.player_count() > 1, "other players"}})
     if (on) missing += std::string(missing.empty() ? "" : ", ") + name;
-  if (!missing.empty()) std::fprintf(stderr, "game: %s: not simulated yet: %s\n", what.c_str(), missing.c_str());
-  if (d.truncated) std::fprintf(stderr, "game: %s: ends without Doom's end marker (played as far as it goes)\n", what.c_str());
+  if (!missing.empty()) std::fprintf(stderr, "pseudo3d: %s: not simulated yet: %s\n", what.c_str(), missing.c_str());
+  if (d.truncated) std::fprintf(stderr, "pseudo3d: %s: ends without Doom's end marker (played as far as it goes)\n", what.c_str());
 }
 
 // Doom's -warp: "MAP" on a Doom II IWAD (MAPxx maps), "EPISODE [MAP]" on Doom's (ExMy).
@@ -77,7 +77,7 @@ std::string warp_map(const bsp::LevelSource& source, const std::vector<int>& war
 game::Settings read_settings(const std::filesystem::path& path) {
   std::vector<std::string> warnings;
   game::Settings s = game::load_settings(path, warnings);
-  for (const std::string& w : warnings) std::fprintf(stderr, "game: %s\n", w.c_str());
+  for (const std::string& w : warnings) std::fprintf(stderr, "pseudo3d: %s\n", w.c_str());
   return s;
 }
 
@@ -93,7 +93,7 @@ void add_music_options(CLI::App& app, bool& no_music, std::string& soundfont, in
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"game: Doom's front end on a WAD (title, menus, saves), or walk a level (.bsp, .map, .grid)", "game"};
+  CLI::App app{"pseudo3d: Doom's front end on a WAD (title, menus, saves), or walk a level (.bsp, .map, .grid)", "pseudo3d"};
   cli::LevelArgs level_args;
   std::vector<int> warp;
   std::string record, play, out_dir, resolution, window, renderer, autopilot, script, config;
@@ -261,7 +261,7 @@ int main(int argc, char** argv) {
       if (music_volume >= 0 && out.menu.music_volume == music_volume) out.menu.music_volume = saved.menu.music_volume;
       std::string why;
       if (!settings_file.empty() && !game::save_settings(out, settings_file, why))
-        std::fprintf(stderr, "game: settings not saved: %s\n", why.c_str());
+        std::fprintf(stderr, "pseudo3d: settings not saved: %s\n", why.c_str());
     };
     game::WindowOptions o;
     o.render_width = rw, o.render_height = rh;
@@ -273,6 +273,8 @@ int main(int argc, char** argv) {
     o.wad_changed = settings.last_wad != saved.last_wad;
     o.quit_after_tics = quit_after;
     if (title) {
+      std::printf("pseudo3d: %s: Doom's title screen\n", source.wads.back().c_str());
+      std::fflush(stdout);
       game::FrontEnd front(source, settings, front_options);
       return game::run_window(front, settings, o);
     }
@@ -309,6 +311,8 @@ int main(int argc, char** argv) {
       return 0;
     }
 
+    std::printf("pseudo3d: %s, skill %d%s\n", map_path.c_str(), skill, demo ? ", playing the demo" : "");
+    std::fflush(stdout);
     o.map_reload = map_reload;
     o.record = record;
     o.play = demo;

@@ -101,12 +101,12 @@ class Window {
 
   int run() {
     if (const char* why = why_no_display()) {
-      std::fprintf(stderr, "game: no display to open a window on (%s); %s\n", why, kHeadlessHint);
+      std::fprintf(stderr, "pseudo3d: no display to open a window on (%s); %s\n", why, kHeadlessHint);
       return 1;
     }
     if (SDL_Init(SDL_INIT_VIDEO) != 0) return fail("cannot start SDL video");
     if (offscreen_driver()) {
-      std::fprintf(stderr, "game: SDL found no display, only its offscreen driver; %s\n", kHeadlessHint);
+      std::fprintf(stderr, "pseudo3d: SDL found no display, only its offscreen driver; %s\n", kHeadlessHint);
       return 1;
     }
     if (o_.sound) open_audio();
@@ -175,7 +175,7 @@ class Window {
 
  private:
   int fail(const char* what) {
-    std::fprintf(stderr, "game: %s: %s\n", what, SDL_GetError());
+    std::fprintf(stderr, "pseudo3d: %s: %s\n", what, SDL_GetError());
     return 1;
   }
 
@@ -187,7 +187,7 @@ class Window {
   // ---- sound: the mixer on SDL's audio thread; without a device the game is silent
   void open_audio() {
     if (SDL_InitSubSystem(SDL_INIT_AUDIO) != 0) {
-      std::fprintf(stderr, "game: no sound (%s)\n", SDL_GetError());
+      std::fprintf(stderr, "pseudo3d: no sound (%s)\n", SDL_GetError());
       return;
     }
     SDL_AudioSpec want{}, have{};
@@ -206,7 +206,7 @@ class Window {
     if (o_.music) open_music(want.freq);
     audio_ = SDL_OpenAudioDevice(nullptr, 0, &want, &have, 0);
     if (!audio_) {
-      std::fprintf(stderr, "game: no sound (%s)\n", SDL_GetError());
+      std::fprintf(stderr, "pseudo3d: no sound (%s)\n", SDL_GetError());
       return;
     }
     SDL_PauseAudioDevice(audio_, 0);
@@ -226,7 +226,7 @@ class Window {
     std::string why;
     const std::optional<std::filesystem::path> font = find_soundfont(o_.soundfont, why);
     if (!font) {
-      std::fprintf(stderr, "game: no music: %s\n", why.c_str());
+      std::fprintf(stderr, "pseudo3d: no music: %s\n", why.c_str());
       return;
     }
     music_ = std::make_unique<MusicPlayer>(MusicOptions{rate, *font});
@@ -238,7 +238,7 @@ class Window {
   void update_music() {
     if (!music_ || !audio_) return;
     if (music_->failed()) {
-      std::fprintf(stderr, "game: no music: %s\n", music_->problem().c_str());
+      std::fprintf(stderr, "pseudo3d: no music: %s\n", music_->problem().c_str());
       SDL_LockAudioDevice(audio_);  // the callback looks at music_
       const std::unique_ptr<MusicPlayer> gone = std::move(music_);
       SDL_UnlockAudioDevice(audio_);

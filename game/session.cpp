@@ -209,7 +209,7 @@ bool Session::select_renderer(const std::string& name, bool announce) {
     return false;
   }
   if (!r->supports(*level_)) {
-    say(name + " cannot draw this level (it needs a grid map)");
+    say(name + " cannot draw this level (it needs " + std::string(r->needs()) + ")");
     return false;
   }
   r->prepare(*level_);
@@ -436,7 +436,7 @@ std::vector<uint8_t> Session::save_game(const std::string& description) const {
   extras.previous_pose = {previous_.pos.x, previous_.pos.y, previous_.z, previous_.view_z, previous_.angle};
   std::vector<std::string> warnings;
   std::vector<uint8_t> bytes = play::write_save(*world_, play::DoomNumbers(wads, *level_), description, extras, &warnings);
-  for (const std::string& w : warnings) std::fprintf(stderr, "game: saving %s: %s\n", name_.c_str(), w.c_str());
+  for (const std::string& w : warnings) std::fprintf(stderr, "pseudo3d: saving %s: %s\n", name_.c_str(), w.c_str());
   return bytes;
 }
 
@@ -477,7 +477,7 @@ void Session::load_game(std::span<const uint8_t> bytes, const std::string& what,
   play::carry_over(*world, *world_, header);
   const play::FaceInput fresh_face = play::face_input(world->player());  // ST_Start sees the new player
   const play::LoadedSave loaded = play::read_save(*world, bytes, what, play::DoomNumbers(wads, level), doom_only);
-  for (const std::string& w : loaded.warnings) std::fprintf(stderr, "game: %s\n", w.c_str());
+  for (const std::string& w : loaded.warnings) std::fprintf(stderr, "pseudo3d: %s\n", w.c_str());
 
   // The swap: nothing below throws.
   world_ = std::move(world);
@@ -525,7 +525,7 @@ bool Session::reload() {
     world_ = std::move(old_world);
     automap_view_.set_level(*level_);
     say("not reloaded: " + std::string(e.what()));
-    std::fprintf(stderr, "game: %s not reloaded, the old level kept: %s\n", file_name.c_str(), e.what());
+    std::fprintf(stderr, "pseudo3d: %s not reloaded, the old level kept: %s\n", file_name.c_str(), e.what());
     return false;
   }
   set_keys(cards);
@@ -534,7 +534,7 @@ bool Session::reload() {
   if (watch_) watch_->rebase();
   if (!select_renderer(renderer_name_, false)) select_renderer("bsp", false);
   say("reloaded " + file_name);
-  std::fprintf(stderr, "game: reloaded %s\n", file_name.c_str());
+  std::fprintf(stderr, "pseudo3d: reloaded %s\n", file_name.c_str());
   return true;
 }
 

@@ -16,7 +16,7 @@ const play::SoundClip* SoundBank::clip(play::Sound sound) {
     if (const wad::Lump* lump = stack_->find(lump_name))
       clip = play::decode_dmx(lump->bytes, wads_.back().filename().string() + ": " + lump_name);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "game: %s (not played)\n", e.what());
+    std::fprintf(stderr, "pseudo3d: %s (not played)\n", e.what());
   }
   return clip ? &*clip : nullptr;
 }

@@ -490,7 +490,7 @@ void bench_wad(const Settings& s) {
   const bool zdbsp = on_path("zdbsp");
   const auto dir = std::filesystem::temp_directory_path() / ("p3d-bench-wad-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  const std::string mapc = (own_directory() / "mapc").string();
+  const std::string mapc = (own_directory() / "pseudo3d-mapc").string();
   report.print("\n### %s: every map compiled (whole process, median of %d) beside ZDBSP, and rendered\n\n",
               source.wads.back().filename().c_str(), s.runs);
   const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
@@ -630,7 +630,7 @@ void bench_hostile(const Settings& s) {
     o.kind = kind;
     cases.push_back({std::string(kind) + " of 4096x4096 tiles", std::string(kind) + ".grid", 0, [o] { return map::generate_grid_text(o); }});
   }
-  const std::string mapc = (own_directory() / "mapc").string();
+  const std::string mapc = (own_directory() / "pseudo3d-mapc").string();
   for (Case& c : cases) {
     if (c.text) write_file_atomically(dir / c.file, c.text());
     const Measured m = run_measured({mapc, (dir / c.file).string(), "-o", (dir / "out.bsp").string()});
@@ -883,9 +883,9 @@ void bench_capture(const Settings& s) {
   report.print("| PNG, ours (libdeflate) | %s | %s |\n", fixed(ours_ms / n, 2).c_str(), fixed(ours_bytes / n / 1024, 0).c_str());
   report.print("| PNG, stb_image_write | %s | %s |\n", fixed(stb_ms / n, 2).c_str(), fixed(stb_bytes / n / 1024, 0).c_str());
   report.print("| stb / ours | %s | %s |\n", fixed(stb_ms / ours_ms, 2).c_str(), fixed(stb_bytes / ours_bytes, 2).c_str());
-  const std::string capture = (own_directory() / "capture").string();
+  const std::string capture = (own_directory() / "pseudo3d-capture").string();
   const std::string cores = std::to_string(std::max(1u, std::thread::hardware_concurrency()));
-  report.print("\n| `capture --cameras` (whole process) | seconds | frames/s |\n|---|---:|---:|\n");
+  report.print("\n| `pseudo3d-capture --cameras` (whole process) | seconds | frames/s |\n|---|---:|---:|\n");
   for (const std::string& threads : {std::string("1"), cores}) {
     std::vector<double> runs;
     for (int r = 0; r < 3; ++r)
@@ -997,7 +997,7 @@ std::string cpu_name() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"bench: renderer and compiler benchmarks, printed as markdown tables", "bench"};
+  CLI::App app{"pseudo3d-bench: renderer and compiler benchmarks, printed as markdown tables", "pseudo3d-bench"};
   Settings s;
   std::vector<std::string> sections;
   std::string size_text = "640x400";
@@ -1028,7 +1028,7 @@ int main(int argc, char** argv) {
   return cli::run(app, argc, argv, [&] {
     cli::parse_size(size_text, s.width, s.height);
     if (!json.empty()) cli::output_file(json, ".json", "--json");
-    if (!plots.empty()) cli::output_dir(plots);  // before the run, not after it
+    if (!plots.empty()) cli::output_dir(plots, "--plots");  // before the run, not after it
     for (const auto& r : s.renderers)
       if (!render::make_renderer(r)) throw CLI::ValidationError("--renderers", "unknown renderer '" + r + "'");
     if (sections.empty())
@@ -1041,7 +1041,12 @@ int main(int argc, char** argv) {
 #ifndef NDEBUG
     report.print("WARNING: not a Release build; timings are meaningless.\n");
 #endif
-    report.print("bench on %s, %dx%d, median of %d renders per camera\n", cpu_name().c_str(), s.width, s.height, s.repeat);
+    const bool renders = std::any_of(sections.begin(), sections.end(),
+                                     [](const std::string& name) { return name != "hostile" && name != "play"; });
+    if (renders)
+      report.print("bench on %s, %dx%d, median of %d renders per camera\n", cpu_name().c_str(), s.width, s.height, s.repeat);
+    else
+      report.print("bench on %s\n", cpu_name().c_str());
     for (const std::string& section : sections) {
       if (section == "render") bench_render(s);
       if (section == "scaling") bench_scaling(s);

@@ -66,7 +66,7 @@ class PngEncoder {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"capture: render frames of a compiled level (.bsp) to PNG files", "capture"};
+  CLI::App app{"pseudo3d-capture: render views of a level (.bsp, .map, .grid or a WAD's map) to PNG files", "pseudo3d-capture"};
   cli::LevelArgs level_args;
   std::string output, pos_text, size_text = "640x400", renderer_name = "bsp", columns, cameras, json;
   std::optional<double> angle;
@@ -108,7 +108,7 @@ int main(int argc, char** argv) {
       if (!columns.empty()) cli::output_file(columns, ".csv", "--columns");
     } else {
       cli::output_dir(output);
-      if (!columns.empty()) cli::output_dir(columns);
+      if (!columns.empty()) cli::output_dir(columns, "--columns");
     }
     if (!json.empty()) cli::output_file(json, ".json", "--json");
     std::vector<render::CameraSpec> shots;
@@ -129,7 +129,8 @@ int main(int argc, char** argv) {
       shots.push_back({"", pos, angle.value_or(pos_text.empty() ? level.player_angle : 0.0), eye, fov});
     }
     if (!renderer->supports(level))
-      throw Error(opened.name + ": the " + renderer_name + " renderer cannot draw this level");
+      throw Error(opened.name + ": the " + renderer_name + " renderer cannot draw this level (it needs " +
+                  std::string(renderer->needs()) + ")");
     renderer->prepare(level);
     const level::State state = level::start_state(level, skill);
     render::Frame frame(width, height);
@@ -140,7 +141,7 @@ int main(int argc, char** argv) {
     Outputs outputs;  // every frame, all or nothing
     PngEncoder encoder(ropt.threads);
     for (const render::CameraSpec& shot : shots) {
-      cli::warn_if_outside("capture", level, shot);
+      cli::warn_if_outside("pseudo3d-capture", level, shot);
       const render::Camera camera = render::camera_at(level, shot.pos, shot.angle, shot.eye, shot.fov);
       const auto start = std::chrono::steady_clock::now();
       const render::RenderStats s = renderer->render(level, state, camera, frame, &probe);

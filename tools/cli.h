@@ -103,14 +103,18 @@ inline std::vector<std::string> long_options(const CLI::App& app) {
   return names;
 }
 
-// The option nearest an unknown argument ("--sise" -> "--size"): a real near miss
-// (a few edits, fewer for short names), or "" when the argument is an option that
-// exists or nothing is near.
+// The option nearest an unknown argument: the one it begins ("--head" -> "--headless",
+// the shortest when several do), else a real near miss ("--sise" -> "--size": a few
+// edits, fewer for short names); "" when the argument is an option that exists or
+// nothing is near.
 inline std::string nearest_option(const CLI::App& app, const std::string& arg) {
   const std::string name = arg.substr(0, arg.find('='));
   const std::vector<std::string> names = long_options(app);
   if (std::find(names.begin(), names.end(), name) != names.end()) return "";
   std::string best;
+  for (const std::string& option : names)
+    if (name.size() > 3 && option.rfind(name, 0) == 0 && (best.empty() || option.size() < best.size())) best = option;
+  if (!best.empty()) return best;
   size_t best_distance = std::max<size_t>(2, name.size() / 4) + 1;
   for (const std::string& option : names) {
     const size_t d = edit_distance(name, option);
@@ -223,7 +227,7 @@ inline void report_warnings(const bsp::OpenedLevel& opened, bool all) {
     for (const std::string& w : warnings) std::fprintf(stderr, "%s\n", w.c_str());
     return;
   }
-  std::fprintf(stderr, "%s: %zu warning%s about quirks Doom tolerates (mapc lists them)\n", opened.name.c_str(),
+  std::fprintf(stderr, "%s: %zu warning%s about quirks Doom tolerates (pseudo3d-mapc lists them)\n", opened.name.c_str(),
                warnings.size(), warnings.size() == 1 ? "" : "s");
 }
 
@@ -255,8 +259,15 @@ inline std::filesystem::path output_file(const std::string& path, const char* ex
   return p;
 }
 
-// An output directory, created if need be.
-inline std::filesystem::path output_dir(const std::string& path) {
+// An output directory, created if need be. A name with a file's extension (out/x.png)
+// is refused: it is a slip for a file, not a directory anyone wants.
+inline std::filesystem::path output_dir(const std::string& path, const char* option = "--output") {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* file_ext : {".png", ".csv", ".json", ".bsp", ".svg", ".map", ".grid", ".wad", ".txt"})
+    if (ext == file_ext && !std::filesystem::is_directory(path))
+      throw CLI::ValidationError(option, "writes a directory here (one file per camera or map), and '" + path +
+                                             "' is named like a file");
   std::filesystem::create_directories(path);
   return path;
 }
@@ -283,6 +294,7 @@ inline void warn_if_outside(const char* tool, const level::Level& level, const r
 // Runs a tool's body: CLI errors exit 2 with usage; p3d::Error and I/O errors exit 1.
 template <typename Body>
 int run(CLI::App& app, int argc, char** argv, Body&& body) {
+  app.set_version_flag("--version", app.get_name() + " " + P3D_VERSION);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ExtrasError& e) {

@@ -97,7 +97,7 @@ image::Image compose(const std::vector<Row>& rows, int w, int h) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"compare: one level and camera through every renderer, side by side", "compare"};
+  CLI::App app{"pseudo3d-compare: one level and camera through every renderer, side by side", "pseudo3d-compare"};
   cli::LevelArgs level_args;
   std::string pos_text, path_file, size_text = "320x200", output, json;
   std::vector<std::string> names;
@@ -157,8 +157,8 @@ int main(int argc, char** argv) {
       auto r = render::make_renderer(name, ropt);
       if (!r) throw CLI::ValidationError("--renderers", "unknown renderer '" + name + "'");
       if (!r->supports(level)) {
-        if (asked) std::fprintf(stderr, "compare: %s: the %s renderer cannot draw this level (it needs a grid map); left out\n",
-                                opened.name.c_str(), name.c_str());
+        if (asked) std::fprintf(stderr, "pseudo3d-compare: %s: the %s renderer cannot draw this level (it needs %s); left out\n",
+                                opened.name.c_str(), name.c_str(), std::string(r->needs()).c_str());
         continue;
       }
       r->prepare(level);
@@ -168,7 +168,7 @@ int main(int argc, char** argv) {
     const size_t ref = rows.size() - 1;
 
     for (size_t c = 0; c < specs.size(); ++c) {
-      cli::warn_if_outside("compare", level, specs[c]);
+      cli::warn_if_outside("pseudo3d-compare", level, specs[c]);
       const render::Camera camera = render::camera_at(level, specs[c].pos, specs[c].angle, specs[c].eye, specs[c].fov);
       std::vector<render::Frame> frames_out(rows.size(), render::Frame(w, h));
       std::vector<render::Probe> probes(rows.size());

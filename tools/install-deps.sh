@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages this project builds with, if any are missing.
 set -euo pipefail
-packages=(cmake ninja-build g++ pkg-config dpkg-dev libsdl2-dev libglm-dev libstb-dev libcli11-dev libgtest-dev libdeflate-dev libmimalloc-dev libxxhash-dev freedoom
+packages=(cmake ninja-build g++ pkg-config dpkg-dev help2man lintian file libsdl2-dev libglm-dev libstb-dev libcli11-dev libgtest-dev libdeflate-dev libmimalloc-dev libxxhash-dev freedoom
           libfluidsynth-dev fluid-soundfont-gm freedm
           clang libfuzzer-14-dev libclang-rt-14-dev)
 missing=()

@@ -193,7 +193,7 @@ int compile_all(Args& a, const bsp::LevelSource& source) {
       level::write(level, std::filesystem::path(a.output) / (maps[i] + ".bsp"));
       const double ms = cli::seconds_since(start) * 1000;
       total_ms += ms;
-      total_warnings += warnings.size();
+      total_warnings += stats.warnings;
       if (terminal) std::fprintf(stderr, "\r%40s\r", "");
       if (a.all_warnings)
         for (const std::string& w : warnings) std::fprintf(stderr, "%s\n", w.c_str());
@@ -202,7 +202,7 @@ int compile_all(Args& a, const bsp::LevelSource& source) {
       char depth[32];
       std::snprintf(depth, sizeof depth, "%zu/%.1f", stats.max_depth, stats.mean_depth);
       std::printf("%-6s %-28s %7zu %9zu %7zu %7zu %9s %8zu %9.1f\n", maps[i].c_str(), title.c_str(), stats.walls,
-                  stats.fragments, stats.nodes, stats.leaves, depth, warnings.size(), ms);
+                  stats.fragments, stats.nodes, stats.leaves, depth, stats.warnings, ms);
     } catch (const std::exception& e) {
       if (terminal) std::fprintf(stderr, "\r%40s\r", "");
       std::fprintf(stderr, "%s\n", e.what());
@@ -217,7 +217,7 @@ int compile_all(Args& a, const bsp::LevelSource& source) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"mapc: compile a level (.map, .grid, or a WAD map) into a self-contained BSP (.bsp)", "mapc"};
+  CLI::App app{"pseudo3d-mapc: compile a level (.map, .grid, or a WAD map) into a self-contained BSP (.bsp)", "pseudo3d-mapc"};
   Args a;
   cli::add_level_options(app, a.level);
   app.add_option("-o,--output", a.output,

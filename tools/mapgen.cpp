@@ -23,7 +23,7 @@ std::vector<std::string> texture_files(const std::string& texture_dir, const std
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"mapgen: write a random level: a .map (soup, rooms) or a .grid (maze, caves)", "mapgen"};
+  CLI::App app{"pseudo3d-mapgen: write a random level: a .map (soup, rooms) or a .grid (maze, caves)", "pseudo3d-mapgen"};
   const std::string texture_dir = (cli::bundled_maps_dir() / "textures").string();
   std::string kind, output, grid_size = "64x64";
   map::GenerateOptions options;

@@ -35,7 +35,7 @@ for spec in "$@"; do
     -geometry 320x200 -config "$work/base.cfg" -extraconfig "$work/extra.cfg" >/dev/null 2>&1) || true
   last=$(ls "$work/frames"/*.bmp | sort | tail -1)
   convert "$last" "$work/$spec-chocolate.png"
-  build/tools/capture --iwad "$iwad" --map "$map" --size 320x200 -o "$work/$spec-ours.png" 2>/dev/null
+  build/tools/pseudo3d-capture --iwad "$iwad" --map "$map" --size 320x200 -o "$work/$spec-ours.png" 2>/dev/null
   convert "$work/$spec-ours.png" "$work/$spec-chocolate.png" -background '#202028' -splice 4x0 +append \
     "$work/$spec-row.png"
   rows+=("$work/$spec-row.png")

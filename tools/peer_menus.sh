@@ -31,7 +31,7 @@ while [ $# -gt 0 ]; do
     *) break ;;
   esac
 done
-for tool in /usr/games/chocolate-doom Xvfb xdotool convert compare "$build/game/game"; do
+for tool in /usr/games/chocolate-doom Xvfb xdotool convert compare "$build/game/pseudo3d"; do
   command -v "$tool" >/dev/null || { echo "$0: $tool is missing" >&2; exit 1; }
 done
 iwads=("$@")

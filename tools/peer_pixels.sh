@@ -39,7 +39,7 @@ case $port in
   *) echo "$0: --port is chocolate or crispy" >&2; exit 2 ;;
 esac
 [ -x "$bin" ] || { echo "$0: $bin is missing (apt-get install $port-doom)" >&2; exit 1; }
-for tool in "$build/game/game" "$build/tools/peer_pixels"; do
+for tool in "$build/game/pseudo3d" "$build/tools/peer_pixels"; do
   [ -x "$tool" ] || { echo "$0: $tool is missing (build first)" >&2; exit 1; }
 done
 maps=("$@")
@@ -73,7 +73,7 @@ for spec in "${maps[@]}"; do
     timeout 120 "$bin" -iwad "$iwad" -timedemo "$dir/turn.lmp" -nosound -nogui -window -geometry "$size" \
     -config "$work/base.cfg" -extraconfig "$work/extra.cfg" >"$dir/port.log" 2>&1) || true
   mapfile -t theirs < <(ls "$dir/port"/*.bmp 2>/dev/null | sort | tail -4)
-  "$build/game/game" --iwad "$iwad" --play "$dir/turn.lmp" --headless --size "$size" --no-status-bar \
+  "$build/game/pseudo3d" --iwad "$iwad" --play "$dir/turn.lmp" --headless --size "$size" --no-status-bar \
     --capture-every 1 --out "$dir/ours" >"$dir/ours.log" 2>&1 || { echo "$spec: our replay failed" >&2; continue; }
   # Our frame k is the view after k tics.
   ours=("$dir/ours/frame00002.png" "$dir/ours/frame00003.png" "$dir/ours/frame00004.png" "$dir/ours/frame00005.png")

@@ -49,7 +49,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 [ -x "$choc" ] || { echo "$0: $choc is not an executable" >&2; exit 1; }
-game=$build/game/game
+game=$build/game/pseudo3d
 [ -x "$game" ] || { echo "$0: $game is missing (build first)" >&2; exit 1; }
 iwads=/usr/share/games/doom
 specs=("$@")

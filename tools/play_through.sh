@@ -23,7 +23,7 @@ while [ $# -gt 0 ]; do
     *) echo "$0: unknown argument $1" >&2; exit 2 ;;
   esac
 done
-for tool in Xvfb xdotool import convert compare "$build/game/game"; do
+for tool in Xvfb xdotool import convert compare "$build/game/pseudo3d"; do
   command -v "$tool" >/dev/null || { echo "$0: $tool is missing" >&2; exit 1; }
 done
 mkdir -p "$out"

@@ -283,10 +283,11 @@ image::Image lantern() {  // a lantern hanging from a chain
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"texgen: write the bundled procedural textures (CC0) into a directory", "texgen"};
+  CLI::App app{"pseudo3d-texgen: write the bundled procedural textures (CC0) into a directory", "pseudo3d-texgen"};
   std::string dir;
-  app.add_option("directory", dir, "output directory, e.g. maps/textures")->required()->check(CLI::ExistingDirectory);
+  app.add_option("directory", dir, "output directory, e.g. maps/textures (made if missing)")->required();
   return cli::run(app, argc, argv, [&] {
+    std::filesystem::create_directories(dir);
     const std::pair<const char*, image::Image (*)()> textures[] = {
         {"brick", brick}, {"stone", stone}, {"metal", metal}, {"wood", wood},   {"tech", tech},   {"hazard", hazard},
         {"tiles", tiles}, {"ceiling", ceiling_light},       {"grass", grass}, {"rock", rock},   {"water", water},

@@ -54,6 +54,7 @@ struct Stats {
   double mean_depth = 0;         // over leaves
   double shortest_fragment = 0;  // map units
   size_t ray_cast_leaves = 0;    // leaves facing no sector (none, or plain segments only): found by a ray cast
+  size_t warnings = 0;           // a WAD map's quirks warned about, each counted (listed or not)
 
   // de Berg's bound on the expected size of 2DRANDOMBSP: n + 2 n ln n.
   double random_bound() const;

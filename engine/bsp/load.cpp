@@ -118,11 +118,13 @@ level::Level build_wad_map(const wad::Stack& wads, const std::string& map, const
   const FileLoc player = imported.source.player.loc;
   level::Level level = build(std::move(imported.source), o, stats);  // its pictures move into the level
   wad::attach_doom_data(wads, wad::normalize_name(map), level);  // to draw by Doom's rules
+  const bool player_outside =
+      !level.sectors.empty() && level::sector_at_brute_force(level, level.player_start) == level::kNone;
   if (warnings) {
     warnings->insert(warnings->end(), imported.warnings.begin(), imported.warnings.end());
-    if (!level.sectors.empty() && level::sector_at_brute_force(level, level.player_start) == level::kNone)
-      warnings->push_back(player.str() + ": warning: the player start lies outside every sector");
+    if (player_outside) warnings->push_back(player.str() + ": warning: the player start lies outside every sector");
   }
+  if (stats) stats->warnings = imported.warning_count + (player_outside ? 1 : 0);
   return level;
 }
 

@@ -21,6 +21,7 @@ class GridRayCaster final : public Renderer {
   std::string_view name() const override { return "dda"; }
   using Renderer::render;
   bool supports(const level::Level& level) const override { return level.grid.has_value(); }
+  std::string_view needs() const override { return "a .grid tile map"; }
 
   RenderStats render(const level::Level& level, const level::State& state, const Camera& camera, Frame& frame,
                      Probe* probe) override {

@@ -26,6 +26,8 @@ class Renderer {
   virtual std::string_view name() const = 0;
   // Whether this renderer can draw the level at all (the grid ray caster needs a grid map).
   virtual bool supports(const level::Level&) const { return true; }
+  // What a level needs for this renderer to draw it, for messages ("a grid map").
+  virtual std::string_view needs() const { return ""; }
   // Builds per-level acceleration data ahead of time (otherwise the first render does).
   virtual void prepare(const level::Level&) {}
   // Draws the level in a state seen by the camera into frame (whose size is the

@@ -50,7 +50,9 @@ class Importer {
     add_always_frames();
     add_sky();
     finish_warnings();
-    return {std::move(src_), std::move(warnings_)};
+    size_t count = 0;
+    for (const auto& [kind, n] : warning_counts_) count += n;
+    return {std::move(src_), std::move(warnings_), count};
   }
 
  private:

@@ -46,6 +46,7 @@ struct ImportOptions {
 struct ImportResult {
   map::Source source;
   std::vector<std::string> warnings;  // "<wad>:<map>: <record>: warning: <message>"
+  size_t warning_count = 0;           // every warning, listed above or only counted (max_warnings_per_kind)
 };
 
 // Throws Error("<wad>:<map>: ...") when the map does not exist or cannot be built.

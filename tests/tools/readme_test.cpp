@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <regex>
+#include <sstream>
 
 #include "engine/util/file.h"
 #include "tests/support/support.h"
@@ -50,12 +51,12 @@ std::string strip_comment(const std::string& line) {
 }
 
 bool skipped(const std::string& command) {
-  return command == "tools/quickstart.sh" || command == "tests/run.sh" || command == "build/tools/bench";
+  return command == "tools/quickstart.sh" || command == "tests/run.sh" || command == "build/tools/pseudo3d-bench";
 }
 
 // The game in a window: through the dummy video driver, for a few tics.
 std::string adapt(const std::string& command) {
-  if (command.rfind("build/game/game", 0) != 0 || command.find("--headless") != std::string::npos) return command;
+  if (command.rfind("build/game/pseudo3d", 0) != 0 || command.find("--headless") != std::string::npos) return command;
   return "SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy " + command + " --quit-after-tics 5 --no-vsync";
 }
 
@@ -70,17 +71,25 @@ std::vector<std::filesystem::path> documents() {
   return files;
 }
 
+// A fresh directory where build/, maps/, tools/ and tests/ lead to the real ones, with
+// out/outpost.bsp compiled as the quick start leaves it.
+std::filesystem::path scratch(const std::string& name) {
+  const auto dir = test::temp_dir(name);
+  std::filesystem::create_directory_symlink(test::tools_dir().parent_path(), dir / "build");
+  for (const char* shared : {"maps", "tools", "tests"})
+    std::filesystem::create_directory_symlink(test::source_dir() / shared, dir / shared);
+  std::string output;
+  EXPECT_EQ(test::run("cd " + dir.string() + " && build/tools/pseudo3d-mapc maps/outpost.map -o out/outpost.bsp", output), 0)
+      << output;
+  return dir;
+}
+
 TEST(Readme, EveryCommandRunsAsWritten) {
 #ifdef P3D_SANITIZE
   GTEST_SKIP() << "the Release build runs the documents' commands";
 #endif
-  const auto dir = test::temp_dir("readme");
-  std::filesystem::create_directory_symlink(test::tools_dir().parent_path(), dir / "build");
-  for (const char* shared : {"maps", "tools", "tests"})
-    std::filesystem::create_directory_symlink(test::source_dir() / shared, dir / shared);
-  // The README's commands compile maps/outpost.map first in the quick start.
+  const auto dir = scratch("readme");
   std::string output;
-  ASSERT_EQ(test::run("cd " + dir.string() + " && build/tools/mapc maps/outpost.map -o out/outpost.bsp", output), 0) << output;
 
   size_t ran = 0, skips = 0, blocks_seen = 0;
   for (const std::filesystem::path& document : documents()) {
@@ -106,6 +115,78 @@ TEST(Readme, EveryCommandRunsAsWritten) {
   EXPECT_EQ(skips, 3u) << "only the quick start and the whole benchmark are skipped";
   EXPECT_GT(ran, 40u);
   std::printf("[ stats    ] %zu blocks, %zu commands run, %zu skipped\n", blocks_seen, ran, skips);
+  std::filesystem::remove_all(dir);
+}
+
+// An example in a fenced `console` block: "$ command" lines, each followed by what it
+// prints.
+struct Example {
+  int line;
+  std::string command;
+  std::vector<std::string> expected;
+};
+
+std::vector<Example> console_examples(const std::string& text) {
+  std::vector<Example> examples;
+  std::istringstream in(text);
+  std::string line;
+  bool inside = false;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (!inside && line == "```console") {
+      inside = true;
+    } else if (inside && line.rfind("```", 0) == 0) {
+      inside = false;
+    } else if (inside && line.rfind("$ ", 0) == 0) {
+      examples.push_back({number, line.substr(2), {}});
+    } else if (inside && !examples.empty()) {
+      examples.back().expected.push_back(line);
+    }
+  }
+  return examples;
+}
+
+// A printed line as the documents show it: "..." stands for what changes from run to
+// run (times), everything else is literal.
+std::regex line_pattern(const std::string& shown) {
+  std::string pattern;
+  for (size_t i = 0; i < shown.size(); ++i) {
+    if (shown.compare(i, 3, "...") == 0) {
+      pattern += ".*";
+      i += 2;
+    } else {
+      if (std::string("\\^$.|?*+()[]{}").find(shown[i]) != std::string::npos) pattern += '\\';
+      pattern += shown[i];
+    }
+  }
+  return std::regex(pattern);
+}
+
+// The documents' example outputs are what the programs print: each shown line, in
+// order, among the lines the command prints (numbers exact; "..." for times).
+TEST(Readme, ExampleOutputsAreWhatTheProgramsPrint) {
+#ifdef P3D_SANITIZE
+  GTEST_SKIP() << "the Release build runs the documents' examples";
+#endif
+  const auto dir = scratch("examples");
+  size_t checked = 0;
+  for (const std::filesystem::path& document : documents()) {
+    const std::string name = std::filesystem::relative(document, test::source_dir()).string();
+    for (const Example& example : console_examples(read_file_text(document))) {
+      std::string output;
+      ASSERT_EQ(test::run("cd " + dir.string() + " && " + example.command, output), 0)
+          << name << ":" << example.line << ": " << example.command << "\n" << output;
+      std::istringstream printed(output);
+      std::string line;
+      size_t next = 0;
+      while (next < example.expected.size() && std::getline(printed, line))
+        if (std::regex_match(line, line_pattern(example.expected[next]))) ++next;
+      EXPECT_EQ(next, example.expected.size())
+          << name << ":" << example.line << ": " << example.command << "\n  shows: "
+          << (next < example.expected.size() ? example.expected[next] : "") << "\n  printed:\n" << output;
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 3u);
   std::filesystem::remove_all(dir);
 }
 

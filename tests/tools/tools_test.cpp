@@ -20,7 +20,9 @@
 namespace p3d {
 namespace {
 
-std::string tool(const std::string& name) { return (test::tools_dir() / name).string(); }
+// Our programs' names: every installed program wears the project's prefix.
+std::string program_name(const std::string& name) { return "pseudo3d-" + name; }
+std::string tool(const std::string& name) { return (test::tools_dir() / program_name(name)).string(); }
 
 // Runs a command in the source directory (so paths in messages are relative).
 int run_in_source(const std::string& command, std::string& output) {
@@ -48,7 +50,7 @@ TEST_F(Tools, BadMapsGiveTheirMessageAndNoOutput) {
     const int status =
         run_in_source(tool("mapc") + " tests/bad/" + entry.path().filename().string() + " -o " + out("x.bsp"), output);
     EXPECT_EQ(status, 1) << entry.path();
-    EXPECT_EQ(first_line(output), "mapc: " + expected) << entry.path() << ": the program's name, then the file's message";
+    EXPECT_EQ(first_line(output), "pseudo3d-mapc: " + expected) << entry.path() << ": the program's name, then the file's message";
     EXPECT_FALSE(std::filesystem::exists(out("x.bsp"))) << entry.path() << " left a partial output";
     ++cases;
   }
@@ -62,68 +64,28 @@ TEST_F(Tools, BadMapsGiveTheirMessageAndNoOutput) {
 TEST_F(Tools, UsageMessagesNameTheProgramAndSuggestOnlyNearMisses) {
   std::string o;
   EXPECT_EQ(run_in_source(tool("mapgen") + " soup --walls 10 --seed 1 --bogus -o " + out("x.map"), o), 2);
-  EXPECT_EQ(first_line(o), "mapgen: The following argument was not expected: --bogus") << o;
+  EXPECT_EQ(first_line(o), "pseudo3d-mapgen: The following argument was not expected: --bogus") << o;
   EXPECT_EQ(o.find("did you mean"), std::string::npos) << o;
   EXPECT_EQ(run_in_source(tool("mapgen") + " soup --wals 10 -o " + out("x.map"), o), 2);
-  EXPECT_NE(o.find("mapgen: --wals: did you mean --walls?"), std::string::npos) << o;
+  EXPECT_NE(o.find("pseudo3d-mapgen: --wals: did you mean --walls?"), std::string::npos) << o;
   EXPECT_EQ(o.find("-o: did you mean"), std::string::npos) << o;
   for (const char* program : {"mapc", "capture", "compare"}) {
     EXPECT_EQ(run_in_source(tool(program) + " missing.bsp -o " + out("x.png"), o), 2) << program;
-    EXPECT_EQ(o.rfind(std::string(program) + ": ", 0), 0u) << o;
+    EXPECT_EQ(o.rfind(program_name(program) + ": ", 0), 0u) << o;
   }
   EXPECT_EQ(run_in_source(tool("capture") + " maps/outpost.map -o /proc/none/x.png", o), 1);
-  EXPECT_EQ(o.rfind("capture: ", 0), 0u) << o;
+  EXPECT_EQ(o.rfind("pseudo3d-capture: ", 0), 0u) << o;
   EXPECT_FALSE(std::filesystem::exists(out("x.map")) || std::filesystem::exists(out("x.png")));
 }
 
-// `cmake --install build --prefix P`: the installed programs run from any directory
-// and find the bundled maps and textures in P/share/pseudo3d.
-TEST_F(Tools, InstalledToolsRunFromAScratchPrefix) {
-  const std::filesystem::path build = test::tools_dir().parent_path();
-  const std::string prefix = out("prefix");
-  std::string o;
-  ASSERT_EQ(test::run("cmake --install '" + build.string() + "' --prefix '" + prefix + "'", o), 0) << o;
-  const std::string bin = prefix + "/bin/", share = prefix + "/share/pseudo3d/maps/";
-  for (const char* program : {"mapc", "capture", "compare", "mapgen", "texgen", "bench"})
-    EXPECT_TRUE(std::filesystem::exists(bin + program)) << program;
-  EXPECT_TRUE(std::filesystem::exists(prefix + "/share/doc/pseudo3d/README.md"));
-  const std::string here = "cd '" + out("") + "' && ";
-  ASSERT_EQ(test::run(here + bin + "mapc " + share + "outpost.map -o outpost.bsp", o), 0) << o;
-  ASSERT_EQ(test::run(here + bin + "capture outpost.bsp --size 80x50 -o outpost.png", o), 0) << o;
-  ASSERT_EQ(test::run(here + bin + "mapgen rooms --walls 120 --seed 3 -o rooms.map", o), 0) << o;
-  ASSERT_EQ(test::run(here + bin + "mapc rooms.map -o rooms.bsp", o), 0) << o << ": the generated map's textures come from share/";
-#ifdef P3D_GAME
-  ASSERT_EQ(test::run(here + bin + "game " + share + "outpost.map --play " + share +
-                          "outpost.demo --headless --size 80x50 --capture-every 330 --out frames", o), 0) << o;
-  EXPECT_TRUE(std::filesystem::exists(out("frames/stats.csv")));
-#endif
-}
-
-// cpack -G DEB: a Debian package of the programs and the bundled maps, its
-// dependencies found from the libraries the programs link.
-TEST_F(Tools, DebianPackageHoldsTheProgramsAndDeclaresItsDependencies) {
-#ifdef P3D_SANITIZE
-  GTEST_SKIP() << "the Release build packages its own programs (a package of sanitized ones helps no one)";
-#endif
-  std::string o;
-  if (test::run("command -v dpkg-deb && command -v dpkg-shlibdeps", o) != 0) GTEST_SKIP() << "not a Debian machine";
-  const std::filesystem::path build = test::tools_dir().parent_path();
-  ASSERT_EQ(test::run("cd '" + out("") + "' && cpack -G DEB --config '" + (build / "CPackConfig.cmake").string() +
-                          "' -B '" + out("deb") + "'", o), 0) << o;
-  std::string deb;
-  for (const auto& entry : std::filesystem::directory_iterator(out("deb")))
-    if (entry.path().extension() == ".deb") deb = entry.path().string();
-  ASSERT_FALSE(deb.empty()) << o;
-  ASSERT_EQ(test::run("dpkg-deb -I '" + deb + "'", o), 0) << o;
-  EXPECT_NE(o.find("Package: pseudo3d"), std::string::npos) << o;
-  EXPECT_NE(o.find("libdeflate0"), std::string::npos) << o;
-#ifdef P3D_GAME
-  EXPECT_NE(o.find("libsdl2"), std::string::npos) << o;
-#endif
-  ASSERT_EQ(test::run("dpkg-deb -c '" + deb + "'", o), 0) << o;
-  for (const char* file : {"./usr/bin/mapc", "./usr/bin/capture", "./usr/share/pseudo3d/maps/outpost.map",
-                           "./usr/share/pseudo3d/maps/textures/brick.png"})
-    EXPECT_NE(o.find(file), std::string::npos) << file;
+// The bundled camera lists and paths stand every camera inside the map: none warns.
+TEST_F(Tools, BundledCamerasStandInsideTheirMap) {
+  for (const char* cameras : {"maps/outpost.cameras", "maps/outpost.path"}) {
+    std::string o;
+    ASSERT_EQ(run_in_source(tool("capture") + " maps/outpost.map --cameras " + cameras + " --size 16x10 -o " +
+                                out("views"), o), 0) << o;
+    EXPECT_EQ(o.find("warning"), std::string::npos) << cameras << ": " << o;
+  }
 }
 
 TEST_F(Tools, CompileAndCaptureAreReproducible) {
@@ -299,7 +261,7 @@ TEST_F(Tools, CompareDrawsEveryRendererOnTheBundledMaps) {
   std::string o;
   ASSERT_EQ(run_in_source(tool("compare") + " maps/outpost.map --renderers bsp,dda --size 32x20 --frames 1 -o " +
                               out("d.png"), o), 0) << o;
-  EXPECT_NE(o.find("compare: maps/outpost.map: the dda renderer cannot draw this level (it needs a grid map); left out"),
+  EXPECT_NE(o.find("pseudo3d-compare: maps/outpost.map: the dda renderer cannot draw this level (it needs a .grid tile map); left out"),
             std::string::npos) << o;
   ASSERT_EQ(run_in_source(tool("compare") + " maps/outpost.map --path maps/outpost.cameras --size 64x40 --frames 1 "
                           "--renderers bsp,painter -o " + out("p.png"), o), 0) << o;
@@ -378,7 +340,7 @@ TEST_F(Tools, GameWithoutADisplayFailsAtOnce) {
   EXPECT_EQ(run_in_source("env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER " + std::string(P3D_GAME) +
                               " maps/outpost.map", o), 1) << o;
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
-  EXPECT_NE(o.find("game: no display to open a window on (DISPLAY and WAYLAND_DISPLAY are unset); to render "
+  EXPECT_NE(o.find("pseudo3d: no display to open a window on (DISPLAY and WAYLAND_DISPLAY are unset); to render "
                    "without a display: game LEVEL --headless --play DEMO"), std::string::npos) << o;
 }
 
@@ -534,7 +496,7 @@ TEST_F(Tools, BehaveLikeProgramsPeopleKnow) {
   std::string o;
   const std::string outpost = (test::source_dir() / "maps/outpost.map").string();
   EXPECT_EQ(test::run(tool("capture") + " " + outpost + " --sise 10x10", o), 2);
-  EXPECT_NE(o.find("capture: --sise: did you mean --size?"), std::string::npos) << o;
+  EXPECT_NE(o.find("pseudo3d-capture: --sise: did you mean --size?"), std::string::npos) << o;
   EXPECT_EQ(run_in_source(tool("mapc") + " maps/textures/brick.png -o " + out("x.bsp"), o), 1);
   EXPECT_NE(o.find("maps/textures/brick.png: a PNG image, not a level"), std::string::npos) << o;
   ASSERT_EQ(run_in_source(tool("mapc") + " maps/outpost.map -o " + out("o.bsp"), o), 0) << o;
@@ -561,7 +523,7 @@ TEST_F(Tools, BehaveLikeProgramsPeopleKnow) {
                       o), 0) << o << "mapgen finds the bundled textures from any directory";
 
   ASSERT_EQ(test::run(tool("capture") + " " + outpost + " --pos 9000,9000 --size 32x20 -o " + out("void.png"), o), 0) << o;
-  EXPECT_NE(o.find("capture: warning: camera at (9000, 9000) is outside every sector"), std::string::npos) << o;
+  EXPECT_NE(o.find("pseudo3d-capture: warning: camera at (9000, 9000) is outside every sector"), std::string::npos) << o;
 }
 
 TEST_F(Tools, BenchWritesItsTablesAsJson) {

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Configures and builds build-sanitize: everything (engine, tools, game, tests and the
+# libFuzzer targets) with clang under AddressSanitizer + UndefinedBehaviorSanitizer.
+# One build serves tests/run.sh's sanitized run and tests/fuzz/run.sh. A unity build (a
+# few files compiled as one); the engine, tools and game at -O1 (the tests run about
+# twice as fast as at -O0), the tests' own files at -O0 (tests/CMakeLists.txt).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+CXX=clang++ cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -gline-tables-only" \
+  -DENGINE_SANITIZE=ON -DENGINE_FUZZ=ON -DCMAKE_UNITY_BUILD=ON >/dev/null
+cmake --build build-sanitize
