@@ -272,7 +272,7 @@ void ThingActions::revenant_missile(Mobj* actor) {
 
 void ThingActions::steer_tracer(Mobj* actor) {
   // Every fourth tic of the game (Doom's gametic, which runs on through intermissions).
-  if ((uint32_t(w_.game_tic_at_start_) + uint32_t(w_.level_time_)) & 3) return;
+  if (w_.game_tic() & 3) return;
 
   w_.spawn_puff(actor->x, actor->y, actor->z);
   Mobj* smoke =

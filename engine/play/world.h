@@ -62,6 +62,9 @@ struct GameOptions {
   bool commercial = true;   // Doom II's rules (MAPxx); else Doom's (ExMy)
   bool ultimate = true;     // the fourth episode's rules (Ultimate Doom, Freedoom Phase 1)
   int episode = 1, map = 1;
+  // Doom's gametic as the level begins: it counts on through a level started again
+  // after the player's death (and A_Tracer steers by it).
+  int game_tic = 0;
   std::map<std::string, std::string> texts;  // Doom's messages as the WAD rewords them (play/dehacked.h)
 };
 
@@ -269,6 +272,8 @@ class World {
   const GameOptions& options() const { return options_; }
   const Random& random() const { return random_; }
   int level_time() const { return level_time_; }
+  // Doom's gametic: the tics of the game so far, not of this level alone.
+  int game_tic() const { return int(uint32_t(game_tic_at_start_) + uint32_t(level_time_)); }
   // Set once the player takes an exit (Doom's G_ExitLevel, G_SecretExitLevel).
   ExitKind exit() const { return exit_; }
   // The level's totals, for the tally.
