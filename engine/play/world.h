@@ -343,7 +343,10 @@ class World {
   static int point_on_divline_side(Fixed x, Fixed y, const DivLine& line);
   static DivLine make_divline(const Line& line);
   static Fixed intercept_vector(const DivLine& v2, const DivLine& v1);
-  static Opening line_opening(const Line& line);
+  // Doom's P_LineOpening: the gap between the line's two sectors. Doom keeps it in
+  // globals, and a line flagged two-sided without a back side leaves top, bottom and
+  // low floor as the last line left them (range 0), where shots and aims then look.
+  const Opening& line_opening(const Line& line);
   void unset_thing_position(Mobj* thing);
   void set_thing_position(Mobj* thing);
   // Doom's P_BlockLinesIterator and P_BlockThingsIterator: f returns false to stop;
@@ -512,6 +515,7 @@ class World {
     Line* ceiling_line = nullptr;
     std::vector<Line*> special_hits;  // lines with specials touched (Doom's spechit)
   } tm_;
+  Opening opening_;  // the last line_opening (Doom's opentop, openbottom, openrange, lowfloor)
   // Hitscans (P_AimLineAttack, P_LineAttack)
   Mobj* line_target_ = nullptr;
   Mobj* shoot_thing_ = nullptr;
