@@ -88,6 +88,7 @@ void Session::start_world(const play::Inventory* carried) {
   o.fast = flags_.fast;
   o.respawn = flags_.respawn;
   o.no_monsters = flags_.no_monsters;
+  o.game_tic = world_ ? world_->game_tic() : 0;  // the last level's clock goes on
   world_ = std::make_unique<play::World>(std::move(*map), *level_, o, random_, carried);
   if (all_keys_) set_keys(63);
   tics_ = 0;

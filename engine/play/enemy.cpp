@@ -272,7 +272,7 @@ void ThingActions::revenant_missile(Mobj* actor) {
 
 void ThingActions::steer_tracer(Mobj* actor) {
   // Every fourth tic of the game (Doom's gametic, which runs on through intermissions).
-  if ((uint32_t(w_.game_tic_at_start_) + uint32_t(w_.level_time_)) & 3) return;
+  if (w_.game_tic() & 3) return;
 
   w_.spawn_puff(actor->x, actor->y, actor->z);
   Mobj* smoke =
@@ -775,7 +775,7 @@ void spread_sound(World& w, Sector* sec, int sound_blocks) {
   sec->sound_target = w.sound_target_;
   for (Line* check : sec->lines) {
     if (!(check->flags & kMlTwoSided)) continue;
-    if (check->side[1] < 0 || World::line_opening(*check).range <= 0) continue;  // no back, or a closed door
+    if (w.line_opening(*check).range <= 0) continue;  // no back, or a closed door
     Sector* other = w.map_.sides[size_t(check->side[0])].sector == sec ? w.map_.sides[size_t(check->side[1])].sector
                                                                        : w.map_.sides[size_t(check->side[0])].sector;
     if (check->flags & kMlSoundBlock) {

@@ -65,9 +65,12 @@ Fixed World::intercept_vector(const DivLine& v2, const DivLine& v1) {
   return fixed_div(num, den);
 }
 
-World::Opening World::line_opening(const Line& line) {
-  Opening o;
-  if (line.side[1] == -1) return o;  // one-sided: no opening (Doom leaves top and bottom as they were)
+const World::Opening& World::line_opening(const Line& line) {
+  Opening& o = opening_;
+  if (line.side[1] == -1) {  // no back side: no opening, the rest as the last line left it
+    o.range = 0;
+    return o;
+  }
   const Sector *front = line.front, *back = line.back;
   o.top = std::min(front->ceiling_height, back->ceiling_height);
   if (front->floor_height > back->floor_height) {

@@ -83,9 +83,13 @@ bool World::check_position(Mobj* thing, Fixed x, Fixed y) {
     if (mover->flags & kSkullfly) {  // a charging lost soul bites what it hits
       const int damage = (random_.play() % 8 + 1) * mover->info->damage;
       damage_mobj(other, mover, mover, damage);
-      mover->flags &= ~kSkullfly;
-      mover->mom_x = mover->mom_y = mover->mom_z = 0;
-      set_mobj_state(mover, mover->info->spawn);
+      // Doom then stops its tmthing, which the bite may have changed: a monster woken
+      // by it chases at once, and the check of its own step takes tmthing over. Then
+      // that monster stops and stands, and the soul flies on until its next move.
+      Mobj* stopped = tm_.thing;
+      stopped->flags &= ~kSkullfly;
+      stopped->mom_x = stopped->mom_y = stopped->mom_z = 0;
+      set_mobj_state(stopped, stopped->info->spawn);
       return false;
     }
     if (mover->flags & kMissile) {

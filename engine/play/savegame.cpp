@@ -1055,6 +1055,7 @@ void carry_over(World& fresh, const World& before, const SaveHeader& header) {
     fresh.thing_info_[size_t(t)].speed = before.thing_info_[size_t(t)].speed;
   fresh.on_ground_ = before.on_ground_;
   fresh.brain_easy_ = before.brain_easy_;
+  fresh.opening_ = before.opening_;  // Doom's line-opening globals, which a load leaves alone
   fresh.game_tic_at_start_ =
       int(uint32_t(before.game_tic_at_start_) + uint32_t(before.level_time_) - uint32_t(header.level_time));
 }

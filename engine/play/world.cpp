@@ -41,7 +41,7 @@ GameOptions game_options_for(const wad::Stack& wads, const std::string& map_name
 }
 
 World::World(Map map, const level::Level& level, const GameOptions& options, Random random, const Inventory* carried)
-    : map_(std::move(map)), level_(level), options_(options), random_(random) {
+    : map_(std::move(map)), level_(level), options_(options), random_(random), game_tic_at_start_(options.game_tic) {
   states_.assign(std::begin(kStates), std::end(kStates));
   thing_info_.assign(std::begin(kThingTypes), std::end(kThingTypes));
   if (options_.fast || options_.skill == 5) {  // Doom's G_InitNew: faster demons and missiles

@@ -62,6 +62,9 @@ struct GameOptions {
   bool commercial = true;   // Doom II's rules (MAPxx); else Doom's (ExMy)
   bool ultimate = true;     // the fourth episode's rules (Ultimate Doom, Freedoom Phase 1)
   int episode = 1, map = 1;
+  // Doom's gametic as the level begins: it counts on through a level started again
+  // after the player's death (and A_Tracer steers by it).
+  int game_tic = 0;
   std::map<std::string, std::string> texts;  // Doom's messages as the WAD rewords them (play/dehacked.h)
 };
 
@@ -269,6 +272,8 @@ class World {
   const GameOptions& options() const { return options_; }
   const Random& random() const { return random_; }
   int level_time() const { return level_time_; }
+  // Doom's gametic: the tics of the game so far, not of this level alone.
+  int game_tic() const { return int(uint32_t(game_tic_at_start_) + uint32_t(level_time_)); }
   // Set once the player takes an exit (Doom's G_ExitLevel, G_SecretExitLevel).
   ExitKind exit() const { return exit_; }
   // The level's totals, for the tally.
@@ -338,7 +343,10 @@ class World {
   static int point_on_divline_side(Fixed x, Fixed y, const DivLine& line);
   static DivLine make_divline(const Line& line);
   static Fixed intercept_vector(const DivLine& v2, const DivLine& v1);
-  static Opening line_opening(const Line& line);
+  // Doom's P_LineOpening: the gap between the line's two sectors. Doom keeps it in
+  // globals, and a line flagged two-sided without a back side leaves top, bottom and
+  // low floor as the last line left them (range 0), where shots and aims then look.
+  const Opening& line_opening(const Line& line);
   void unset_thing_position(Mobj* thing);
   void set_thing_position(Mobj* thing);
   // Doom's P_BlockLinesIterator and P_BlockThingsIterator: f returns false to stop;
@@ -507,6 +515,7 @@ class World {
     Line* ceiling_line = nullptr;
     std::vector<Line*> special_hits;  // lines with specials touched (Doom's spechit)
   } tm_;
+  Opening opening_;  // the last line_opening (Doom's opentop, openbottom, openrange, lowfloor)
   // Hitscans (P_AimLineAttack, P_LineAttack)
   Mobj* line_target_ = nullptr;
   Mobj* shoot_thing_ = nullptr;

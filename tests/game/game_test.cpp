@@ -509,8 +509,11 @@ TEST(Session, UseAfterDeathStartsTheLevelAgain) {
   EXPECT_EQ(s.pose().pos, fell) << "the dead do not walk";
   s.tic(play::TicCmd{0, 0, 0, play::kBtUse});
   EXPECT_EQ(s.player().state, play::PlayerState::kReborn);
+  const int game_tic = s.world().game_tic();
   s.tic(play::TicCmd{});  // Doom's next G_Ticker starts the level again
   EXPECT_EQ(s.player().state, play::PlayerState::kLive);
+  EXPECT_EQ(s.world().level_time(), 1);
+  EXPECT_EQ(s.world().game_tic(), game_tic + 1) << "Doom's gametic goes on (a revenant's missile steers by it)";
   EXPECT_EQ(s.player().inv.health, 90) << "a fresh player, hurt at once: the slime bites at level time 0";
   EXPECT_EQ(s.pose().pos, geom::Vec2(64, 64)) << "back at the start";
   std::filesystem::remove_all(dir);

@@ -1,6 +1,6 @@
-// Doom's own demos beside Chocolate Doom's play of them: the console player as
-// Chocolate Doom left it after each tic (tests/golden/doom_demos, traced from its
-// G_Ticker) against the World's. In sync: the player's position, angle, momentum,
+// Doom's demos beside Chocolate Doom's play of them: the console player as Chocolate
+// Doom left it after each tic (tests/golden/doom_demos and desync_demos, traced from
+// its G_Ticker) against the World's. In sync: the player's position, angle, momentum,
 // health, view height and Doom's random index all equal, tic after tic.
 //
 // P3D_SYNC_DUMP=DIR writes our things after every tic of each demo to DIR (the format
@@ -9,6 +9,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 #include "engine/bsp/load.h"
@@ -65,17 +66,17 @@ void dump_things(std::ostream& out, const World& w, size_t tic) {
     out << "M " << int(m->type) << " " << m->x << " " << m->y << " " << m->z << " " << m->angle << " " << m->mom_x
         << " " << m->mom_y << " " << m->mom_z << " " << int(m->state) << " " << m->tics << " " << m->health << " "
         << m->flags << " " << m->move_dir << " " << m->move_count << " " << m->reaction_time << " " << m->threshold
-        << " " << index_of(m->target) << "\n";
+        << " " << index_of(m->target) << " " << index_of(m->tracer) << "\n";
 }
 
 struct Sync {
   size_t tics_in_sync = 0, traced = 0, demo_tics = 0;
 };
 
-// Plays a demo of the WAD beside Chocolate Doom's trace of it (tests/golden/doom_demos/
+// Plays a demo of the WAD beside Chocolate Doom's trace of it (tests/golden/<golden>/
 // <stem>.trace); returns how many tics from the first stay in sync.
 Sync sync_of(const std::string& wad_file, std::span<const uint8_t> demo_bytes, const std::string& lump,
-             const std::string& stem) {
+             const std::string& stem, const std::string& golden = "doom_demos") {
   const auto wad = test::freedoom_path(wad_file);
   const wad::Stack wads = bsp::read_wads({wad});
   const DoomDemo demo = decode_doom_demo(demo_bytes, lump);
@@ -86,9 +87,16 @@ Sync sync_of(const std::string& wad_file, std::span<const uint8_t> demo_bytes, c
   options.fast = demo.fast;
   options.respawn = demo.respawn;
   options.no_monsters = demo.no_monsters;
-  World world(map_from_wads(wads, map_name, level), level, options, Random{});
+  // Doom's G_DoReborn in a single-player game: the level from its start, the random
+  // index and the game's clock going on.
+  auto start = [&](const World* last) {
+    if (last) options.game_tic = last->game_tic();
+    return std::make_unique<World>(map_from_wads(wads, map_name, level), level, options,
+                                   last ? last->random() : Random{});
+  };
+  std::unique_ptr<World> world = start(nullptr);
 
-  const std::vector<TraceTic> trace = read_trace(test::source_dir() / "tests/golden/doom_demos" / (stem + ".trace"));
+  const std::vector<TraceTic> trace = read_trace(test::source_dir() / "tests/golden" / golden / (stem + ".trace"));
   std::ofstream dump;
   if (const char* d = std::getenv("P3D_SYNC_DUMP")) dump.open(std::filesystem::path(d) / (stem + ".ours"));
   Sync s;
@@ -96,9 +104,10 @@ Sync sync_of(const std::string& wad_file, std::span<const uint8_t> demo_bytes, c
   s.demo_tics = demo.tic_count();
   for (size_t t = 0; t < trace.size() && t < demo.tic_count(); ++t) {
     const DoomTic d = demo.console_tic(t);
-    world.tick(TicCmd{d.forward, d.side, int16_t(uint16_t(uint8_t(d.turn)) << 8), d.buttons});
-    if (dump.is_open()) dump_things(dump, world, t);
-    const TraceTic ours = trace_of(world);
+    if (world->player().state == PlayerState::kReborn) world = start(world.get());
+    world->tick(TicCmd{d.forward, d.side, int16_t(uint16_t(uint8_t(d.turn)) << 8), d.buttons});
+    if (dump.is_open()) dump_things(dump, *world, t);
+    const TraceTic ours = trace_of(*world);
     if (!(ours == trace[t])) {
       std::printf("[ parted   ] %s %s at tic %zu:\n  ours  %s\n  doom  %s\n", wad_file.c_str(), lump.c_str(), t,
                   describe(ours).c_str(), describe(trace[t]).c_str());
@@ -137,6 +146,24 @@ TEST(DemoSync, OurRecordedDemoPlaysInChocolateDoomAsInOurs) {
   const Sync s = sync_of("freedoom2.wad", bytes, "recorded_freedoom2_map01.lmp", "recorded_freedoom2_map01");
   EXPECT_EQ(s.traced, s.demo_tics);
   EXPECT_EQ(s.tics_in_sync, s.demo_tics);
+}
+
+// Demos of random play (tests/golden/desync_demos: <iwad stem>-<map>-<skill>.lmp) that
+// once parted from Chocolate Doom, each at a rule of ours that was not Doom's.
+void expect_desync_demo_in_sync(const std::string& stem) {
+  const std::string wad_file = stem.substr(0, stem.find('-')) + ".wad";
+  const std::vector<uint8_t> bytes = read_file_bytes(test::source_dir() / "tests/golden/desync_demos" / (stem + ".lmp"));
+  const Sync s = sync_of(wad_file, bytes, stem + ".lmp", stem, "desync_demos");
+  EXPECT_EQ(s.traced, s.demo_tics) << stem << ": the trace covers the whole demo";
+  EXPECT_EQ(s.tics_in_sync, s.demo_tics) << stem;
+}
+
+// The player dies in most of them, and the level starts again (Doom's G_DoReborn).
+TEST(DemoSync, DemosOfRandomPlayOnFreedomsHarderMapsPlayInSyncToTheirLastTic) {
+  for (const char* stem : {"freedoom2-map32-nightmare-fast", "freedoom2-map32-skill2", "freedoom2-map32-skill3",
+                           "freedoom2-map32-skill5", "freedoom2-map21-skill4", "freedoom2-map13-skill3",
+                           "freedoom2-map14-skill4", "freedoom1-e3m7-skill2"})
+    expect_desync_demo_in_sync(stem);
 }
 
 }  // namespace
