@@ -11,6 +11,13 @@
 
 namespace p3d::test {
 
+// The sanitizer build (ten times slower): the heaviest checks take a sample there.
+#ifdef P3D_SANITIZE
+inline constexpr bool kSanitized = true;
+#else
+inline constexpr bool kSanitized = false;
+#endif
+
 // The source tree (for maps/ and tests/golden/) and the tools' build directory.
 inline std::filesystem::path source_dir() { return P3D_SOURCE_DIR; }
 inline std::filesystem::path tools_dir() { return P3D_TOOLS_DIR; }
