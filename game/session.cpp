@@ -99,7 +99,7 @@ void Session::start_world(const play::Inventory* carried) {
 Session::Pose Session::pose_now() const {
   const play::Player& p = player();
   if (!p.mo) return pose_;
-  return {{play::to_double(p.mo->x), play::to_double(p.mo->y)}, play::to_double(p.mo->z), play::to_double(p.view_z),
+  return {{play::to_double(p.mo->x), play::to_double(p.mo->y)}, play::to_double(p.mo->z), play::to_double(world_->eye_z()),
           double(p.mo->angle) * kDegreesPerAngle};
 }
 

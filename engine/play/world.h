@@ -268,6 +268,10 @@ class World {
   }
   const Player& player() const { return player_; }
   Player& player() { return player_; }
+  // The height of the player's eye, for drawing. Doom draws only after a tic (the
+  // first one computes view_z, until then 0 for a new player, 1 for one carried over);
+  // a frame drawn before it sees from where that tic puts a player at rest.
+  Fixed eye_z() const;
   const Map& map() const { return map_; }
   const GameOptions& options() const { return options_; }
   const Random& random() const { return random_; }

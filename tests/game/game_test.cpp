@@ -430,6 +430,16 @@ TEST(Session, WadLevelsShowDoomsStatusBarBelowAShorterView) {
   EXPECT_EQ(Session(test::source_dir() / "maps/outpost.map").status_bar_rows(doom), 0) << "our own levels have none";
 }
 
+// A replay's frame 0 is drawn before the first tic: from the eye, where that tic puts
+// the player, not from Doom's view_z mark at the floor.
+TEST(Session, TheFrameBeforeTheFirstTicSeesFromTheEye) {
+  Session s(bsp::LevelSource{{}, {test::freedoom_path("freedoom2.wad")}, "MAP01"});
+  EXPECT_DOUBLE_EQ(s.camera(0).z, s.pose().z + 41);
+  EXPECT_DOUBLE_EQ(s.camera(1).z, s.pose().z + 41);
+  s.tic(play::TicCmd{});
+  EXPECT_DOUBLE_EQ(s.camera(1).z, s.pose().z + 41) << "where the first tic put it";
+}
+
 // A pickup flashes the screen gold for a few tics, through the WAD's own palettes:
 // every pixel of the frame (view and bar) is a colour of the gold palette.
 TEST(Session, APickupFlashesTheScreenGold) {
