@@ -363,8 +363,8 @@ class World {
   // Doom's P_PathTraverse: the lines and things the trace meets, nearest first; trav
   // returns false to stop. `trace_` holds the trace meanwhile.
   bool path_traverse(Fixed x1, Fixed y1, Fixed x2, Fixed y2, int flags, const std::function<bool(Intercept&)>& trav);
-  int block_x(Fixed x) const { return (x - map_.blockmap.origin_x) >> kMapBlockShift; }
-  int block_y(Fixed y) const { return (y - map_.blockmap.origin_y) >> kMapBlockShift; }
+  int block_x(Fixed x) const { return wrap_sub(x, map_.blockmap.origin_x) >> kMapBlockShift; }
+  int block_y(Fixed y) const { return wrap_sub(y, map_.blockmap.origin_y) >> kMapBlockShift; }
 
   // ---- move.cpp (p_map.c)
   void start_position_check(Mobj* thing, Fixed x, Fixed y);
