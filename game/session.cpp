@@ -377,7 +377,7 @@ std::vector<uint8_t> Session::encode_recording(const std::filesystem::path& path
   int episode = 0, number = 0;
   if (!doom_map_numbers(episode, number))
     throw Error(path.string() + ": a Doom demo (.lmp) records a WAD's MAPxx or ExMy map, not " + name_);
-  return play::encode_doom_demo(play::doom_from_demo(recording_, std::max(episode, 1), number));
+  return play::encode_doom_demo(play::doom_from_demo(recording_, std::max(episode, 1), number, long_tics_));
 }
 
 bool Session::start_intermission() {
@@ -400,9 +400,10 @@ play::Tally Session::tally() const {
   return t;
 }
 
-void Session::start_recording(bool doom_turns) {
+void Session::start_recording(bool doom_turns, bool long_tics) {
   recording_on_ = true;
-  doom_turns_ = doom_turns;
+  doom_turns_ = doom_turns && !long_tics;
+  long_tics_ = long_tics;
   recording_ = {};
   recording_.level_fingerprint = play::fingerprint(*level_);
   recording_.skill = skill_;

@@ -762,7 +762,7 @@ TEST(Demo, AFreedoomDemoReplaysByteForByte) {
     World world(map_from_wads(wads, map_name, level), level, options, Random{});
     for (size_t t = 0; t < demo.tic_count(); ++t) {
       const DoomTic d = demo.console_tic(t);
-      world.tick(TicCmd{d.forward, d.side, int16_t(uint16_t(uint8_t(d.turn)) << 8), d.buttons});
+      world.tick(TicCmd{d.forward, d.side, d.turn, d.buttons});
       const std::vector<uint8_t> bytes = snapshot(world);
       const uint64_t hash = fnv1a64(bytes);
       if (pass == 0) {
