@@ -98,6 +98,7 @@ int main(int argc, char** argv) {
   std::vector<int> warp;
   std::string record, play, out_dir, resolution, window, renderer, autopilot, script, config;
   bool headless = false, fullscreen = false, windowed = false, no_vsync = false, map_reload = false, timedemo = false;
+  bool long_tics = false;
   bool all_keys = false, json = false, no_sound = false, no_status_bar = false, stats_only = false;
   bool no_music = false;
   std::string soundfont;
@@ -112,6 +113,7 @@ int main(int argc, char** argv) {
       ->expected(1, 2)
       ->check(CLI::Range(0, 99));
   app.add_option("--record", record, "record every tic's input to this demo file (x.lmp: as a Doom v1.9 demo)");
+  app.add_flag("--longtics", long_tics, "with --record x.lmp: Doom v1.91's long tics (whole turns), as Chocolate's -longtics");
   app.add_option("--play", play,
                  "replay this demo, then quit: our .demo, a Doom .lmp, or a WAD's DEMO1..DEMO4 lump (--play demo1)");
   app.add_flag("--timedemo", timedemo, "with --play: one tic per frame as fast as possible, then report the fps");
@@ -303,7 +305,7 @@ int main(int argc, char** argv) {
                     out_dir.c_str());
         return 0;
       }
-      session->start_recording(std::filesystem::path(record).extension() == ".lmp");
+      session->start_recording(std::filesystem::path(record).extension() == ".lmp", long_tics);
       const size_t tics = autopilot_headless(*session, route(autopilot), quit_after);
       if (!record.empty()) write_file_atomically(record, session->encode_recording(record));
       std::printf("autopilot walked %zu tics (exit: %s)%s\n", tics, game::exit_name(session->exited()),
@@ -315,6 +317,7 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
     o.map_reload = map_reload;
     o.record = record;
+    o.long_tics = long_tics;
     o.play = demo;
     o.timedemo = timedemo;
     if (timedemo) o.vsync = false;

@@ -125,7 +125,7 @@ class Window {
         if (o_.play->custom_start) s->spawn(o_.play->start, o_.play->angle);
         s->set_keys(o_.play->keys);
       }
-      if (!o_.record.empty()) s->start_recording(o_.record.extension() == ".lmp");
+      if (!o_.record.empty()) s->start_recording(o_.record.extension() == ".lmp", o_.long_tics);
       if (o_.map_reload) s->watch_files();
     }
     apply_volumes();

@@ -23,6 +23,7 @@ struct WindowOptions {
   std::string soundfont;                    // the music's sound font; empty: find_soundfont's
   bool map_reload = false;                  // recompile the source map when it changes on disk
   std::filesystem::path record;             // write the tics played to this demo on exit
+  bool long_tics = false;                   // a .lmp record keeps whole turns (Doom v1.91's long tics)
   std::optional<play::Demo> play;           // replay this demo, then quit
   bool timedemo = false;                    // replay one tic per frame, as fast as possible (Doom's -timedemo)
   std::optional<std::vector<Waypoint>> autopilot;  // walk these waypoints, then quit

@@ -99,7 +99,7 @@ void Session::start_world(const play::Inventory* carried) {
 Session::Pose Session::pose_now() const {
   const play::Player& p = player();
   if (!p.mo) return pose_;
-  return {{play::to_double(p.mo->x), play::to_double(p.mo->y)}, play::to_double(p.mo->z), play::to_double(p.view_z),
+  return {{play::to_double(p.mo->x), play::to_double(p.mo->y)}, play::to_double(p.mo->z), play::to_double(world_->eye_z()),
           double(p.mo->angle) * kDegreesPerAngle};
 }
 
@@ -377,7 +377,7 @@ std::vector<uint8_t> Session::encode_recording(const std::filesystem::path& path
   int episode = 0, number = 0;
   if (!doom_map_numbers(episode, number))
     throw Error(path.string() + ": a Doom demo (.lmp) records a WAD's MAPxx or ExMy map, not " + name_);
-  return play::encode_doom_demo(play::doom_from_demo(recording_, std::max(episode, 1), number));
+  return play::encode_doom_demo(play::doom_from_demo(recording_, std::max(episode, 1), number, long_tics_));
 }
 
 bool Session::start_intermission() {
@@ -400,9 +400,10 @@ play::Tally Session::tally() const {
   return t;
 }
 
-void Session::start_recording(bool doom_turns) {
+void Session::start_recording(bool doom_turns, bool long_tics) {
   recording_on_ = true;
-  doom_turns_ = doom_turns;
+  doom_turns_ = doom_turns && !long_tics;
+  long_tics_ = long_tics;
   recording_ = {};
   recording_.level_fingerprint = play::fingerprint(*level_);
   recording_.skill = skill_;

@@ -182,10 +182,12 @@ class Session {
 
   // ---- demos and reloading
   // Records every tic from now. With doom_turns, turns are rounded as a Doom demo
-  // keeps them, before they are played, so a Doom demo of the recording replays it.
-  void start_recording(bool doom_turns = false);
+  // keeps them, before they are played, so a Doom demo of the recording replays it;
+  // with long_tics they stay whole, and a .lmp is written with Doom v1.91's long tics.
+  void start_recording(bool doom_turns = false, bool long_tics = false);
   const play::Demo& recording() const { return recording_; }
-  // The recording in the format the file's name asks for: Doom v1.9 for .lmp (of a
+  // The recording in the format the file's name asks for: Doom v1.9 (or v1.91's long
+  // tics, as recorded) for .lmp (of a
   // WAD map), ours otherwise. Throws Error for a .lmp of a level that is no Doom map.
   std::vector<uint8_t> encode_recording(const std::filesystem::path& path) const;
   // Recompiles the map from disk and starts it again, keeping the player where it
@@ -240,7 +242,7 @@ class Session {
   bool listening_ = false;
   std::unique_ptr<SoundBank> sound_bank_;
   play::Track map_music_, tally_music_;  // the map's (S_Start) and its intermission's (WI_Ticker)
-  bool recording_on_ = false, doom_turns_ = false;
+  bool recording_on_ = false, doom_turns_ = false, long_tics_ = false;
   play::Demo recording_;
   std::optional<FileWatch> watch_;
 };

@@ -118,14 +118,14 @@ Demo demo_from_doom(const DoomDemo& doom, const level::Level& level) {
   d.tics.reserve(doom.tic_count());
   for (size_t t = 0; t < doom.tic_count(); ++t) {
     const DoomTic c = doom.console_tic(t);
-    // Doom reads the turn's byte as the high byte of its 16-bit turn.
-    d.tics.push_back({TicCmd{c.forward, c.side, int16_t(uint16_t(uint8_t(c.turn)) << 8), c.buttons}, 0});
+    d.tics.push_back({TicCmd{c.forward, c.side, c.turn, c.buttons}, 0});
   }
   return d;
 }
 
-DoomDemo doom_from_demo(const Demo& demo, int episode, int map) {
+DoomDemo doom_from_demo(const Demo& demo, int episode, int map, bool long_tics) {
   DoomDemo d;
+  if (long_tics) d.version = DoomDemo::kVersionLongTics;
   d.skill = demo.skill;
   d.fast = demo.fast;
   d.respawn = demo.respawn;
@@ -133,7 +133,7 @@ DoomDemo doom_from_demo(const Demo& demo, int episode, int map) {
   d.episode = episode;
   d.map = map;
   for (const DemoTic& t : demo.tics)
-    d.commands.push_back({t.cmd.forward, t.cmd.side, int8_t(doom_demo_turn(t.cmd.turn) >> 8), t.cmd.buttons});
+    d.commands.push_back({t.cmd.forward, t.cmd.side, long_tics ? t.cmd.turn : doom_demo_turn(t.cmd.turn), t.cmd.buttons});
   return d;
 }
 

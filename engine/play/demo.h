@@ -52,8 +52,9 @@ Demo decode_demo(std::span<const uint8_t> bytes, const std::string& what);
 // A Doom demo's console player as our demo (Doom's pause and save requests dropped).
 Demo demo_from_doom(const DoomDemo& doom, const level::Level& level);
 // Our demo as Doom v1.9 records it, for map `episode`, `map` (turns rounded to Doom's
-// 256 units: record with doom_demo_turn for a faithful copy).
-DoomDemo doom_from_demo(const Demo& demo, int episode, int map);
+// 256 units: record with doom_demo_turn for a faithful copy), or with long tics (v1.91:
+// turns kept whole).
+DoomDemo doom_from_demo(const Demo& demo, int episode, int map, bool long_tics = false);
 // A turn as a Doom demo keeps it: rounded to 256 units of 1/65536 of a turn.
 constexpr int16_t doom_demo_turn(int16_t turn) { return int16_t(((int(turn) + 128) >> 8) << 8); }
 

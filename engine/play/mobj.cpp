@@ -135,11 +135,11 @@ void World::z_movement(Mobj* mo) {
       return;
     }
   } else if (!(mo->flags & kNogravity)) {
-    mo->mom_z = mo->mom_z == 0 ? -kGravity * 2 : mo->mom_z - kGravity;
+    mo->mom_z = mo->mom_z == 0 ? -kGravity * 2 : wrap_sub(mo->mom_z, kGravity);
   }
   if (wrap_add(mo->z, mo->height) > mo->ceiling_z) {
     if (mo->mom_z > 0) mo->mom_z = 0;
-    mo->z = mo->ceiling_z - mo->height;
+    mo->z = wrap_sub(mo->ceiling_z, mo->height);
     if (mo->flags & kSkullfly) mo->mom_z = -mo->mom_z;  // the skull slammed into the ceiling
     if ((mo->flags & kMissile) && !(mo->flags & kNoclip)) {
       explode_missile(mo);
@@ -214,7 +214,7 @@ Mobj* World::spawn_mobj(Fixed x, Fixed y, Fixed z, ThingType type) {
   if (z == kOnFloorZ)
     mobj->z = mobj->floor_z;
   else if (z == kOnCeilingZ)
-    mobj->z = mobj->ceiling_z - info.height;
+    mobj->z = wrap_sub(mobj->ceiling_z, info.height);
   else
     mobj->z = z;
   add_thinker(std::move(owned));

@@ -196,7 +196,7 @@ bool World::thing_height_clip(Mobj* thing) {
   if (on_floor)
     thing->z = thing->floor_z;  // it rides the floor
   else if (wrap_add(thing->z, thing->height) > thing->ceiling_z)
-    thing->z = thing->ceiling_z - thing->height;
+    thing->z = wrap_sub(thing->ceiling_z, thing->height);
   return wrap_sub(thing->ceiling_z, thing->floor_z) >= thing->height;
 }
 

@@ -46,7 +46,8 @@ void World::calc_height(Player& player) {
     }
   }
   player.view_z = wrap_add(wrap_add(mo->z, player.view_height), bob);
-  if (player.view_z > mo->ceiling_z - 4 * kFracUnit) player.view_z = mo->ceiling_z - 4 * kFracUnit;
+  const Fixed under_ceiling = wrap_sub(mo->ceiling_z, 4 * kFracUnit);
+  if (player.view_z > under_ceiling) player.view_z = under_ceiling;
 }
 
 void World::move_player(Player& player) {

@@ -404,7 +404,7 @@ void World::bfg_spray(Mobj* mo) {
     const Angle angle = mo->angle - kAngle90 / 2 + kAngle90 / 40 * Angle(i);
     aim_line_attack(mo->target, angle, kAimRange);
     if (!line_target_) continue;
-    spawn_mobj(line_target_->x, line_target_->y, line_target_->z + (line_target_->height >> 2), ThingType::kExtrabfg);
+    spawn_mobj(line_target_->x, line_target_->y, wrap_add(line_target_->z, line_target_->height >> 2), ThingType::kExtrabfg);
     int damage = 0;
     for (int j = 0; j < 15; ++j) damage += (random_.play() & 7) + 1;
     damage_mobj(line_target_, mo->target, mo->target, damage);

@@ -70,6 +70,12 @@ World::World(Map map, const level::Level& level, const GameOptions& options, Ran
 
 World::~World() = default;
 
+Fixed World::eye_z() const {
+  const Mobj* mo = player_.mo;
+  if (level_time_ > 0 || !mo) return player_.view_z;
+  return std::min(wrap_add(mo->z, player_.view_height), wrap_sub(mo->ceiling_z, 4 * kFracUnit));  // as calc_height
+}
+
 void World::tick(const TicCmd& cmd) {
   sounds_.clear();
   messages_.clear();

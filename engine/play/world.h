@@ -268,6 +268,10 @@ class World {
   }
   const Player& player() const { return player_; }
   Player& player() { return player_; }
+  // The height of the player's eye, for drawing. Doom draws only after a tic (the
+  // first one computes view_z, until then 0 for a new player, 1 for one carried over);
+  // a frame drawn before it sees from where that tic puts a player at rest.
+  Fixed eye_z() const;
   const Map& map() const { return map_; }
   const GameOptions& options() const { return options_; }
   const Random& random() const { return random_; }
@@ -359,8 +363,8 @@ class World {
   // Doom's P_PathTraverse: the lines and things the trace meets, nearest first; trav
   // returns false to stop. `trace_` holds the trace meanwhile.
   bool path_traverse(Fixed x1, Fixed y1, Fixed x2, Fixed y2, int flags, const std::function<bool(Intercept&)>& trav);
-  int block_x(Fixed x) const { return (x - map_.blockmap.origin_x) >> kMapBlockShift; }
-  int block_y(Fixed y) const { return (y - map_.blockmap.origin_y) >> kMapBlockShift; }
+  int block_x(Fixed x) const { return wrap_sub(x, map_.blockmap.origin_x) >> kMapBlockShift; }
+  int block_y(Fixed y) const { return wrap_sub(y, map_.blockmap.origin_y) >> kMapBlockShift; }
 
   // ---- move.cpp (p_map.c)
   void start_position_check(Mobj* thing, Fixed x, Fixed y);

@@ -28,12 +28,13 @@ seed lmp tests/fuzz/seeds/walk.lmp tests/fuzz/seeds/old.lmp
 seed dmx tests/fuzz/seeds/beep.dmx
 seed mus tests/fuzz/seeds/tune.mus tests/fuzz/seeds/tune.mid
 seed save tests/fuzz/seeds/room.dsg tests/golden/saves/*.dsg
+seed world tests/fuzz/seeds/world.bin
 mkdir -p "$work/bsp"
 $build/tools/pseudo3d-mapc tests/fuzz/seeds/room.map -o "$work/bsp/room.bsp" >/dev/null
 $build/tools/pseudo3d-mapc tests/fuzz/seeds/room.grid -o "$work/bsp/grid.bsp" >/dev/null
 printf '| target | seconds | executions | coverage (edges) | crashes |\n|---|---:|---:|---:|---:|\n'
 status=0
-for target in map grid bsp demo cameras png wad udmf lmp dmx mus save; do
+for target in map grid bsp demo cameras png wad udmf lmp dmx mus save world; do
   mkdir -p "$build/crashes/$target"
   log="$build/fuzz_$target.log"
   if $build/tests/fuzz/fuzz_$target "$work/$target" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2560 \

@@ -408,6 +408,19 @@ TEST(Session, ADoomDemoRecordingReplaysTheSameWalk) {
   EXPECT_NE(recorder.pose().pos, geom::Vec2(100, 100));
   EXPECT_THROW(Session(test::source_dir() / "maps/outpost.map").encode_recording(dir / "x.lmp"), Error)
       << "a hand-made level is no Doom map";
+
+  // With long tics the turns stay whole, and the v1.91 demo replays them.
+  Session fine(source);
+  fine.start_recording(true, true);
+  for (int t = 0; t < 120; ++t) fine.tic(play::TicCmd{50, 0, int16_t(300 + 37 * (t % 5)), 0});
+  const play::DoomDemo long_tics = play::decode_doom_demo(fine.encode_recording(dir / "fine.lmp"), "fine.lmp");
+  EXPECT_TRUE(long_tics.long_tics());
+  EXPECT_EQ(long_tics.console_tic(1).turn, 337);
+  Session fine_player(source);
+  for (const play::DemoTic& t : play::demo_from_doom(long_tics, fine_player.level()).tics) fine_player.tic(t);
+  EXPECT_EQ(fine_player.pose().pos, fine.pose().pos);
+  EXPECT_EQ(fine_player.pose().angle, fine.pose().angle);
+  EXPECT_NE(fine.pose().angle, recorder.pose().angle) << "turns a coarse recording rounded";
   std::filesystem::remove_all(dir);
 }
 
@@ -428,6 +441,16 @@ TEST(Session, WadLevelsShowDoomsStatusBarBelowAShorterView) {
   EXPECT_EQ(s.status_bar_rows(big), 64) << "scaled by 2";
   EXPECT_EQ(s.status_bar_rows(tiny), 0) << "no room for it";
   EXPECT_EQ(Session(test::source_dir() / "maps/outpost.map").status_bar_rows(doom), 0) << "our own levels have none";
+}
+
+// A replay's frame 0 is drawn before the first tic: from the eye, where that tic puts
+// the player, not from Doom's view_z mark at the floor.
+TEST(Session, TheFrameBeforeTheFirstTicSeesFromTheEye) {
+  Session s(bsp::LevelSource{{}, {test::freedoom_path("freedoom2.wad")}, "MAP01"});
+  EXPECT_DOUBLE_EQ(s.camera(0).z, s.pose().z + 41);
+  EXPECT_DOUBLE_EQ(s.camera(1).z, s.pose().z + 41);
+  s.tic(play::TicCmd{});
+  EXPECT_DOUBLE_EQ(s.camera(1).z, s.pose().z + 41) << "where the first tic put it";
 }
 
 // A pickup flashes the screen gold for a few tics, through the WAD's own palettes:

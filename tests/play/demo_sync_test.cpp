@@ -105,7 +105,7 @@ Sync sync_of(const std::string& wad_file, std::span<const uint8_t> demo_bytes, c
   for (size_t t = 0; t < trace.size() && t < demo.tic_count(); ++t) {
     const DoomTic d = demo.console_tic(t);
     if (world->player().state == PlayerState::kReborn) world = start(world.get());
-    world->tick(TicCmd{d.forward, d.side, int16_t(uint16_t(uint8_t(d.turn)) << 8), d.buttons});
+    world->tick(TicCmd{d.forward, d.side, d.turn, d.buttons});
     if (dump.is_open()) dump_things(dump, *world, t);
     const TraceTic ours = trace_of(*world);
     if (!(ours == trace[t])) {

@@ -48,7 +48,7 @@ TEST(DoomDemo, RoundTripsAndReadsTheOldFormat) {
   d.map = 3;
   d.players = {true, true, false, false};
   d.console_player = 1;
-  for (int i = 0; i < 10; ++i) d.commands.push_back({int8_t(i), int8_t(-i), int8_t(3 * i), uint8_t(i % 3)});
+  for (int i = 0; i < 10; ++i) d.commands.push_back({int8_t(i), int8_t(-i), int16_t(3 * i << 8), uint8_t(i % 3)});
   const DoomDemo back = decode_doom_demo(encode_doom_demo(d), "x.lmp");
   EXPECT_EQ(back.commands, d.commands);
   EXPECT_EQ(back.tic_count(), 5u);
@@ -62,7 +62,24 @@ TEST(DoomDemo, RoundTripsAndReadsTheOldFormat) {
   EXPECT_EQ(old.skill, 3);
   EXPECT_EQ(old.map_name(false), "E1M5");
   ASSERT_EQ(old.tic_count(), 1u);
-  EXPECT_EQ(old.console_tic(0), (DoomTic{25, 0, 1, 2}));
+  EXPECT_EQ(old.console_tic(0), (DoomTic{25, 0, 256, 2})) << "the turn's byte is its high byte";
+}
+
+// Doom v1.91's long tics (version 111, Chocolate Doom's -longtics): five bytes a
+// command, the turn whole, low byte first.
+TEST(DoomDemo, LongTicsKeepTheWholeTurn) {
+  const std::vector<uint8_t> bytes = {111, 2, 0, 7, 0, 0, 0, 0, 0, 1, 0, 0, 0,  // skill 3, MAP07
+                                      50, 0xf0, 0x34, 0x12, 1, 0, 0, 0xff, 0xff, 2, 0x80};
+  const DoomDemo d = decode_doom_demo(bytes, "long.lmp");
+  EXPECT_TRUE(d.long_tics());
+  EXPECT_EQ(d.map_name(true), "MAP07");
+  ASSERT_EQ(d.tic_count(), 2u);
+  EXPECT_EQ(d.console_tic(0), (DoomTic{50, -16, 0x1234, kButtonAttack}));
+  EXPECT_EQ(d.console_tic(1), (DoomTic{0, 0, -1, kButtonUse})) << "a turn of 1/65536 to the right";
+  EXPECT_EQ(encode_doom_demo(d), bytes) << "written back byte for byte";
+  std::vector<uint8_t> cut = bytes;
+  cut.resize(cut.size() - 2);
+  EXPECT_EQ(refusal(cut), "x.lmp: the last tic is cut short at byte 18");
 }
 
 TEST(DoomDemo, BrokenDemosAreRefusedAndAMissingEndIsTolerated) {

@@ -68,7 +68,7 @@ std::unique_ptr<World> new_world(const Game& g, int skill) {
 
 void play_tic(World& w, const DoomDemo& demo, size_t t) {
   const DoomTic d = demo.console_tic(t);
-  w.tick(TicCmd{d.forward, d.side, int16_t(uint16_t(uint8_t(d.turn)) << 8), d.buttons});
+  w.tick(TicCmd{d.forward, d.side, d.turn, d.buttons});
 }
 
 // G_DoLoadGame in the middle of a game.

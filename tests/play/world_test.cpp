@@ -554,6 +554,21 @@ TEST(Movement, StepsUpTheStairsButNotOntoTheWindowSill) {
   EXPECT_GT(to_double(other->player().mo->y), 384 - kRadius - 1) << "stopped at the wall below the sill";
 }
 
+// Doom draws its first frame after the first tic; a frame drawn before it sees from
+// where that tic puts a player standing still (the eye above the floor, not at it),
+// while view_z stays as Doom leaves it (0 for a new player).
+TEST(Movement, TheEyeBeforeTheFirstTicIsWhereTheFirstTicPutsIt) {
+  const level::Level level = test::compile(map::load_map(test::source_dir() / "maps/outpost.map"));
+  std::unique_ptr<World> world = world_on(level);
+  const Player& p = world->player();
+  EXPECT_EQ(p.view_z, 0);
+  EXPECT_EQ(world->eye_z(), p.mo->z + kViewHeight);
+  const Fixed before = world->eye_z();
+  world->tick({});
+  EXPECT_EQ(p.view_z, before);
+  EXPECT_EQ(world->eye_z(), p.view_z);
+}
+
 TEST(Movement, TurningAFullCircleIsExact) {
   const level::Level level = test::compile(map::load_grid(test::source_dir() / "maps/labyrinth.grid"));
   std::unique_ptr<World> world = world_on(level);
@@ -750,7 +765,7 @@ TEST(Demo, AFreedoomDemoReplaysByteForByte) {
     World world(map_from_wads(wads, map_name, level), level, options, Random{});
     for (size_t t = 0; t < tics; ++t) {
       const DoomTic d = demo.console_tic(t);
-      world.tick(TicCmd{d.forward, d.side, int16_t(uint16_t(uint8_t(d.turn)) << 8), d.buttons});
+      world.tick(TicCmd{d.forward, d.side, d.turn, d.buttons});
       const std::vector<uint8_t> bytes = snapshot(world);
       const uint64_t hash = fnv1a64(bytes);
       if (pass == 0) {
