@@ -760,7 +760,7 @@ TEST(Demo, AFreedoomDemoReplaysByteForByte) {
   options.no_monsters = demo.no_monsters;
   std::vector<uint64_t> first;
   std::vector<uint8_t> last;
-  const size_t tics = test::kSanitized ? std::min<size_t>(demo.tic_count(), 1000) : demo.tic_count();
+  const size_t tics = test::kSanitized ? std::min<size_t>(demo.tic_count(), 1200) : demo.tic_count();
   for (int pass = 0; pass < 2; ++pass) {
     World world(map_from_wads(wads, map_name, level), level, options, Random{});
     for (size_t t = 0; t < tics; ++t) {
