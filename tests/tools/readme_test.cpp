@@ -21,22 +21,23 @@ namespace {
 
 struct Block {
   int line;  // of the opening fence
-  std::vector<std::string> commands;
+  std::vector<std::string> lines;
 };
 
-std::vector<Block> sh_blocks(const std::string& readme) {
+// The fenced blocks of one language ("sh", "console") in a Markdown text.
+std::vector<Block> fenced_blocks(const std::string& text, const std::string& language) {
   std::vector<Block> blocks;
-  std::istringstream in(readme);
+  std::istringstream in(text);
   std::string line;
   bool inside = false;
   for (int number = 1; std::getline(in, line); ++number) {
-    if (!inside && line == "```sh") {
+    if (!inside && line == "```" + language) {
       inside = true;
       blocks.push_back({number, {}});
     } else if (inside && line.rfind("```", 0) == 0) {
       inside = false;
     } else if (inside) {
-      blocks.back().commands.push_back(line);
+      blocks.back().lines.push_back(line);
     }
   }
   return blocks;
@@ -94,10 +95,10 @@ TEST(Readme, EveryCommandRunsAsWritten) {
   size_t ran = 0, skips = 0, blocks_seen = 0;
   for (const std::filesystem::path& document : documents()) {
     const std::string name = std::filesystem::relative(document, test::source_dir()).string();
-    for (const Block& block : sh_blocks(read_file_text(document))) {
+    for (const Block& block : fenced_blocks(read_file_text(document), "sh")) {
       ++blocks_seen;
       std::string script = "set -euo pipefail\ncd " + dir.string() + "\n";
-      for (const std::string& line : block.commands) {
+      for (const std::string& line : block.lines) {
         const std::string command = strip_comment(line);
         if (command.empty()) continue;
         if (skipped(command)) {
@@ -128,20 +129,14 @@ struct Example {
 
 std::vector<Example> console_examples(const std::string& text) {
   std::vector<Example> examples;
-  std::istringstream in(text);
-  std::string line;
-  bool inside = false;
-  for (int number = 1; std::getline(in, line); ++number) {
-    if (!inside && line == "```console") {
-      inside = true;
-    } else if (inside && line.rfind("```", 0) == 0) {
-      inside = false;
-    } else if (inside && line.rfind("$ ", 0) == 0) {
-      examples.push_back({number, line.substr(2), {}});
-    } else if (inside && !examples.empty()) {
-      examples.back().expected.push_back(line);
+  for (const Block& block : fenced_blocks(text, "console"))
+    for (size_t i = 0; i < block.lines.size(); ++i) {
+      const std::string& line = block.lines[i];
+      if (line.rfind("$ ", 0) == 0)
+        examples.push_back({block.line + 1 + int(i), line.substr(2), {}});
+      else if (!examples.empty())
+        examples.back().expected.push_back(line);
     }
-  }
   return examples;
 }
 
