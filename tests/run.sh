@@ -18,7 +18,7 @@ sanitized_ctest() {
     ctest --test-dir build-sanitize --output-on-failure -j "$jobs"
 }
 phase "install what is missing" tools/install-deps.sh
-phase "configure Release" cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=OFF >/dev/null
+phase "configure Release" cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON >/dev/null
 phase "build Release" cmake --build build
 phase "test Release" ctest --test-dir build --output-on-failure -j "$jobs"
 phase "configure and build sanitized" tests/build-sanitize.sh

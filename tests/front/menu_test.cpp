@@ -14,8 +14,8 @@ namespace {
 using Sound = play::Sound;
 using Kind = MenuRequest::Kind;
 
-struct Fixture {
-  explicit Fixture(GameMode mode = GameMode::kCommercial) : menu(mode, settings, [this] { return slots; }) {}
+struct MenuFixture {
+  explicit MenuFixture(GameMode mode = GameMode::kCommercial) : menu(mode, settings, [this] { return slots; }) {}
   MenuSettings settings;
   std::array<std::optional<std::string>, kSaveSlots> slots;
   Menu menu;
@@ -24,7 +24,7 @@ struct Fixture {
 };
 
 TEST(Menu, EscapeOpensTheMainMenuWithItsSound) {
-  Fixture f;
+  MenuFixture f;
   EXPECT_FALSE(f.press('x')) << "a letter with the menu closed is the game's";
   EXPECT_TRUE(f.press(kKeyEscape));
   EXPECT_TRUE(f.menu.active());
@@ -40,7 +40,7 @@ TEST(Menu, EscapeOpensTheMainMenuWithItsSound) {
 }
 
 TEST(Menu, UpAndDownWrapAndSkipGaps) {
-  Fixture f;
+  MenuFixture f;
   f.menu.open();
   f.press(kKeyUp);
   EXPECT_EQ(f.menu.screen().item_on, 4) << "up from the first wraps to Quit";
@@ -58,7 +58,7 @@ TEST(Menu, UpAndDownWrapAndSkipGaps) {
 }
 
 TEST(Menu, NewGameOnDoomIIAsksTheSkillThenStarts) {
-  Fixture f;
+  MenuFixture f;
   f.menu.open();
   f.press(kKeyEnter);
   EXPECT_EQ(f.menu.screen().page, Menu::Page::kNewGame);
@@ -73,7 +73,7 @@ TEST(Menu, NewGameOnDoomIIAsksTheSkillThenStarts) {
 }
 
 TEST(Menu, UltimateDoomAsksTheEpisodeOfFour) {
-  Fixture f(GameMode::kRetail);
+  MenuFixture f(GameMode::kRetail);
   f.menu.open();
   EXPECT_EQ(f.menu.screen().items.size(), 6u) << "Doom keeps Read This!";
   f.press(kKeyEnter);
@@ -87,14 +87,14 @@ TEST(Menu, UltimateDoomAsksTheEpisodeOfFour) {
   ASSERT_EQ(r.size(), 1u);
   EXPECT_EQ(r[0].episode, 4);
   EXPECT_EQ(r[0].skill, 2);
-  Fixture registered(GameMode::kRegistered);
+  MenuFixture registered(GameMode::kRegistered);
   registered.menu.open();
   registered.press(kKeyEnter);
   EXPECT_EQ(registered.menu.screen().items.size(), 3u) << "three episodes before the Ultimate Doom";
 }
 
 TEST(Menu, NightmareAsksFirstAndOnlyYesStartsIt) {
-  Fixture f;
+  MenuFixture f;
   f.menu.open();
   f.press(kKeyEnter);
   f.press(kKeyDown);
@@ -135,7 +135,7 @@ TEST(Menu, TheWadRewordsItsQuestions) {
 
 TEST(Menu, QuitPicksItsMessageAndSoundByTheTic) {
   for (const uint64_t tic : {0u, 9u, 30u}) {
-    Fixture f;
+    MenuFixture f;
     f.context.game_tic = tic;
     f.press(kKeyF10);
     ASSERT_TRUE(f.menu.showing_message());
@@ -156,7 +156,7 @@ TEST(Menu, QuitPicksItsMessageAndSoundByTheTic) {
 }
 
 TEST(Menu, SavingNeedsAGameAndTypesAnUpperCaseDescription) {
-  Fixture f;
+  MenuFixture f;
   f.press(kKeyF2);
   EXPECT_TRUE(f.menu.showing_message()) << "you can't save if you aren't playing";
   f.press(' ');
@@ -180,7 +180,7 @@ TEST(Menu, SavingNeedsAGameAndTypesAnUpperCaseDescription) {
 }
 
 TEST(Menu, EscapeWhileTypingPutsTheOldDescriptionBack) {
-  Fixture f;
+  MenuFixture f;
   f.context.user_game = f.context.in_level = true;
   f.slots[0] = "KEEP";
   f.press(kKeyF2);
@@ -194,7 +194,7 @@ TEST(Menu, EscapeWhileTypingPutsTheOldDescriptionBack) {
 }
 
 TEST(Menu, ADescriptionStopsAtTheSlotsWidth) {
-  Fixture f;
+  MenuFixture f;
   f.context.user_game = f.context.in_level = true;
   f.menu.text_width = [](const std::string& s) { return int(s.size()) * 10; };
   f.press(kKeyF2);
@@ -204,7 +204,7 @@ TEST(Menu, ADescriptionStopsAtTheSlotsWidth) {
 }
 
 TEST(Menu, LoadingSkipsEmptySlotsAndQuickloadAsksFirst) {
-  Fixture f;
+  MenuFixture f;
   f.slots[2] = "THIRD";
   f.press(kKeyF9);
   EXPECT_TRUE(f.menu.showing_message()) << "no quicksave slot yet";
@@ -224,7 +224,7 @@ TEST(Menu, LoadingSkipsEmptySlotsAndQuickloadAsksFirst) {
 }
 
 TEST(Menu, QuicksavePicksASlotOnceThenAsks) {
-  Fixture f;
+  MenuFixture f;
   f.context.user_game = f.context.in_level = true;
   f.press(kKeyF6);
   ASSERT_EQ(f.menu.screen().page, Menu::Page::kSave) << "the first quicksave opens the save menu";
@@ -250,7 +250,7 @@ TEST(Menu, QuicksavePicksASlotOnceThenAsks) {
 }
 
 TEST(Menu, SlidersAndTogglesChangeTheSettings) {
-  Fixture f;
+  MenuFixture f;
   f.menu.open();
   f.press(kKeyDown);
   f.press(kKeyEnter);  // Options
@@ -284,7 +284,7 @@ TEST(Menu, SlidersAndTogglesChangeTheSettings) {
 }
 
 TEST(Menu, FunctionKeysWithTheMenuClosed) {
-  Fixture f;
+  MenuFixture f;
   f.press(kKeyF11);
   EXPECT_EQ(f.settings.gamma, 1);
   auto r = f.menu.take_requests();
@@ -309,14 +309,14 @@ TEST(Menu, FunctionKeysWithTheMenuClosed) {
 }
 
 TEST(Menu, ReadThisShowsDoomsTwoPagesOrUltimatesOne) {
-  Fixture registered(GameMode::kRegistered);
+  MenuFixture registered(GameMode::kRegistered);
   registered.menu.open();
   for (int i = 0; i < 4; ++i) registered.press(kKeyDown);
   registered.press(kKeyEnter);
   EXPECT_EQ(registered.menu.screen().page, Menu::Page::kReadThis1);
   registered.press(kKeyEnter);
   EXPECT_EQ(registered.menu.screen().page, Menu::Page::kReadThis2);
-  Fixture ultimate(GameMode::kRetail);
+  MenuFixture ultimate(GameMode::kRetail);
   ultimate.menu.open();
   ultimate.press('r');  // Read This!'s hotkey
   ultimate.press(kKeyEnter);
@@ -324,7 +324,7 @@ TEST(Menu, ReadThisShowsDoomsTwoPagesOrUltimatesOne) {
 }
 
 TEST(Menu, TheSkullBlinksEveryEightTics) {
-  Fixture f;
+  MenuFixture f;
   std::vector<int> skulls;
   for (int t = 0; t < 30; ++t) {
     skulls.push_back(f.menu.screen().skull);

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Runs every fuzz target for SECONDS each (default 5: CI's smoke run), under ASan and
-# UBSan, seeded from the bundled files; prints a table of executions, coverage and
-# crashes. A long run: tests/fuzz/run.sh 3600. Builds build-sanitize first (clang, see
-# tests/build-sanitize.sh). A crash leaves its input in build-sanitize/crashes/TARGET/
-# and fails the script.
+# Runs every fuzz target for SECONDS each (default 5: CI's smoke run), one per core at a
+# time, under ASan and UBSan, seeded from the bundled files; prints a table of
+# executions, coverage and crashes. A long run: tests/fuzz/run.sh 3600. Builds
+# build-sanitize first (clang, see tests/build-sanitize.sh). A crash leaves its input in
+# build-sanitize/crashes/TARGET/ and fails the script.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-5}
@@ -32,21 +32,31 @@ seed world tests/fuzz/seeds/world.bin
 mkdir -p "$work/bsp"
 $build/tools/pseudo3d-mapc tests/fuzz/seeds/room.map -o "$work/bsp/room.bsp" >/dev/null
 $build/tools/pseudo3d-mapc tests/fuzz/seeds/room.grid -o "$work/bsp/grid.bsp" >/dev/null
-printf '| target | seconds | executions | coverage (edges) | crashes |\n|---|---:|---:|---:|---:|\n'
-status=0
-for target in map grid bsp demo cameras png wad udmf lmp dmx mus save world; do
-  mkdir -p "$build/crashes/$target"
-  log="$build/fuzz_$target.log"
-  if $build/tests/fuzz/fuzz_$target "$work/$target" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2560 \
+targets=(map grid bsp demo cameras png wad udmf lmp dmx mus save world)
+fuzz() {  # fuzz TARGET: runs it, leaves its table row in $build/fuzz_TARGET.row
+  local target=$1 log="$build/fuzz_$1.log" crashes=0
+  rm -rf "$build/crashes/$target" && mkdir -p "$build/crashes/$target"
+  if ! $build/tests/fuzz/fuzz_$target "$work/$target" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2560 \
       -print_final_stats=1 -artifact_prefix="$build/crashes/$target/" >"$log" 2>&1; then
-    crashes=0
-  else
     crashes=$(ls "$build/crashes/$target" | wc -l)
-    status=1
+    [ "$crashes" -gt 0 ] || crashes=1  # failed without leaving an input: still a failure
   fi
+  local runs edges
   runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo 0)
   edges=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*' || echo 0)
-  printf '| %s | %s | %s | %s | %s |\n' "$target" "$seconds" "$runs" "$edges" "$crashes"
+  printf '| %s | %s | %s | %s | %s |\n' "$target" "$seconds" "$runs" "$edges" "$crashes" >"$build/fuzz_$target.row"
+}
+# One target per core at a time (a libFuzzer process is single-threaded).
+for target in "${targets[@]}"; do
+  while [ "$(jobs -rp | wc -l)" -ge "$(nproc)" ]; do wait -n || true; done
+  fuzz "$target" &
+done
+wait
+printf '| target | seconds | executions | coverage (edges) | crashes |\n|---|---:|---:|---:|---:|\n'
+status=0
+for target in "${targets[@]}"; do
+  cat "$build/fuzz_$target.row"
+  [ "$(cut -d'|' -f6 "$build/fuzz_$target.row" | tr -d ' ')" = 0 ] || status=1
 done
 if [ $status -ne 0 ]; then
   echo "a fuzz target crashed: see $build/fuzz_TARGET.log and $build/crashes/" >&2

@@ -16,43 +16,11 @@
 #include "engine/play/doom_demo.h"
 #include "engine/play/world.h"
 #include "engine/util/file.h"
+#include "tests/support/player_trace.h"
 #include "tests/support/support.h"
 
 namespace p3d::play {
 namespace {
-
-struct TraceTic {
-  int64_t x, y, z, angle, momx, momy, health, random_index, view_z;
-  bool operator==(const TraceTic&) const = default;
-};
-
-std::vector<TraceTic> read_trace(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::vector<TraceTic> out;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream fields(line);
-    int64_t tic;
-    TraceTic t;
-    fields >> tic >> t.x >> t.y >> t.z >> t.angle >> t.momx >> t.momy >> t.health >> t.random_index >> t.view_z;
-    out.push_back(t);
-  }
-  return out;
-}
-
-TraceTic trace_of(const World& w) {
-  const Player& p = w.player();
-  const Mobj& mo = *p.mo;
-  return {mo.x, mo.y, mo.z, int64_t(mo.angle), mo.mom_x, mo.mom_y, p.inv.health, w.random().play_index(), p.view_z};
-}
-
-std::string describe(const TraceTic& t) {
-  std::ostringstream o;
-  o << "x " << t.x << " y " << t.y << " z " << t.z << " angle " << t.angle << " mom " << t.momx << "," << t.momy
-    << " health " << t.health << " random " << t.random_index << " viewz " << t.view_z;
-  return o.str();
-}
 
 void dump_things(std::ostream& out, const World& w, size_t tic) {
   out << "T " << tic << " " << int(w.random().play_index()) << "\n";
@@ -96,7 +64,7 @@ Sync sync_of(const std::string& wad_file, std::span<const uint8_t> demo_bytes, c
   };
   std::unique_ptr<World> world = start(nullptr);
 
-  const std::vector<TraceTic> trace = read_trace(test::source_dir() / "tests/golden" / golden / (stem + ".trace"));
+  const std::vector<test::PlayerTic> trace = test::read_player_trace(test::source_dir() / "tests/golden" / golden / (stem + ".trace"));
   std::ofstream dump;
   if (const char* d = std::getenv("P3D_SYNC_DUMP")) dump.open(std::filesystem::path(d) / (stem + ".ours"));
   Sync s;
@@ -107,10 +75,10 @@ Sync sync_of(const std::string& wad_file, std::span<const uint8_t> demo_bytes, c
     if (world->player().state == PlayerState::kReborn) world = start(world.get());
     world->tick(TicCmd{d.forward, d.side, d.turn, d.buttons});
     if (dump.is_open()) dump_things(dump, *world, t);
-    const TraceTic ours = trace_of(*world);
+    const test::PlayerTic ours = test::player_tic(*world, int64_t(t));
     if (!(ours == trace[t])) {
       std::printf("[ parted   ] %s %s at tic %zu:\n  ours  %s\n  doom  %s\n", wad_file.c_str(), lump.c_str(), t,
-                  describe(ours).c_str(), describe(trace[t]).c_str());
+                  test::describe(ours).c_str(), test::describe(trace[t]).c_str());
       if (!dump.is_open()) break;
     } else if (s.tics_in_sync == t) {
       ++s.tics_in_sync;

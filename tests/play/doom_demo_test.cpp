@@ -10,7 +10,7 @@
 namespace p3d::play {
 namespace {
 
-std::string refusal(const std::vector<uint8_t>& bytes) {
+std::string demo_refusal(const std::vector<uint8_t>& bytes) {
   try {
     decode_doom_demo(bytes, "x.lmp");
   } catch (const Error& e) {
@@ -79,7 +79,7 @@ TEST(DoomDemo, LongTicsKeepTheWholeTurn) {
   EXPECT_EQ(encode_doom_demo(d), bytes) << "written back byte for byte";
   std::vector<uint8_t> cut = bytes;
   cut.resize(cut.size() - 2);
-  EXPECT_EQ(refusal(cut), "x.lmp: the last tic is cut short at byte 18");
+  EXPECT_EQ(demo_refusal(cut), "x.lmp: the last tic is cut short at byte 18");
 }
 
 TEST(DoomDemo, BrokenDemosAreRefusedAndAMissingEndIsTolerated) {
@@ -89,18 +89,18 @@ TEST(DoomDemo, BrokenDemosAreRefusedAndAMissingEndIsTolerated) {
     b.insert(b.end(), tail.begin(), tail.end());
     return b;
   };
-  EXPECT_EQ(refusal({200, 1, 2}), "x.lmp: not a Doom demo (unknown version 200)");
-  EXPECT_EQ(refusal({109, 2, 1}), "x.lmp: truncated demo header");
-  EXPECT_EQ(refusal(with({25, 0, 0})), "x.lmp: the last tic is cut short at byte 13");
+  EXPECT_EQ(demo_refusal({200, 1, 2}), "x.lmp: not a Doom demo (unknown version 200)");
+  EXPECT_EQ(demo_refusal({109, 2, 1}), "x.lmp: truncated demo header");
+  EXPECT_EQ(demo_refusal(with({25, 0, 0})), "x.lmp: the last tic is cut short at byte 13");
   std::vector<uint8_t> nobody = header;
   nobody[9] = 0;
-  EXPECT_EQ(refusal(nobody), "x.lmp: no player is in the game");
+  EXPECT_EQ(demo_refusal(nobody), "x.lmp: no player is in the game");
   std::vector<uint8_t> other_view = header;
   other_view[8] = 2;
-  EXPECT_EQ(refusal(other_view), "x.lmp: the demo's view is of player 3, who is not in the game");
+  EXPECT_EQ(demo_refusal(other_view), "x.lmp: the demo's view is of player 3, who is not in the game");
   std::vector<uint8_t> bad_skill = header;
   bad_skill[1] = 7;
-  EXPECT_EQ(refusal(bad_skill), "x.lmp: skill 7 is not Doom's 0..4");
+  EXPECT_EQ(demo_refusal(bad_skill), "x.lmp: skill 7 is not Doom's 0..4");
   const DoomDemo cut = decode_doom_demo(with({25, 0, 0, 0}), "x.lmp");  // no end marker: Doom plays what is there
   EXPECT_TRUE(cut.truncated);
   EXPECT_EQ(cut.tic_count(), 1u);

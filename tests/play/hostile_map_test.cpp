@@ -14,15 +14,15 @@ namespace {
 using test::TestMap;
 
 constexpr int kMin = -32768, kMax = 32767;
-constexpr TicCmd kRunTurnFire{50, 24, 512, kBtAttack}, kUseCmd{0, 0, 0, kBtUse};
+constexpr TicCmd kHostileRunTurnFire{50, 24, 512, kBtAttack}, kHostileUse{0, 0, 0, kBtUse};
 
-struct Play {
-  explicit Play(const TestMap& m)
+struct HostilePlay {
+  explicit HostilePlay(const TestMap& m)
       : wads(test::test_stack({{"MAP01", m}})),
         level(bsp::build_wad_map(wads, "MAP01", {}, nullptr)),
         world(map_from_wads(wads, "MAP01", level), level, GameOptions{}, Random{}) {}
   void run(int tics) {
-    for (int t = 0; t < tics; ++t) world.tick(t % 3 ? kRunTurnFire : kUseCmd);
+    for (int t = 0; t < tics; ++t) world.tick(t % 3 ? kHostileRunTurnFire : kHostileUse);
     (void)world.state();
   }
   wad::Stack wads;
@@ -38,7 +38,7 @@ TEST(HostileMap, ARoomAsLargeAsTheMapSpawnsAndPlays) {
   m.things.push_back({0, 0, 90, 1});
   m.things.push_back({kMax - 64, kMax - 64, 0, 3004});  // a trooper in the far corner
   m.things.push_back({kMin + 64, kMin + 64, 0, 2012});  // a medikit in the near one
-  Play p(m);
+  HostilePlay p(m);
   ASSERT_NE(p.world.player().mo, nullptr);
   EXPECT_EQ(p.world.player().mo->x, 0);
   p.run(140);
@@ -53,7 +53,7 @@ TEST(HostileMap, AFloorAtTheTopAndACeilingAtTheBottomPlay) {
   m.things.push_back({128, 128, 0, 1});
   m.things.push_back({200, 200, 0, 3001});  // an imp
   m.things.push_back({60, 60, 0, 2035});    // a barrel
-  Play p(m);
+  HostilePlay p(m);
   ASSERT_NE(p.world.player().mo, nullptr);
   EXPECT_EQ(p.world.eye_z(), wrap_add(to_fixed(kMax), kViewHeight)) << "wrapped, as Doom's int: below the ceiling";
   p.run(140);

@@ -15,6 +15,7 @@
 #include "engine/util/bytes.h"
 #include "engine/util/file.h"
 #include "tests/fuzz/save_map.h"
+#include "tests/support/player_trace.h"
 #include "tests/support/support.h"
 #include "tests/support/wad_writer.h"
 
@@ -82,48 +83,16 @@ std::unique_ptr<World> load(const Game& g, const World& before, std::span<const 
   return w;
 }
 
-struct TraceTic {
-  int64_t tic, x, y, z, angle, momx, momy, health, random_index, view_z;
-  bool operator==(const TraceTic&) const = default;
-};
-
-std::vector<TraceTic> read_trace(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::vector<TraceTic> out;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream fields(line);
-    TraceTic t;
-    fields >> t.tic >> t.x >> t.y >> t.z >> t.angle >> t.momx >> t.momy >> t.health >> t.random_index >> t.view_z;
-    out.push_back(t);
-  }
-  return out;
-}
-
-TraceTic trace_of(const World& w, size_t tic) {
-  const Player& p = w.player();
-  const Mobj& mo = *p.mo;
-  return {int64_t(tic), mo.x, mo.y, mo.z, int64_t(mo.angle), mo.mom_x, mo.mom_y, p.inv.health, w.random().play_index(), p.view_z};
-}
-
-std::string describe(const TraceTic& t) {
-  std::ostringstream o;
-  o << "tic " << t.tic << ": x " << t.x << " y " << t.y << " z " << t.z << " angle " << t.angle << " mom " << t.momx << ","
-    << t.momy << " health " << t.health << " random " << t.random_index << " viewz " << t.view_z;
-  return o.str();
-}
-
 // Plays the demo from tic `from` to its end beside the trace's lines of those tics;
 // returns how many tics stayed in sync from the first.
-size_t in_sync(World& w, const DoomDemo& demo, size_t from, const std::vector<TraceTic>& trace) {
+size_t in_sync(World& w, const DoomDemo& demo, size_t from, const std::vector<test::PlayerTic>& trace) {
   size_t synced = 0;
   for (size_t t = from; t < demo.tic_count(); ++t) {
     play_tic(w, demo, t);
-    const auto line = std::find_if(trace.begin(), trace.end(), [&](const TraceTic& l) { return l.tic == int64_t(t); });
+    const auto line = std::find_if(trace.begin(), trace.end(), [&](const test::PlayerTic& l) { return l.tic == int64_t(t); });
     if (line == trace.end()) break;
-    if (!(trace_of(w, t) == *line)) {
-      std::printf("[ parted   ] at %s\n  doom %s\n", describe(trace_of(w, t)).c_str(), describe(*line).c_str());
+    if (!(test::player_tic(w, t) == *line)) {
+      std::printf("[ parted   ] at %s\n  doom %s\n", test::describe(test::player_tic(w, t)).c_str(), test::describe(*line).c_str());
       break;
     }
     ++synced;
@@ -162,7 +131,7 @@ TEST(ChocolateSaves, LoadHereAndPlayTheDemosRestInSyncWithChocolateDoomLoadingTh
     const auto before = played_to(*g, s.tic);
     const std::vector<uint8_t> bytes = read_file_bytes(golden(std::string(s.stem) + ".dsg"));
     const auto w = load(*g, *before, bytes, false);
-    const std::vector<TraceTic> trace = read_trace(golden(std::string(s.stem) + ".trace"));
+    const std::vector<test::PlayerTic> trace = test::read_player_trace(golden(std::string(s.stem) + ".trace"));
     ASSERT_FALSE(trace.empty()) << s.stem;
     EXPECT_EQ(trace.front().tic, int64_t(s.tic + 1)) << s.stem << ": the trace starts after the load";
     EXPECT_EQ(trace.back().tic + 1, int64_t(g->demo.tic_count())) << s.stem << ": and goes to the demo's end";
@@ -241,7 +210,7 @@ TEST(Saves, WithOurExtensionALoadedGameGoesOnExactly) {
     }
     EXPECT_EQ(write_save(*saved, numbers, "end", {}), write_save(*plain, numbers, "end", {}))
         << wad << " DEMO" << demo << ": everything equal at the demo's end";
-    EXPECT_TRUE(trace_of(*saved, 0) == trace_of(*plain, 0));
+    EXPECT_TRUE(test::player_tic(*saved, 0) == test::player_tic(*plain, 0));
   }
 }
 

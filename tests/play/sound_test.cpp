@@ -18,7 +18,7 @@ std::vector<uint8_t> dmx(int rate, uint32_t length, size_t bytes_after_header) {
   return lump;
 }
 
-std::string refusal(const std::vector<uint8_t>& lump) {
+std::string sound_refusal(const std::vector<uint8_t>& lump) {
   try {
     decode_dmx(lump, "DSTEST");
   } catch (const Error& e) {
@@ -33,10 +33,10 @@ TEST(Sound, DmxLumpsDecodeWithoutTheirPaddingAndBrokenOnesAreRefused) {
   ASSERT_EQ(clip.samples.size(), 68u) << "DMX skips 16 samples at each end";
   EXPECT_EQ(clip.samples.front(), 16);
   EXPECT_EQ(clip.samples.back(), 83);
-  EXPECT_EQ(refusal(dmx(11025, 200, 100)), "DSTEST: 200 samples do not fit in 108 bytes");
-  EXPECT_EQ(refusal(dmx(11025, 48, 48)), "DSTEST: 48 samples, too short to play");
-  EXPECT_EQ(refusal({1, 0, 0}), "DSTEST: not a Doom sound (DMX format 3)");
-  EXPECT_EQ(refusal(dmx(0, 100, 100)), "DSTEST: bad sample rate 0");
+  EXPECT_EQ(sound_refusal(dmx(11025, 200, 100)), "DSTEST: 200 samples do not fit in 108 bytes");
+  EXPECT_EQ(sound_refusal(dmx(11025, 48, 48)), "DSTEST: 48 samples, too short to play");
+  EXPECT_EQ(sound_refusal({1, 0, 0}), "DSTEST: not a Doom sound (DMX format 3)");
+  EXPECT_EQ(sound_refusal(dmx(0, 100, 100)), "DSTEST: bad sample rate 0");
   EXPECT_EQ(sound_lump_name(Sound::kPistol), "DSPISTOL");
 }
 
@@ -82,7 +82,7 @@ TEST(Sound, EveryFreedoomSoundLumpDecodes) {
     const wad::Lump* lump = wads.find(sound_lump_name(sound));
     if (!lump) continue;
     if (lump->bytes.size() < 8) {  // Freedoom's silent placeholders: Doom would not play them either
-      EXPECT_EQ(refusal({lump->bytes.begin(), lump->bytes.end()}), "DSTEST: not a Doom sound (DMX format 3)");
+      EXPECT_EQ(sound_refusal({lump->bytes.begin(), lump->bytes.end()}), "DSTEST: not a Doom sound (DMX format 3)");
       continue;
     }
     ++found;

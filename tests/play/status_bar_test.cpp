@@ -16,7 +16,7 @@
 namespace p3d::play {
 namespace {
 
-struct Fixture {
+struct StatusBarFixture {
   wad::Stack wads = bsp::read_wads({test::freedoom_path("freedoom2.wad")});
   std::vector<uint32_t> palette = wad::Art(wads).palette();
   StatusBarArt art = *StatusBarArt::load(wads);
@@ -34,7 +34,7 @@ struct Fixture {
 };
 
 TEST(StatusBar, PiecesAtDoomsPlacesAsTheValuesSay) {
-  Fixture f;
+  StatusBarFixture f;
   const uint32_t untouched = image::rgba(1, 2, 3);
   image::Image frame(320, 200, untouched);
   StatusValues v;
@@ -59,7 +59,7 @@ TEST(StatusBar, PiecesAtDoomsPlacesAsTheValuesSay) {
 }
 
 TEST(StatusBar, ScaledByWholeFactorsAndCentred) {
-  Fixture f;
+  StatusBarFixture f;
   image::Image small(320, 200), big(700, 400);
   f.art.draw({}, small, f.palette);
   f.art.draw({}, big, f.palette);
@@ -251,7 +251,7 @@ TEST(StatusBar, TheGodsFace) {
 
 TEST(StatusBar, FacesLoadInDoomsOrder) {
   // The art holds a face per index; check a few by drawing them.
-  Fixture f;
+  StatusBarFixture f;
   const std::pair<int, const char*> faces[] = {{0, "STFST00"}, {2, "STFST02"},  {3, "STFTR00"},  {4, "STFTL00"},
                                                {5, "STFOUCH0"}, {6, "STFEVL0"}, {7, "STFKILL0"}, {8 + 7, "STFKILL1"},
                                                {40, "STFGOD0"}, {41, "STFDEAD0"}};
@@ -266,7 +266,7 @@ TEST(StatusBar, FacesLoadInDoomsOrder) {
 
 // Doom's message font: capitals from STCFN, other characters a 4-pixel space.
 TEST(HudFont, DrawsDoomsLettersInCapitals) {
-  Fixture f;
+  StatusBarFixture f;
   const HudFont font = *HudFont::load(f.wads);
   image::Image frame(320, 200), upper(320, 200);
   font.draw(frame, "a b", 0, 0, 1, 0, 0, f.palette);

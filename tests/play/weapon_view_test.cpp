@@ -20,7 +20,7 @@ namespace {
 constexpr uint32_t kUntouched = image::rgba(1, 2, 3);
 constexpr Fixed kWeaponTop = 32 * kFracUnit;  // Doom's WEAPONTOP: the weapon raised
 
-struct Fixture {
+struct WeaponViewFixture {
   wad::Stack wads = bsp::read_wads({test::freedoom_path("freedoom2.wad")});
   wad::Art doom_art{wads};
   WeaponArt art{wads};
@@ -30,7 +30,7 @@ struct Fixture {
   Mobj mo;
   Player player;
 
-  Fixture() {
+  WeaponViewFixture() {
     level.palette = doom_art.palette();
     for (int m = 0; m < 32; ++m)
       for (int i = 0; i < 256; ++i) level.light_maps.push_back(level.palette[doom_art.colormap()[size_t(m) * 256 + i]]);
@@ -89,7 +89,7 @@ testing::AssertionResult drawn_at(const render::Frame& frame, const wad::Indexed
 }
 
 TEST(WeaponView, ThePistolLandsWhereDoomDrawsIt) {
-  Fixture f;
+  WeaponViewFixture f;
   const wad::IndexedImage pic = f.picture("PISGA0");
   const DoomPlace at(pic, kFracUnit, kWeaponTop);
   const render::Frame frame = f.draw();
@@ -105,7 +105,7 @@ TEST(WeaponView, ThePistolLandsWhereDoomDrawsIt) {
 }
 
 TEST(WeaponView, BobbingMovesItByWholeUnits) {
-  Fixture f;
+  WeaponViewFixture f;
   f.player.psprites[kPsWeapon].sx = -5 * kFracUnit;
   f.player.psprites[kPsWeapon].sy = kWeaponTop + 7 * kFracUnit;
   const wad::IndexedImage pic = f.picture("PISGA0");
@@ -116,7 +116,7 @@ TEST(WeaponView, BobbingMovesItByWholeUnits) {
 }
 
 TEST(WeaponView, ADarkSectorDarkensTheWeaponButNotABrightFlash) {
-  Fixture f;
+  WeaponViewFixture f;
   f.sector.light = 64;  // light level 4: Doom's map (15 - 4) * 4 - 23 = 21
   f.raise(kPsFlash, StateId::kPistolflash);
   const render::Frame frame = f.draw();
@@ -149,7 +149,7 @@ TEST(WeaponView, ADarkSectorDarkensTheWeaponButNotABrightFlash) {
 }
 
 TEST(WeaponView, ThePowersLightMapsOverrideTheSector) {
-  Fixture f;
+  WeaponViewFixture f;
   f.sector.light = 0;
   const wad::IndexedImage gun = f.picture("PISGA0");
   const DoomPlace at(gun, kFracUnit, kWeaponTop);
@@ -161,7 +161,7 @@ TEST(WeaponView, ThePowersLightMapsOverrideTheSector) {
 }
 
 TEST(WeaponView, IndexedFramesGetPaletteIndices) {
-  Fixture f;
+  WeaponViewFixture f;
   ASSERT_FALSE(f.level.light_indices.empty());
   f.sector.light = 64;
   render::Frame frame(320, 168, kUntouched);
@@ -179,7 +179,7 @@ TEST(WeaponView, IndexedFramesGetPaletteIndices) {
 }
 
 TEST(WeaponView, InvisibleTheWeaponIsAShadowsFuzz) {
-  Fixture f;
+  WeaponViewFixture f;
   f.player.inv.powers[size_t(Power::kInvisibility)] = 60 * 35;
   const uint8_t behind = 100;
   render::Frame frame(320, 168, f.level.palette[behind]);
@@ -208,7 +208,7 @@ TEST(WeaponView, InvisibleTheWeaponIsAShadowsFuzz) {
 }
 
 TEST(WeaponView, ScaledByTheStatusBarsFactor) {
-  Fixture f;
+  WeaponViewFixture f;
   const wad::IndexedImage pic = f.picture("PISGA0");
   // At 640x336 over a bar of 64 rows, as Crispy Doom's hires: Doom's screen twice over,
   // centre column 320 and row 168, each view pixel a half step through the picture.
@@ -233,7 +233,7 @@ TEST(WeaponView, ScaledByTheStatusBarsFactor) {
 }
 
 TEST(WeaponView, NothingWithoutItsSprite) {
-  Fixture f;
+  WeaponViewFixture f;
   f.player.psprites[kPsWeapon] = {};
   const render::Frame frame = f.draw();
   for (uint32_t p : frame.pixels) ASSERT_EQ(p, kUntouched);

@@ -177,7 +177,7 @@ TEST(Sprites, SkillAndPresenceDecideWhatIsDrawn) {
   map::Source src = room_with_wall();
   const int sprite = add_sprite(src, picture(32, 48, kRed), false, true);
   add_thing(src, {200, 256}, sprite);
-  src.things.back().flags = doom::kThingEasy;  // skills 1 and 2 only
+  src.things.back().flags = p3d::doom::kThingEasy;  // skills 1 and 2 only
   const level::Level level = test::compile(src);
   const Camera camera = camera_at(level, {100, 256}, 0);
   Frame frame(160, 100);
@@ -195,7 +195,7 @@ TEST(Sprites, SkillAndPresenceDecideWhatIsDrawn) {
 
   map::Source multi = room_with_wall();
   add_thing(multi, {200, 256}, add_sprite(multi, picture(32, 48, kRed), false, true));
-  multi.things.back().flags = doom::kThingAllSkills | doom::kThingNotSingle;
+  multi.things.back().flags = p3d::doom::kThingAllSkills | p3d::doom::kThingNotSingle;
   const level::Level ml = test::compile(multi);
   EXPECT_TRUE(level::start_state(ml).things.empty()) << "multiplayer-only things are left out";
 }

@@ -1,5 +1,5 @@
 // Every command in the fenced `sh` blocks of the README and docs/ runs as written and
-// succeeds, so the documents cannot drift from the programs; every relative link in
+// succeeds (a test per document), so the documents cannot drift from the programs; every relative link in
 // them leads to a file that exists. Each block runs as one bash script in a
 // fresh directory where build/, maps/, tools/ and tests/ lead to the real ones, so
 // every output lands in that directory's out/. The game runs through SDL's dummy
@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <regex>
 #include <sstream>
 
@@ -85,39 +86,62 @@ std::filesystem::path scratch(const std::string& name) {
   return dir;
 }
 
-TEST(Readme, EveryCommandRunsAsWritten) {
+// The commands of a document's `sh` blocks, each block as one script (a line is
+// skipped when `skipped`; `skips` counts them).
+std::vector<std::pair<int, std::string>> block_scripts(const std::filesystem::path& document, size_t& commands,
+                                                       size_t& skips) {
+  std::vector<std::pair<int, std::string>> scripts;
+  for (const Block& block : fenced_blocks(read_file_text(document), "sh")) {
+    std::string script;
+    for (const std::string& line : block.lines) {
+      const std::string command = strip_comment(line);
+      if (command.empty()) continue;
+      if (skipped(command)) {
+        ++skips;
+        continue;
+      }
+      script += adapt(command) + "\n";
+      ++commands;
+    }
+    scripts.push_back({block.line, script});
+  }
+  return scripts;
+}
+
+TEST(Readme, OnlyTheQuickStartAndTheWholeBenchmarkAreSkipped) {
+  size_t commands = 0, skips = 0;
+  for (const std::filesystem::path& document : documents()) block_scripts(document, commands, skips);
+  EXPECT_EQ(skips, 3u) << "only the quick start and the whole benchmark are skipped";
+  EXPECT_GT(commands, 40u);
+}
+
+// One test per document, so that ctest runs them side by side.
+class DocumentCommands : public testing::TestWithParam<std::filesystem::path> {};
+
+TEST_P(DocumentCommands, RunAsWritten) {
 #ifdef P3D_SANITIZE
   GTEST_SKIP() << "the Release build runs the documents' commands";
 #endif
-  const auto dir = scratch("readme");
-  std::string output;
-
-  size_t ran = 0, skips = 0, blocks_seen = 0;
-  for (const std::filesystem::path& document : documents()) {
-    const std::string name = std::filesystem::relative(document, test::source_dir()).string();
-    for (const Block& block : fenced_blocks(read_file_text(document), "sh")) {
-      ++blocks_seen;
-      std::string script = "set -euo pipefail\ncd " + dir.string() + "\n";
-      for (const std::string& line : block.lines) {
-        const std::string command = strip_comment(line);
-        if (command.empty()) continue;
-        if (skipped(command)) {
-          ++skips;
-          continue;
-        }
-        script += adapt(command) + "\n";
-        ++ran;
-      }
-      write_file_atomically(dir / "block.sh", script);
-      EXPECT_EQ(test::run("bash " + (dir / "block.sh").string(), output), 0)
-          << name << ":" << block.line << ": a command failed:\n" << script << "\n" << output;
-    }
+  const std::filesystem::path& document = GetParam();
+  const std::string name = std::filesystem::relative(document, test::source_dir()).string();
+  const auto dir = scratch("readme_" + document.stem().string());
+  size_t commands = 0, skips = 0;
+  for (const auto& [line, commands_of_block] : block_scripts(document, commands, skips)) {
+    write_file_atomically(dir / "block.sh", "set -euo pipefail\ncd " + dir.string() + "\n" + commands_of_block);
+    std::string output;
+    EXPECT_EQ(test::run("bash " + (dir / "block.sh").string(), output), 0)
+        << name << ":" << line << ": a command failed:\n" << commands_of_block << "\n" << output;
   }
-  EXPECT_EQ(skips, 3u) << "only the quick start and the whole benchmark are skipped";
-  EXPECT_GT(ran, 40u);
-  std::printf("[ stats    ] %zu blocks, %zu commands run, %zu skipped\n", blocks_seen, ran, skips);
+  std::printf("[ stats    ] %s: %zu commands run, %zu skipped\n", name.c_str(), commands, skips);
   std::filesystem::remove_all(dir);
 }
+
+INSTANTIATE_TEST_SUITE_P(Readme, DocumentCommands, testing::ValuesIn(documents()),
+                         [](const testing::TestParamInfo<std::filesystem::path>& info) {
+                           std::string name = info.param.stem().string();  // README, docs_front_end, ...
+                           std::replace_if(name.begin(), name.end(), [](unsigned char c) { return !std::isalnum(c); }, '_');
+                           return name == "README" ? name : "docs_" + name;
+                         });
 
 // An example in a fenced `console` block: "$ command" lines, each followed by what it
 // prints.
