@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "engine/image/image.h"
+#include "engine/play/thing_dump.h"
 #include "engine/util/error.h"
 #include "engine/util/file.h"
 
@@ -59,6 +60,7 @@ HeadlessResult replay_headless(Session& session, const play::Demo& demo, const H
   std::string csv;
   std::string json = "{\"level\": " + json_string(session.name()) + ", \"frames\": [\n";
   HeadlessResult result;
+  std::string things;
   for (size_t tic = 0;; ++tic) {
     const bool last = tic == demo.tics.size() || session.exited() != play::ExitKind::kNone;
     if (tic % size_t(o.capture_every) == 0 || last) {
@@ -93,6 +95,7 @@ HeadlessResult replay_headless(Session& session, const play::Demo& demo, const H
       break;
     }
     session.tic(demo.tics[tic]);
+    if (!o.thing_dump.empty()) things += play::dump_things(session.world(), tic);
     for (const HeadlessOptions::SaveAt& s : o.saves)
       if (s.tic == tic) save_to(session, s.file);
     for (const HeadlessOptions::SaveAt& l : o.loads)
@@ -101,6 +104,7 @@ HeadlessResult replay_headless(Session& session, const play::Demo& demo, const H
   result.exit = session.exited();
   write_file_atomically(o.out_dir / "stats.csv", csv);
   if (o.json) write_file_atomically(o.out_dir / "stats.json", json + "\n]}\n");
+  if (!o.thing_dump.empty()) write_file_atomically(o.thing_dump, things);
   return result;
 }
 

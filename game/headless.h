@@ -29,6 +29,8 @@ struct HeadlessOptions {
   // stats.csv (and JSON): also the player's exact values as Doom keeps them: 16.16 x, y,
   // z, momentum and view height, the binary angle, Doom's random index.
   bool raw = false;
+  // Also every thing after every tic, as play::dump_things writes them (empty: none).
+  std::filesystem::path thing_dump;
 };
 
 struct HeadlessResult {

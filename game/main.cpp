@@ -141,6 +141,11 @@ int main(int argc, char** argv) {
   app.add_flag("--raw-stats", raw_stats,
                "--headless --play: stats.csv also gives Doom's exact values (16.16 x, y, z, momentum, view z, "
                "binary angle, random index)");
+  std::string dump_things;
+  app.add_option("--dump-things", dump_things,
+                 "--headless --play: write every thing after every tic to this file (tools/peers/demo_batch.py compares "
+                 "it with Chocolate Doom's), to find where two replays part")
+      ->type_name("FILE");
   app.add_flag("--fast", flags.fast, "Doom's -fast: faster demons and monster missiles");
   app.add_flag("--respawn", flags.respawn, "Doom's -respawn: dead monsters come back (as in nightmare)");
   app.add_flag("--nomonsters", flags.no_monsters, "Doom's -nomonsters: no monsters are spawned");
@@ -236,8 +241,8 @@ int main(int argc, char** argv) {
     std::optional<play::Demo> demo;
     std::optional<play::DoomDemo> doom_demo;
     if (stats_only && (!headless || play.empty())) throw CLI::ValidationError("--stats-only", "needs --headless --play");
-    if ((!save_at.empty() || !load_at.empty() || raw_stats) && (!headless || play.empty()))
-      throw CLI::ValidationError("--save-at", "--save-at, --load-at and --raw-stats need --headless --play");
+    if ((!save_at.empty() || !load_at.empty() || raw_stats || !dump_things.empty()) && (!headless || play.empty()))
+      throw CLI::ValidationError("--save-at", "--save-at, --load-at, --raw-stats and --dump-things need --headless --play");
     if (load_doom_only && load_at.empty()) throw CLI::ValidationError("--load-doom-only", "needs --load-at");
     if (!play.empty()) {
       const DemoBytes bytes = demo_bytes(play, source);
@@ -299,6 +304,7 @@ int main(int argc, char** argv) {
         for (const auto& [tic, file] : load_at) h.loads.push_back({tic, file});
         h.loads_doom_only = load_doom_only;
         h.raw = raw_stats;
+        h.thing_dump = dump_things;
         const game::HeadlessResult r = game::replay_headless(*session, *demo, h);
         std::printf("replayed %zu of %zu tics (exit: %s), wrote %d %s to %s\n", r.tics, demo->tics.size(),
                     game::exit_name(r.exit), r.frames, stats_only ? "rows of stats.csv" : "frames and stats.csv",

@@ -3,9 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iterator>
 #include <set>
+#include <sstream>
 
+#include "engine/bsp/load.h"
 #include "engine/map/generate.h"
+#include "engine/play/doom_demo.h"
 #include "engine/render/camera_file.h"
 #include "engine/wad/art.h"
 #include "engine/util/file.h"
@@ -539,6 +543,62 @@ TEST(Session, UseAfterDeathStartsTheLevelAgain) {
   EXPECT_EQ(s.world().game_tic(), game_tic + 1) << "Doom's gametic goes on (a revenant's missile steers by it)";
   EXPECT_EQ(s.player().inv.health, 90) << "a fresh player, hurt at once: the slime bites at level time 0";
   EXPECT_EQ(s.pose().pos, geom::Vec2(64, 64)) << "back at the start";
+  std::filesystem::remove_all(dir);
+}
+
+// --dump-things: every thing after every tic of a Freedoom demo, one block a tic, the
+// player first, each block's random index and the player's values those of stats.csv.
+TEST(Headless, DumpsEveryThingAfterEveryTic) {
+  const auto dir = test::temp_dir("thing_dump");
+  const auto iwad = test::freedoom_path("freedoom2.wad");
+  const play::DoomDemo doom = play::decode_doom_demo(bsp::read_wads({iwad}).find("DEMO3")->bytes, "DEMO3");
+  Session s(bsp::LevelSource{{}, {iwad}, doom.map_name(true)}, doom.skill, GameFlags{});
+  play::Demo demo = play::demo_from_doom(doom, s.level());
+  demo.tics.resize(120);
+  HeadlessOptions o{1, dir, 96, 60};
+  o.frames = false;
+  o.raw = true;
+  o.thing_dump = dir / "things.txt";
+  ASSERT_EQ(replay_headless(s, demo, o).tics, 120u);
+
+  std::vector<std::vector<std::string>> stats;  // stats.csv's rows, row t after t tics
+  {
+    std::istringstream csv(read_file_text(dir / "stats.csv"));
+    for (std::string line; std::getline(csv, line);) {
+      std::vector<std::string> fields;
+      std::istringstream in(line);
+      for (std::string f; std::getline(in, f, ',');) fields.push_back(f);
+      stats.push_back(fields);
+    }
+  }
+  const auto column = [&](const std::string& name) {
+    return size_t(std::find(stats[0].begin(), stats[0].end(), name) - stats[0].begin());
+  };
+  std::istringstream dump(read_file_text(dir / "things.txt"));
+  size_t tic = 0, things = 0;
+  bool player_next = false;
+  for (std::string line; std::getline(dump, line);) {
+    std::istringstream in(line);
+    std::vector<std::string> f{std::istream_iterator<std::string>(in), {}};
+    if (f[0] == "T") {
+      ASSERT_EQ(f.size(), 3u) << line;
+      ASSERT_EQ(f[1], std::to_string(tic)) << "a block after every tic, in order";
+      EXPECT_EQ(f[2], stats[tic + 2][column("random")]) << "tic " << tic;  // +1: the header, +1: after tic+1 tics
+      ++tic, player_next = true;
+      continue;
+    }
+    ASSERT_EQ(f[0], "M") << line;
+    ASSERT_EQ(f.size(), 19u) << line;
+    ++things;
+    if (player_next) {
+      EXPECT_EQ(f[1], "0") << "the player is the first thing";
+      EXPECT_EQ(f[2], stats[tic + 1][column("x_raw")]) << "tic " << tic - 1;
+      EXPECT_EQ(f[3], stats[tic + 1][column("y_raw")]) << "tic " << tic - 1;
+      player_next = false;
+    }
+  }
+  EXPECT_EQ(tic, 120u);
+  EXPECT_GT(things, 120u * 50) << "MAP02's monsters and items, every tic";
   std::filesystem::remove_all(dir);
 }
 

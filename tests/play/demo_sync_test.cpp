@@ -14,6 +14,7 @@
 
 #include "engine/bsp/load.h"
 #include "engine/play/doom_demo.h"
+#include "engine/play/thing_dump.h"
 #include "engine/play/world.h"
 #include "engine/util/file.h"
 #include "tests/support/player_trace.h"
@@ -21,21 +22,6 @@
 
 namespace p3d::play {
 namespace {
-
-void dump_things(std::ostream& out, const World& w, size_t tic) {
-  out << "T " << tic << " " << int(w.random().play_index()) << "\n";
-  const std::vector<const Mobj*> things = w.things();
-  auto index_of = [&](const Mobj* m) {
-    for (size_t i = 0; i < things.size(); ++i)
-      if (things[i] == m) return int(i);
-    return -1;
-  };
-  for (const Mobj* m : things)
-    out << "M " << int(m->type) << " " << m->x << " " << m->y << " " << m->z << " " << m->angle << " " << m->mom_x
-        << " " << m->mom_y << " " << m->mom_z << " " << int(m->state) << " " << m->tics << " " << m->health << " "
-        << m->flags << " " << m->move_dir << " " << m->move_count << " " << m->reaction_time << " " << m->threshold
-        << " " << index_of(m->target) << " " << index_of(m->tracer) << "\n";
-}
 
 struct Sync {
   size_t tics_in_sync = 0, traced = 0, demo_tics = 0;
@@ -74,7 +60,7 @@ Sync sync_of(const std::string& wad_file, std::span<const uint8_t> demo_bytes, c
     const DoomTic d = demo.console_tic(t);
     if (world->player().state == PlayerState::kReborn) world = start(world.get());
     world->tick(TicCmd{d.forward, d.side, d.turn, d.buttons});
-    if (dump.is_open()) dump_things(dump, *world, t);
+    if (dump.is_open()) dump << dump_things(*world, t);
     const test::PlayerTic ours = test::player_tic(*world, int64_t(t));
     if (!(ours == trace[t])) {
       std::printf("[ parted   ] %s %s at tic %zu:\n  ours  %s\n  doom  %s\n", wad_file.c_str(), lump.c_str(), t,

@@ -137,8 +137,8 @@ TEST_P(DocumentCommands, RunAsWritten) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Readme, DocumentCommands, testing::ValuesIn(documents()),
-                         [](const testing::TestParamInfo<std::filesystem::path>& info) {
-                           std::string name = info.param.stem().string();  // README, docs_front_end, ...
+                         [](const testing::TestParamInfo<std::filesystem::path>& document) {
+                           std::string name = document.param.stem().string();  // README, docs_front_end, ...
                            std::replace_if(name.begin(), name.end(), [](unsigned char c) { return !std::isalnum(c); }, '_');
                            return name == "README" ? name : "docs_" + name;
                          });

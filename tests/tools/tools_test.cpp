@@ -381,7 +381,10 @@ TEST_F(Tools, HeadlessPlaysAWadsDemoLump) {
   EXPECT_NE(o.find("demo9: no such file, and the WADs have no lump DEMO9"), std::string::npos) << o;
   EXPECT_EQ(run_in_source(std::string(P3D_GAME) + " maps/outpost.map --play demo1 --headless --out " + out("e"), o), 2);
   EXPECT_NE(o.find("demo1: no such file"), std::string::npos) << o;
+  EXPECT_EQ(run_in_source(game + " --play demo1 --dump-things " + out("things.txt"), o), 2);
+  EXPECT_NE(o.find("--dump-things need --headless --play"), std::string::npos) << o;
   EXPECT_FALSE(std::filesystem::exists(out("e")));
+  EXPECT_FALSE(std::filesystem::exists(out("things.txt")));
 }
 #endif
 
