@@ -102,22 +102,36 @@ TEST(DemoSync, OurRecordedDemoPlaysInChocolateDoomAsInOurs) {
   EXPECT_EQ(s.tics_in_sync, s.demo_tics);
 }
 
-// Demos of random play (tests/golden/desync_demos: <iwad stem>-<map>-<skill>.lmp) that
-// once parted from Chocolate Doom, each at a rule of ours that was not Doom's.
-void expect_desync_demo_in_sync(const std::string& stem) {
+// A demo of random play in tests/golden/<directory>/<iwad stem>-<map>-<skill>...lmp
+// beside Chocolate Doom's trace of it: in sync to its last tic.
+void expect_golden_demo_in_sync(const std::string& directory, const std::string& stem) {
   const std::string wad_file = stem.substr(0, stem.find('-')) + ".wad";
-  const std::vector<uint8_t> bytes = read_file_bytes(test::source_dir() / "tests/golden/desync_demos" / (stem + ".lmp"));
-  const Sync s = sync_of(wad_file, bytes, stem + ".lmp", stem, "desync_demos");
+  const std::vector<uint8_t> bytes = read_file_bytes(test::source_dir() / "tests/golden" / directory / (stem + ".lmp"));
+  const Sync s = sync_of(wad_file, bytes, stem + ".lmp", stem, directory);
   EXPECT_EQ(s.traced, s.demo_tics) << stem << ": the trace covers the whole demo";
   EXPECT_EQ(s.tics_in_sync, s.demo_tics) << stem;
 }
 
-// The player dies in most of them, and the level starts again (Doom's G_DoReborn).
+// Demos of random play that once parted from Chocolate Doom, each at a rule of ours
+// that was not Doom's. The player dies in most of them, and the level starts again
+// (Doom's G_DoReborn).
 TEST(DemoSync, DemosOfRandomPlayOnFreedomsHarderMapsPlayInSyncToTheirLastTic) {
   for (const char* stem : {"freedoom2-map32-nightmare-fast", "freedoom2-map32-skill2", "freedoom2-map32-skill3",
                            "freedoom2-map32-skill5", "freedoom2-map21-skill4", "freedoom2-map13-skill3",
                            "freedoom2-map14-skill4", "freedoom1-e3m7-skill2"})
-    expect_desync_demo_in_sync(stem);
+    expect_golden_demo_in_sync("desync_demos", stem);
+}
+
+// tools/peers/random_demo.py's demos on each IWAD (freedm's single player among them,
+// one in Doom v1.91's long tics), every option: in sync to their last tic.
+TEST(DemoSync, GeneratedRandomDemosPlayInSyncToTheirLastTic) {
+  size_t demos = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(test::source_dir() / "tests/golden/random_demos"))
+    if (entry.path().extension() == ".lmp") {
+      expect_golden_demo_in_sync("random_demos", entry.path().stem().string());
+      ++demos;
+    }
+  EXPECT_GE(demos, 4u);
 }
 
 }  // namespace
