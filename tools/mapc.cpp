@@ -40,6 +40,7 @@ Stats stat_fields(const bsp::Stats& s) {
           {"segs", double(s.segs)},
           {"empty_leaves", double(s.empty_leaves)},
           {"free_splits", double(s.free_splits)},
+          {"free_lines", double(s.free_lines)},
           {"max_depth", double(s.max_depth)},
           {"mean_depth", s.mean_depth},
           {"shortest_fragment", s.shortest_fragment},
@@ -250,6 +251,19 @@ int main(int argc, char** argv) {
   };
   for (const Weight& w : weights)
     app.add_option(w.name, *w.value, w.help)->check(cli::finite_range(0.0, 1e9))->capture_default_str();
+  app.add_option("--free-min", a.options.free_min_fragments, "greedy: fragments a cell needs for a free splitter (a line holding no wall)")
+      ->check(CLI::Range(2, 1 << 30))
+      ->capture_default_str();
+  app.add_option("--free-lopsided", a.options.free_lopsided,
+                 "greedy: a free splitter is tried when the best wall's line takes less than this share of the cell")
+      ->check(cli::finite_range(0.0, 1.0))
+      ->capture_default_str();
+  app.add_option("--free-balance", a.options.free_balance, "greedy: the share of the cell a free splitter leaves on either side, at least")
+      ->check(cli::finite_range(0.0, 0.5))
+      ->capture_default_str();
+  app.add_option("--free-candidates", a.options.free_candidates, "greedy: lines through two vertices scored as free splitters per cell")
+      ->check(CLI::Range(0, 1 << 20))
+      ->capture_default_str();
   app.add_flag("--stats", a.stats, "print tree statistics (a statdump line) and times (apart)");
   app.add_option("--json", a.json, "with --stats: also write them as JSON, with the same names");
   app.add_flag("--check", a.check, "verify the BSP invariants exactly before writing");

@@ -1,5 +1,5 @@
-// mapgen: random levels for tests and benchmarks: segment soups and room grids
-// (.map), mazes and caves (.grid tile maps).
+// mapgen: random levels for tests and benchmarks: segment soups, room grids and
+// shapes hostile to a compiler (.map), mazes and caves (.grid tile maps).
 #include "engine/map/generate.h"
 #include "engine/util/file.h"
 #include "tools/cli.h"
@@ -23,17 +23,21 @@ std::vector<std::string> texture_files(const std::string& texture_dir, const std
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"pseudo3d-mapgen: write a random level: a .map (soup, rooms) or a .grid (maze, caves)", "pseudo3d-mapgen"};
+  CLI::App app{"pseudo3d-mapgen: write a random level: a .map (soup, rooms, shapes) or a .grid (maze, caves)", "pseudo3d-mapgen"};
   const std::string texture_dir = (cli::bundled_maps_dir() / "textures").string();
   std::string kind, output, grid_size = "64x64";
   map::GenerateOptions options;
   map::GridOptions grid;
+  std::vector<std::string> kinds = {"soup", "rooms", "maze", "caves", "arena"};
+  kinds.insert(kinds.end(), map::shape_kinds().begin(), map::shape_kinds().end());
   app.add_option("kind", kind,
                  "soup (plain non-crossing segments), rooms (sectors joined by doorways), "
-                 "maze (a tile labyrinth with rooms), caves (random tiles), arena (an open hall with pillars)")
+                 "maze (a tile labyrinth with rooms), caves (random tiles), arena (an open hall with pillars); "
+                 "shapes: circle, ellipse, jitter (a circle's vertices moved in or out), star, fan, spiral, comb, rings "
+                 "(nested circular rooms), each vertex on the 1/256 grid")
       ->required()
-      ->check(CLI::IsMember({"soup", "rooms", "maze", "caves", "arena"}));
-  app.add_option("--walls", options.walls, "soup, rooms: number of walls (rooms: at least this many)")
+      ->check(CLI::IsMember(kinds));
+  app.add_option("--walls", options.walls, "soup, rooms, shapes: number of walls (rooms: at least this many)")
       ->check(CLI::Range(size_t{1}, limits::kMaxWalls / 2))
       ->capture_default_str();
   app.add_option("--grid", grid_size, "maze, caves, arena: tiles WxH")->capture_default_str();
@@ -66,7 +70,9 @@ int main(int argc, char** argv) {
     const auto files = texture_files(texture_dir, names);
     for (size_t i = 0; i < names.size(); ++i)
       options.textures.push_back({names[i], image::load_png(std::filesystem::path(texture_dir) / (names[i] + ".png")), {}});
-    const map::Source source = kind == "soup" ? map::generate_soup(options) : map::generate_rooms(options);
+    const map::Source source = kind == "soup"    ? map::generate_soup(options)
+                               : kind == "rooms" ? map::generate_rooms(options)
+                                                 : map::generate_shape(kind, options);
     map::validate(source);
     write_file_atomically(output, map::to_map_text(source, files));
     std::printf("%s: %zu walls, %zu sectors, %zu vertices\n", output.c_str(), source.walls.size(),

@@ -280,20 +280,18 @@ class Builder {
       Task task = std::move(stack.back());
       stack.pop_back();
       max_depth_ = std::max<size_t>(max_depth_, task.depth);
-      const size_t splitter = split_or_leaf(task);
-      if (splitter == kLeaf) continue;
-      const Frag& f = task.frags[splitter];
+      const std::optional<Splitter> splitter = split_or_leaf(task);
+      if (!splitter) continue;
       const int32_t node = static_cast<int32_t>(out_.nodes.size());
       link(task, node);
       out_.nodes.push_back({});
-      out_.nodes[node].splitter = f.wall;
-      const int32_t splitter_wall = static_cast<int32_t>(f.wall);
-      if (spans_cell(f)) ++free_splits_;  // it cannot cut anything: free
+      out_.nodes[node].splitter = splitter->line;
+      if (splitter->spans) ++free_splits_;  // it cannot cut anything: free
       std::vector<Frag> front, back;
-      partition(task.frags, splitter_wall, node, front, back);
+      partition(task.frags, int32_t(splitter->line), node, front, back);
       std::vector<Frag>().swap(task.frags);
 
-      const Line& l = lines_[splitter_wall];
+      const Line& l = lines_[splitter->line];
       stack.push_back({std::move(back), clip(task.cell, l, node, false), node, 1, task.depth + 1});
       stack.push_back({std::move(front), clip(task.cell, l, node, true), node, 0, task.depth + 1});
     }
@@ -320,53 +318,88 @@ class Builder {
     }
   }
 
-  static constexpr size_t kLeaf = SIZE_MAX;
   static constexpr size_t kNoFragment = SIZE_MAX;
   static constexpr size_t kTestFirst = 48;  // cells this small are tested for a leaf before a search
 
-  // Makes the task's cell a leaf (returning kLeaf) when its fragments bound a convex
-  // region of one sector; otherwise returns the position of the fragment to split along.
-  size_t split_or_leaf(Task& task) {
+  // A node's line: a line number (lines_), and whether a fragment on it spans the cell.
+  struct Splitter {
+    uint32_t line;
+    bool spans = false;
+  };
+
+  // Greedy's choice: the sampled candidate of least cost, and whether the sample shows
+  // fragments on both sides of it (else it only takes its line's fragments off the cell).
+  struct Choice {
+    size_t fragment = kNoFragment;
+    bool divides = false;
+    bool any_divides = false;  // some candidate scored did
+    size_t progress = 0;       // sampled fragments it takes from the bigger side's cell (on its line, or beyond)
+  };
+
+  // Makes the task's cell a leaf (returning nothing) when its fragments bound a convex
+  // region of one sector; otherwise returns the line to split it along.
+  std::optional<Splitter> split_or_leaf(Task& task) {
     const std::vector<Frag>& frags = task.frags;
     if (frags.empty()) {
       make_leaf(task, level::kNone);
-      return kLeaf;
+      return std::nullopt;
     }
+    auto along = [&](size_t i) { return Splitter{frags[i].wall, spans_cell(frags[i])}; };
     const bool greedy = opt_.strategy == Strategy::kGreedy;
     // Big cells are rarely leaves: a splitter the sample proves to divide the cell
     // spares the exact test and the look at every fragment's sectors (a cache miss
-    // each). Small ones are tested first (cheaper than a search).
+    // each). Small ones are tested first (cheaper than a search). A wall's line that
+    // leaves one side nearly empty gives way to a free line that halves the cell.
     const bool test_first = !greedy || frags.size() <= kTestFirst;
     Choice chosen;
     if (!test_first) {
       chosen = choose_greedy(frags);
-      if (chosen.divides) return chosen.fragment;
+      if (chosen.divides && !lopsided(chosen, frags.size())) return along(chosen.fragment);
+      if (chosen.divides) return free_or(along(chosen.fragment));
     }
     const Sectors sectors = cell_sectors(frags);
     const bool one_sector = sectors.other == kNoFragment && sectors.barrier == kNoFragment;
     if (greedy && test_first && !one_sector) {
       chosen = choose_greedy(frags);
-      if (chosen.divides) return chosen.fragment;
+      if (chosen.divides && !lopsided(chosen, frags.size())) return along(chosen.fragment);
+      if (chosen.divides) return free_or(along(chosen.fragment));
     }
     const ConvexTest convex = convex_region(FragPieces{frags, *this}, convex_sides_, convex_order_);
     if (convex.convex && one_sector) {
       make_leaf(task, sectors.sector);
-      return kLeaf;
+      return std::nullopt;
     }
     if (!greedy) {
       const size_t pick = choose_simple(frags);
-      if (divides(frags, pick)) return pick;
+      if (divides(frags, pick)) return along(pick);
     } else if (chosen.fragment == kNoFragment) {
       chosen = choose_greedy(frags);
     }
+    // No candidate halves the cell: most walls' lines peel a few walls off it (a nearly
+    // convex room; an arc of walls between two sectors, which each need a node), each
+    // split passing over the rest. A free line, if one halves it.
+    if (greedy && lopsided(chosen, frags.size()))
+      if (const std::optional<uint32_t> line = choose_free()) return Splitter{*line};
     // The best candidate, though it only peels its line's fragments off the cell, if it
     // beat one that divides it.
-    if (chosen.fragment != kNoFragment && (chosen.divides || chosen.any_divides)) return chosen.fragment;
-    if (!convex.convex) return convex.witness;
+    if (chosen.fragment != kNoFragment && (chosen.divides || chosen.any_divides)) return along(chosen.fragment);
+    if (!convex.convex) return along(convex.witness);
     // Convex, but a two-sided wall between two sectors lies inside the cell, or its
     // walls face more than one sector (an unclosed sector): split along such a wall,
     // which the node takes, the others all on one side (as ZDBSP shoves a seg behind).
-    return sectors.barrier != kNoFragment ? sectors.barrier : sectors.other;
+    return along(sectors.barrier != kNoFragment ? sectors.barrier : sectors.other);
+  }
+
+  // Whether the greedy choice leaves its bigger side's cell (in the sample) with all
+  // but a small share of the fragments, in a cell big enough for a free line to pay.
+  bool lopsided(const Choice& c, size_t fragments) const {
+    if (fragments < size_t(opt_.free_min_fragments)) return false;
+    return double(c.progress) < opt_.free_lopsided * double(sample_.size());
+  }
+
+  std::optional<Splitter> free_or(Splitter fallback) {
+    if (const std::optional<uint32_t> line = choose_free()) return Splitter{*line};
+    return fallback;
   }
 
   // ---- sectors -------------------------------------------------------------
@@ -439,13 +472,7 @@ class Builder {
     return false;
   }
 
-  // Greedy: the sampled candidate of least cost, and whether the sample shows fragments
-  // on both sides of it (else it only takes its line's fragments off the cell).
-  struct Choice {
-    size_t fragment = kNoFragment;
-    bool divides = false;
-    bool any_divides = false;  // some candidate scored did
-  };
+  // Greedy: the sampled candidate of least cost, with what the sample shows of it.
   Choice choose_greedy(const std::vector<Frag>& frags) {
     const size_t m = frags.size();
     const size_t k = std::min<size_t>(m, std::max(1, opt_.greedy_candidates));
@@ -471,12 +498,58 @@ class Builder {
       // (all of them when the sample is the cell), counted by line number rather than
       // by a look at every fragment of a big cell.
       const double bonus = opt_.line_weight * double(std::count(sample_.line.begin(), sample_.line.end(), f.line_number));
-      bool divides = false;
-      const std::optional<double> cost = score(f, best_cost + bonus, divides);
-      if (cost && *cost - bonus < best_cost) best_cost = *cost - bonus, best = {candidate, divides, best.any_divides};
-      best.any_divides |= cost && divides;
+      Tally tally;
+      const std::optional<double> cost = score(f.line, best_cost + bonus, tally);
+      if (cost && *cost - bonus < best_cost)
+        best_cost = *cost - bonus, best = {candidate, tally.divides, best.any_divides, samples - std::max(tally.front, tally.back)};
+      best.any_divides |= cost && tally.divides;
     }
     return best;
+  }
+
+  // A free splitter for a cell that every sampled wall's line leaves nearly whole: the
+  // best of lines through two of the sampled fragments' vertices (on a nearly convex
+  // room a chord cuts nothing) and the vertical and horizontal lines through their
+  // median vertex, scored as greedy scores walls. Taken if it divides the sample with
+  // at least opt_.free_balance of it on either side and splits no more than half the
+  // smaller side's fragments; nothing otherwise. Its line joins lines_ and the level's.
+  // Uses the sample choose_greedy drew.
+  std::optional<uint32_t> choose_free() {
+    const size_t n = sample_.size();
+    free_points_.clear();
+    for (size_t i = 0; i < n; ++i)
+      for (int k = 0; k < 2; ++k)
+        if (!(sample_.cut[i] >> k & 1)) free_points_.push_back(sample_.ends[2 * i + k]);
+    if (free_points_.size() < 2) return std::nullopt;
+    std::vector<Line> candidates;
+    for (int axis = 0; axis < 2; ++axis) {  // the vertical, then the horizontal line through the median
+      const auto middle = free_points_.begin() + ptrdiff_t(free_points_.size() / 2);
+      std::nth_element(free_points_.begin(), middle, free_points_.end(), [axis](IPoint a, IPoint b) {
+        return axis == 0 ? std::tie(a.x, a.y) < std::tie(b.x, b.y) : std::tie(a.y, a.x) < std::tie(b.y, b.x);
+      });
+      // One unit along the axis, towards the origin: both points stay in range.
+      constexpr int64_t unit = int64_t{1} << geom::kFracBits;
+      const IPoint d = axis == 0 ? IPoint{0, middle->y > 0 ? -unit : unit} : IPoint{middle->x > 0 ? -unit : unit, 0};
+      candidates.push_back({*middle, d});
+    }
+    for (int c = 0; c < opt_.free_candidates; ++c) {
+      const IPoint p = free_points_[rng_.below(free_points_.size())], q = free_points_[rng_.below(free_points_.size())];
+      if (!(p == q)) candidates.push_back(Line::through(p, q));
+    }
+    std::optional<Line> best;
+    double best_cost = INFINITY;
+    for (const Line& l : candidates) {
+      Tally tally;
+      const std::optional<double> cost = score(l, INFINITY, tally);
+      const size_t smaller = std::min(tally.front, tally.back);
+      if (!cost || !tally.divides || double(smaller) < opt_.free_balance * double(n) || 2 * tally.splits > smaller) continue;
+      if (*cost < best_cost) best_cost = *cost, best = l;
+    }
+    if (!best) return std::nullopt;
+    const uint32_t line = uint32_t(lines_.size());
+    lines_.push_back(*best);
+    out_.free_lines.push_back({best->a, {best->a.x + best->d.x, best->a.y + best->d.y}});
+    return line;
   }
 
   // The fragments a candidate splitter is scored against, laid out for the scoring
@@ -509,12 +582,15 @@ class Builder {
   // add to a leaf), slivers, and a peel (no fragment on one side); or nothing once it
   // cannot come under `to_beat`. `divides` tells whether the sample shows fragments on
   // both sides.
-  std::optional<double> score(const Frag& candidate, double to_beat, bool& divides) {
-    const Line& l = candidate.line;
+  struct Tally {
+    bool divides = false;
+    size_t front = 0, back = 0, splits = 0;  // sampled fragments on each side (a split one on both), split
+  };
+  std::optional<double> score(const Line& l, double to_beat, Tally& tally) {
     const size_t n = sample_.size();
     double front = 0, back = 0, left = sample_weight_;
     int64_t splits = 0, slivers = 0;
-    bool any_front = false, any_back = false;
+    size_t fronts = 0, backs = 0;
     for (size_t i = 0; i < n; ++i) {
       // Stop once this candidate cannot win (the same choice, sooner): splits and
       // slivers only add, and the fragments left can close the imbalance by at most
@@ -536,7 +612,7 @@ class Builder {
       const bool to_front = s0 < 0 || s1 < 0, to_back = s0 > 0 || s1 > 0;
       front += to_front ? w : 0.0;
       back += to_back ? w : 0.0;
-      any_front |= to_front, any_back |= to_back;
+      fronts += to_front, backs += to_back;
       if (s0 * s1 < 0) {
         ++splits;
         const Frag& f = *sample_.frags[i];
@@ -546,8 +622,8 @@ class Builder {
         slivers += std::min(t - f.t[0], f.t[1] - t) * length < kSliverLength;
       }
     }
-    divides = any_front && any_back;
-    return (divides ? 0.0 : opt_.peel_weight) + opt_.split_weight * double(splits) +
+    tally = {fronts > 0 && backs > 0, fronts, backs, size_t(splits)};
+    return (tally.divides ? 0.0 : opt_.peel_weight) + opt_.split_weight * double(splits) +
            opt_.balance_weight * std::fabs(front - back) + opt_.sliver_weight * double(slivers);
   }
 
@@ -563,9 +639,9 @@ class Builder {
   // Front = right of the splitter (side < 0), back = left (side > 0); fragments on its
   // line go to the node. The sides are decided first, so each side's vector is made
   // at its final size.
-  void partition(std::vector<Frag>& frags, int32_t splitter_wall, int32_t node, std::vector<Frag>& front,
+  void partition(std::vector<Frag>& frags, int32_t splitter, int32_t node, std::vector<Frag>& front,
                  std::vector<Frag>& back) {
-    const Line& l = lines_[splitter_wall];
+    const Line& l = lines_[size_t(splitter)];
     sides_.resize(frags.size());
     size_t fronts = 0, backs = 0;
     for (size_t k = 0; k < frags.size(); ++k) {
@@ -591,7 +667,7 @@ class Builder {
       } else if (s0 >= 0 && s1 >= 0) {
         back.push_back(f);
       } else {
-        const Frag tail = split(f, splitter_wall);
+        const Frag tail = split(f, splitter);
         (s0 < 0 ? front : back).push_back(f);
         (s1 < 0 ? front : back).push_back(tail);
       }
@@ -768,6 +844,7 @@ class Builder {
     s.nodes = out_.nodes.size();
     s.leaves = out_.leaves.size();
     s.free_splits = free_splits_;
+    s.free_lines = out_.free_lines.size();
     s.max_depth = max_depth_;
     s.mean_depth = s.leaves ? double(leaf_depth_sum_) / s.leaves : 0;
     s.shortest_fragment = shortest_;
@@ -781,10 +858,11 @@ class Builder {
   map::Source* consumable_;
   const Options& opt_;
   Rng rng_;
-  std::vector<Line> lines_;                       // one per wall
+  std::vector<Line> lines_;                       // one per wall, then the free splitters' (line numbers)
   std::vector<std::array<int32_t, 2>> sectors_;   // one per wall: its sides' sectors (kNeutral: a segment)
   std::vector<uint32_t> line_of_;                 // one per wall, until its fragments carry it: its line
   std::vector<uint32_t> scored_lines_;            // choose_greedy's scratch: the lines scored in this cell
+  std::vector<IPoint> free_points_;               // choose_free's scratch: the sample's vertices
   Sample sample_;                                 // choose_greedy's scratch
   double sample_weight_ = 0;                      // its fragments' weight in all
   std::vector<std::pair<int8_t, int8_t>> sides_;  // partition's scratch: each fragment's end sides

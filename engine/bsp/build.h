@@ -1,6 +1,8 @@
 // The map compiler's core: source walls -> BSP auto-partition -> level::Level.
-// Splitters are always lines of input walls (auto-partitions, de Berg ch. 12); a cell
-// whose walls bound a convex region of one sector is a leaf (Doom's subsector).
+// Splitters are lines of input walls (auto-partitions, de Berg ch. 12), or, where every
+// wall's line would peel a few walls off a big cell, a free line through two of its
+// vertices that halves it; a cell whose walls bound a convex region of one sector is a
+// leaf (Doom's subsector).
 #pragma once
 
 #include <cstdint>
@@ -39,6 +41,14 @@ struct Options {
   double line_weight = 2;        // gain per fragment on the splitter's line (the node takes it from the cell)
   double peel_weight = 4;        // cost of a splitter leaving no fragment on one side
   double sliver_weight = 64;     // cost of a split leaving a piece shorter than kSliverLength
+  // Free splitters (lines through two vertices, or through the median vertex, that hold
+  // no wall), greedy only: tried in a cell of at least free_min_fragments fragments when
+  // the best wall's line leaves fewer than free_lopsided of the sample on one side (or
+  // none divides it); taken when one leaves at least free_balance of it on either side.
+  int free_min_fragments = 64;
+  double free_lopsided = 1.0 / 16;
+  double free_balance = 1.0 / 4;
+  int free_candidates = 16;      // lines through two sampled vertices scored per cell
   std::function<void(double fraction_done)> progress;  // called now and then during the build
   bool player_must_be_inside = true;  // a hand-written map's start must lie in a sector (imports only warn)
 };
@@ -50,6 +60,7 @@ struct Stats {
   size_t segs = 0;               // Doom's count: a two-sided fragment is two segs (one per side)
   size_t empty_leaves = 0;       // leaves holding no fragment (their cell's walls all lie on its edges)
   size_t free_splits = 0;        // nodes whose splitter cut nothing and spanned its cell
+  size_t free_lines = 0;         // nodes splitting along a line that holds no wall (Level::free_lines)
   size_t max_depth = 0;
   double mean_depth = 0;         // over leaves
   double shortest_fragment = 0;  // map units

@@ -16,7 +16,7 @@ using level::Level;
 int end_side(const Level& level, const Fragment& f, int k, const geom::Line& l) {
   const level::Wall& w = level.walls[f.wall];
   if (f.cut[k] == level::kNone) return geom::side_of(l, k == 0 ? w.p1 : w.p2);
-  return geom::side_of_crossing(l, w.line(), level.walls[f.cut[k]].line());
+  return geom::side_of_crossing(l, w.line(), level.line(uint32_t(f.cut[k])));
 }
 
 // A leaf's fragments, facing the sides the level says, for convex_region.
@@ -84,7 +84,7 @@ class Checker {
 
   // The stored split parameter is the rounded crossing, nudged at most a few ulps.
   bool split_param_ok(const Fragment& f) const {
-    const double exact = geom::crossing_param(level_.walls[f.wall].line(), level_.walls[f.cut[1]].line());
+    const double exact = geom::crossing_param(level_.walls[f.wall].line(), level_.line(uint32_t(f.cut[1])));
     return std::fabs(exact - f.t1) <= 4 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::fabs(exact));
   }
 
@@ -111,7 +111,7 @@ class Checker {
         continue;
       }
       const level::Node& n = level_.nodes[item.child];
-      const geom::Line splitter = level_.walls[n.splitter].line();
+      const geom::Line splitter = level_.line(n.splitter);
       const std::string node_name = "node " + std::to_string(item.child);
       for (const Constraint& c : path)
         if (geom::same_line(c.line, splitter)) problem(node_name + " splits along the same line as an ancestor");
@@ -145,7 +145,7 @@ class Checker {
     }
     for (int k = 0; k < 2; ++k) {
       if (f.cut[k] == level::kNone) continue;
-      const geom::Line cut = level_.walls[f.cut[k]].line();
+      const geom::Line cut = level_.line(uint32_t(f.cut[k]));
       if (std::none_of(path.begin(), path.end(), [&](const Constraint& c) { return geom::same_line(c.line, cut); }))
         problem(name + " is cut by a line that splits none of its ancestors");
     }

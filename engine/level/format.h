@@ -19,9 +19,11 @@
 //                           2 x side }
 //              side = { i32 sector, i32 upper, i32 middle, i32 lower, f64 x offset, f64 y offset,
 //                       i32 part offsets (-1: none), i32 light }
-//     FRAGS    u32 n; n x { u32 wall, i32 cut0, i32 cut1, f64 t0, f64 t1, u8 side (a leaf's: of its wall,
+//     LINES    u32 n; n x { i64 x1, y1, x2, y2 (1/256 unit) }: free splitters' lines, through two
+//              distinct points; line number walls + i (a node's splitter, a fragment's cut)
+//     FRAGS    u32 n; n x { u32 wall, i32 cut0 line, i32 cut1 line, f64 t0, f64 t1, u8 side (a leaf's: of its wall,
 //                           facing the leaf's region: 0 front, 1 back; a node's: 0) }
-//     NODES    u32 n; n x { u32 splitter wall, i32 front, i32 back, u32 first frag, u32 frag count (those on
+//     NODES    u32 n; n x { u32 splitter line, i32 front, i32 back, u32 first frag, u32 frag count (those on
 //                           its line), f64 bbox min x, min y, max x, max y }
 //     LEAVES   u32 n; n x { i32 sector, u32 first frag, u32 frag count (those inside its cell, bounding a
 //                           convex region) }; the nodes' and leaves' ranges tile the fragments
@@ -40,7 +42,7 @@
 namespace p3d::level::format {
 
 constexpr char kMagic[8] = {'P', '3', 'D', 'B', 'S', 'P', '\r', '\n'};
-constexpr uint32_t kVersion = 10;  // 10: leaves hold the fragments bounding their convex regions (subsectors)
+constexpr uint32_t kVersion = 11;  // 11: free splitters (LINES); 10: leaves hold the fragments bounding their convex regions
 constexpr size_t kHeaderSize = 8 + 4 + 4 + 8 + 8;
 
 constexpr uint32_t tag(const char (&s)[5]) {
@@ -49,12 +51,13 @@ constexpr uint32_t tag(const char (&s)[5]) {
 }
 constexpr uint32_t kMeta = tag("META"), kPalette = tag("PALT"), kTextures = tag("TEXS"), kSprites = tag("SPRS"),
                    kSectors = tag("SECS"), kPartOffsets = tag("PRTS"),
-                   kWalls = tag("WALL"), kFragments = tag("FRAG"), kNodes = tag("NODE"), kLeaves = tag("LEAF"),
+                   kWalls = tag("WALL"), kLines = tag("LINE"), kFragments = tag("FRAG"), kNodes = tag("NODE"), kLeaves = tag("LEAF"),
                    kThings = tag("THNG"), kAnimations = tag("ANIM"), kGrid = tag("GRID");
 
 constexpr size_t kSideRecord = 4 * 4 + 2 * 8 + 4 + 4;
 constexpr size_t kPartOffsetsRecord = 6 * 8;
 constexpr size_t kWallRecord = 4 * 8 + 4 * 4 + 2 * kSideRecord;
+constexpr size_t kLineRecord = 4 * 8;
 constexpr size_t kFragmentRecord = 4 * 3 + 8 * 2 + 1;
 constexpr size_t kNodeRecord = 4 * 5 + 8 * 4;
 constexpr size_t kSectorRecord = 4 + 8 * 2 + 4 * 5;

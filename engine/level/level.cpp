@@ -165,9 +165,9 @@ void derive_geometry(Level& level) {
     f.p1 = f.t1 == 1 ? w.b : w.at(f.t1);
   }
   for (Node& n : level.nodes) {
-    const Wall& s = level.walls[n.splitter];
-    n.origin = s.a;
-    n.direction = s.b - s.a;
+    const geom::Line l = level.line(n.splitter);
+    n.origin = geom::to_world(l.a);
+    n.direction = Vec2(double(l.d.x), double(l.d.y)) / geom::kFixedOne;
   }
   for (Leaf& l : level.leaves) {
     l.bbox = BBox{};

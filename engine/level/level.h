@@ -113,8 +113,8 @@ struct Wall {
 };
 
 // A piece [t0, t1] of a wall: on the splitter line of the node that holds it, or inside
-// the cell of the leaf that holds it. cut[k] is the wall whose line produced end k (an
-// ancestor's splitter), or kNone for an original wall end.
+// the cell of the leaf that holds it. cut[k] is the line (Level::line) that produced end
+// k (an ancestor's splitter), or kNone for an original wall end.
 struct Fragment {
   uint32_t wall = 0;
   int32_t cut[2] = {kNone, kNone};
@@ -124,9 +124,15 @@ struct Fragment {
   Vec2 p0, p1;
 };
 
+// A splitter line that holds no wall: through two distinct fixed points.
+struct FreeLine {
+  geom::IPoint p1, p2;
+  geom::Line line() const { return geom::Line::through(p1, p2); }
+};
+
 // Children: index >= 0 is a node, index < 0 is leaf ~index.
 struct Node {
-  uint32_t splitter = 0;  // the wall whose line splits this node
+  uint32_t splitter = 0;  // the line (Level::line) that splits this node: a wall's, or a free line
   int32_t child[2] = {0, 0};  // [0] front (right of the splitter), [1] back (left)
   uint32_t first_fragment = 0, fragment_count = 0;  // the fragments on its line
   BBox bbox;  // of every fragment in this subtree
@@ -204,6 +210,11 @@ struct Level {
   std::vector<Sector> sectors;
   std::vector<Wall> walls;  // in source order
   std::vector<PartOffsets> part_offsets;  // named by Side::parts
+  // Free splitters' lines: lines through two points of the fixed grid that hold no wall,
+  // where every wall's line would peel a few walls off a big cell (a nearly convex room).
+  // Line numbers (Node::splitter, Fragment::cut) below walls.size() are walls' lines,
+  // the rest these, in order.
+  std::vector<FreeLine> free_lines;
   std::vector<Fragment> fragments;  // node by node and leaf by leaf, as the tree was built
   std::vector<Node> nodes;  // preorder: node 0 is the root, children come after their parent
   std::vector<Leaf> leaves;
@@ -261,6 +272,11 @@ struct Level {
   // The tree's root: node 0, or leaf 0 when the tree is a single leaf (its walls bound one convex region).
   int32_t root() const { return nodes.empty() ? leaf_child(0) : 0; }
   int sector_at(Vec2 p) const { return leaves[leaf_at(p)].sector; }
+  // Line number i: wall i's line, or free line i - walls.size(). Exact.
+  geom::Line line(uint32_t i) const {
+    return i < walls.size() ? walls[i].line() : free_lines[i - walls.size()].line();
+  }
+  size_t line_count() const { return walls.size() + free_lines.size(); }
 };
 
 // Fills the derived fields: derive_geometry, derive_shading, then place_in_sectors.

@@ -34,6 +34,7 @@ class Reader {
     read_sectors();
     read_part_offsets();
     read_walls();
+    read_free_lines();
     read_fragments();
     read_nodes();
     read_leaves();
@@ -222,6 +223,21 @@ class Reader {
     }
   }
 
+  void read_free_lines() {
+    section(format::kLines, "LINE");
+    const uint32_t n = in_.count(format::kLineRecord, "free lines");
+    if (n > limits::kMaxWalls) in_.fail("more free lines than a level may have walls");
+    level_.free_lines.resize(n);
+    for (FreeLine& l : level_.free_lines) {
+      in_.at("LINE", &l - level_.free_lines.data());
+      l.p1 = {in_.i64(), in_.i64()};
+      l.p2 = {in_.i64(), in_.i64()};
+      for (int64_t c : {l.p1.x, l.p1.y, l.p2.x, l.p2.y})
+        if (c < -geom::kMaxFixed || c > geom::kMaxFixed) in_.fail("free line coordinate out of range");
+      if (l.p1 == l.p2) in_.fail("free line through one point");
+    }
+  }
+
   void read_fragments() {
     section(format::kFragments, "FRAG");
     const uint32_t n = in_.count(format::kFragmentRecord, "fragments");
@@ -359,7 +375,8 @@ class Reader {
   }
 
   void check_references() const {
-    const size_t textures = level_.textures.size(), sectors = level_.sectors.size(), walls = level_.walls.size();
+    const size_t textures = level_.textures.size(), sectors = level_.sectors.size(), walls = level_.walls.size(),
+                 lines = level_.line_count();
     in_.at("META");
     index(level_.default_sector, kNone, sectors, "default sector");
     index(level_.sky_texture, kNone, textures, "sky texture");
@@ -393,8 +410,8 @@ class Reader {
         const double t = k ? f.t1 : f.t0;
         const bool original_end = t == (k ? 1.0 : 0.0);
         if (original_end != (f.cut[k] == kNone)) in_.fail("fragment end does not match its cut");
-        index(f.cut[k], kNone, walls, "fragment cut");
-        if (f.cut[k] != kNone && geom::parallel(level_.walls[f.wall].line(), level_.walls[f.cut[k]].line()))
+        index(f.cut[k], kNone, lines, "fragment cut");
+        if (f.cut[k] != kNone && geom::parallel(level_.walls[f.wall].line(), level_.line(uint32_t(f.cut[k]))))
           in_.fail("fragment cut by a parallel line");
       }
     }
@@ -424,7 +441,7 @@ class Reader {
     for (size_t i = 0; i < nodes; ++i) {
       in_.at("NODE", int64_t(i));
       const Node& n = level_.nodes[i];
-      index(static_cast<int32_t>(n.splitter), 0, level_.walls.size(), "node splitter");
+      index(static_cast<int32_t>(n.splitter), 0, level_.line_count(), "node splitter");
       for (int32_t c : n.child) {
         if (is_leaf(c)) {
           index(leaf_index(c), 0, leaves, "leaf");
@@ -435,7 +452,7 @@ class Reader {
         }
       }
       claim(n.first_fragment, n.fragment_count, "node");
-      const geom::Line splitter = level_.walls[n.splitter].line();
+      const geom::Line splitter = level_.line(n.splitter);
       for (uint32_t f = n.first_fragment; f < n.first_fragment + n.fragment_count; ++f)
         if (!geom::same_line(splitter, level_.walls[level_.fragments[f].wall].line()))
           in_.fail("fragment " + std::to_string(f) + " is not on its node's splitter");

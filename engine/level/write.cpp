@@ -133,6 +133,15 @@ void write_payload(ByteWriter& out, const Level& level) {
     write_side(out, w.sides[1]);
   }
 
+  out.u32(format::kLines);
+  out.u32(static_cast<uint32_t>(level.free_lines.size()));
+  for (const FreeLine& l : level.free_lines) {
+    out.i64(l.p1.x);
+    out.i64(l.p1.y);
+    out.i64(l.p2.x);
+    out.i64(l.p2.y);
+  }
+
   out.u32(format::kFragments);
   out.u32(static_cast<uint32_t>(level.fragments.size()));
   for (const Fragment& f : level.fragments) {
@@ -205,7 +214,7 @@ size_t encoded_size_estimate(const Level& level) {
   for (const Texture& t : level.textures) bytes += 16 + t.name.size() + t.texels.size() * (level.paletted() ? 2 : 4);
   for (const Sector& s : level.sectors) bytes += 48 + s.name.size();
   for (const SpriteFrame& f : level.sprite_frames) bytes += 64 + f.name.size();
-  bytes += 12 * level.sprite_images.size() + format::kWallRecord * level.walls.size() +
+  bytes += 12 * level.sprite_images.size() + format::kWallRecord * level.walls.size() + format::kLineRecord * level.free_lines.size() +
            format::kPartOffsetsRecord * level.part_offsets.size() + format::kFragmentRecord * level.fragments.size() +
            format::kNodeRecord * level.nodes.size() + format::kLeafRecord * level.leaves.size() + 40 * level.things.size();
   if (level.grid) bytes += 24 + level.grid->solid.size() + level.grid->faces.size() * 4;

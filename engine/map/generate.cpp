@@ -1,5 +1,6 @@
 #include "engine/map/generate.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <unordered_map>
@@ -71,8 +72,8 @@ class SourceBuilder {
     if (src_.textures.size() < 2) throw Error("map generator needs at least two textures");
   }
 
-  int vertex(int64_t x, int64_t y) {  // map units
-    const IPoint p{x << geom::kFracBits, y << geom::kFracBits};
+  int vertex(int64_t x, int64_t y) { return vertex_fixed({x << geom::kFracBits, y << geom::kFracBits}); }  // map units
+  int vertex_fixed(IPoint p) {
     auto [it, added] = index_.try_emplace(key(p), static_cast<int>(src_.vertices.size()));
     if (added) src_.vertices.push_back({p});
     return it->second;
@@ -284,6 +285,41 @@ class RoomGrid {
   std::unordered_map<CellKey, int, CellHash> doors_;
 };
 
+// ---- shapes ------------------------------------------------------------------
+
+// A point in map units rounded to the fixed grid.
+IPoint grid_point(double x, double y) { return {std::llround(x * geom::kFixedOne), std::llround(y * geom::kFixedOne)}; }
+
+// Vertices of `points` (clockwise, consecutive repeats dropped) as one closed loop of
+// walls with `inside` on their right; `outside` behind (kNone: one-sided).
+void closed_loop(SourceBuilder& b, std::vector<IPoint> points, int inside, int outside, int tex) {
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  while (points.size() > 1 && points.front() == points.back()) points.pop_back();
+  std::vector<int> v;
+  v.reserve(points.size());
+  for (const IPoint& p : points) v.push_back(b.vertex_fixed(p));
+  for (size_t i = 0; i < v.size(); ++i) {
+    const int a = v[i], c = v[(i + 1) % v.size()];
+    if (outside == kNone) b.solid(a, c, inside, tex);
+    else b.portal(a, c, inside, outside, tex);
+  }
+}
+
+// Points on an ellipse, clockwise from (rx, 0).
+std::vector<IPoint> ellipse_points(size_t n, double rx, double ry) {
+  std::vector<IPoint> points;
+  points.reserve(n);
+  for (size_t i = 0; i < n; ++i) {
+    const double a = -2 * M_PI * double(i) / double(n);
+    points.push_back(grid_point(rx * std::cos(a), ry * std::sin(a)));
+  }
+  return points;
+}
+
+// The radius at which n walls round onto the grid as the circle does: 1,000,000
+// at 100,000 walls (each vertex bulges out by an eighth of a grid step), scaled as n^2.
+double near_convex_radius(size_t n) { return std::clamp(1e6 * std::pow(double(n) / 1e5, 2), 64.0, 1.5e6); }
+
 std::string fixed_text(int64_t fixed) {  // exact: fixed / 256 has at most 8 decimals
   char buf[48];
   std::snprintf(buf, sizeof buf, "%.8f", fixed / geom::kFixedOne);
@@ -332,6 +368,81 @@ Source generate_rooms(const GenerateOptions& o) {
     }
     rooms += (o.walls - b.wall_count()) / 15 + 1;
   }
+}
+
+const std::vector<std::string>& shape_kinds() {
+  static const std::vector<std::string> kinds = {"circle", "ellipse", "jitter", "star", "fan", "spiral", "comb", "rings"};
+  return kinds;
+}
+
+Source generate_shape(const std::string& kind, const GenerateOptions& o) {
+  if (std::find(shape_kinds().begin(), shape_kinds().end(), kind) == shape_kinds().end())
+    throw Error("unknown shape " + kind);
+  SourceBuilder b(o, kind.c_str());
+  Rng rng(o.seed);
+  const size_t n = std::max<size_t>(o.walls, 8);
+  const int flat = b.textures() - 1;
+  auto room = [&](const std::string& name) { return b.sector(name, 0, 128, 160, flat, flat); };
+  Source& s = b.source();
+  s.player = {{0, 0}, 0, {}};
+  const double r = near_convex_radius(n);
+  if (kind == "circle" || kind == "ellipse") {
+    closed_loop(b, ellipse_points(n, r, kind == "circle" ? r : r / 2.5), room("room"), kNone, 0);
+  } else if (kind == "jitter") {
+    const double jitter = 2 * M_PI * r / double(n) / 16;
+    std::vector<IPoint> points;
+    for (size_t i = 0; i < n; ++i) {
+      const double a = -2 * M_PI * double(i) / double(n), radius = r + rng.uniform(-jitter, jitter);
+      points.push_back(grid_point(radius * std::cos(a), radius * std::sin(a)));
+    }
+    closed_loop(b, points, room("room"), kNone, 0);
+  } else if (kind == "star") {
+    std::vector<IPoint> points;
+    for (size_t i = 0; i < n; ++i) {
+      const double a = -2 * M_PI * double(i) / double(n), radius = i % 2 ? r / 2 : r;
+      points.push_back(grid_point(radius * std::cos(a), radius * std::sin(a)));
+    }
+    closed_loop(b, points, room("room"), kNone, 0);
+  } else if (kind == "fan") {
+    const int centre = b.vertex(0, 0);
+    for (const IPoint& p : ellipse_points(n, r, r)) b.segment(centre, b.vertex_fixed(p), 0);
+    s.sectors.push_back({"(default)", 0, 128, 192, flat, flat, {}});
+    s.default_sector = 0;
+    s.player = {{r / 3, 7}, 0, {}};
+  } else if (kind == "spiral") {
+    // A corridor 2,000 wide between two spirals, 4,000 apart from turn to turn.
+    const double turns = std::max(2.0, std::round(std::sqrt(double(n)) / 16)), width = 2000, pitch = 2 * width, r0 = 2 * width;
+    const size_t side = n / 2;
+    std::vector<IPoint> inner, outer;
+    for (size_t i = 0; i < side; ++i) {
+      const double t = 2 * M_PI * turns * double(i) / double(side - 1), radius = r0 + pitch * t / (2 * M_PI);
+      inner.push_back(grid_point(radius * std::cos(t), radius * std::sin(t)));
+      outer.push_back(grid_point((radius + width) * std::cos(t), (radius + width) * std::sin(t)));
+    }
+    inner.insert(inner.end(), outer.rbegin(), outer.rend());  // out along the inner spiral, back along the outer
+    closed_loop(b, inner, room("corridor"), kNone, 0);
+    s.player = {{-(r0 + pitch / 2 + width / 2), 0}, 90, {}};
+  } else if (kind == "comb") {
+    // Teeth 8 wide and 1,000 long, 8 apart, on a back 1,000 deep.
+    const int64_t teeth = int64_t(std::max<size_t>(n / 4, 2)), depth = 1000, length = 1000, x_end = 16 * teeth - 8;
+    std::vector<IPoint> points;
+    for (int64_t i = 0; i < teeth; ++i)
+      for (const auto& [x, y] : {std::pair{16 * i, int64_t{0}}, {16 * i, length}, {16 * i + 8, length}, {16 * i + 8, int64_t{0}}})
+        points.push_back(grid_point(double(x), double(y)));
+    points.front() = grid_point(0, double(-depth));
+    points.back() = grid_point(double(x_end), double(-depth));
+    closed_loop(b, points, room("comb"), kNone, 0);
+    s.player = {{double(x_end) / 2, -double(depth) / 2}, 90, {}};
+  } else {  // rings
+    const size_t rings = std::max<size_t>(2, size_t(std::lround(std::sqrt(double(n)) / 32)));
+    std::vector<int> sectors;
+    for (size_t i = 0; i < rings; ++i) sectors.push_back(b.sector("ring" + std::to_string(i), 8.0 * double(i), 256, 160, flat, flat));
+    for (size_t i = 0; i < rings; ++i) {
+      const double radius = r * double(i + 1) / double(rings);
+      closed_loop(b, ellipse_points(n / rings, radius, radius), sectors[i], i + 1 < rings ? sectors[i + 1] : kNone, int(i % 2));
+    }
+  }
+  return std::move(s);
 }
 
 std::string generate_grid_text(const GridOptions& o) {

@@ -28,6 +28,17 @@ Source generate_soup(const GenerateOptions& options);
 // doorways through 16-unit-thick walls.
 Source generate_rooms(const GenerateOptions& options);
 
+// Rooms and figures a compiler splitting only along walls struggles with, `walls` walls
+// each, every vertex rounded to the 1/256 grid: "circle" (radius 1,000,000 at 100,000
+// walls, scaled as walls squared: rounding bends a few vertices inward), "ellipse"
+// (the same, 2.5 times wider than high), "jitter" (a circle whose vertices move in or out
+// by up to a sixteenth of a wall), "star" (spikes half the radius deep), "fan" (plain
+// segments meeting at the centre), "spiral" (a corridor winding round about sqrt(walls)
+// / 16 times), "comb" (a room with a tooth for every four walls), "rings" (nested rooms
+// of sqrt(walls) / 32 circles, each a sector). The player starts inside.
+Source generate_shape(const std::string& kind, const GenerateOptions& options);
+const std::vector<std::string>& shape_kinds();
+
 // A .grid tile map as text. kind "maze": a labyrinth of corridors with rooms carved
 // in and some loops; kind "caves": random solid tiles (30%); kind "arena": one open
 // hall with sparse pillars (1%), for long sight lines. cols and rows at least 8.

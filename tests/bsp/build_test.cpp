@@ -5,6 +5,7 @@
 #include "engine/bsp/build.h"
 #include "engine/bsp/check.h"
 #include "engine/level/io.h"
+#include "engine/map/generate.h"
 #include "tests/support/support.h"
 
 namespace p3d::bsp {
@@ -185,6 +186,46 @@ TEST(Build, FreeSplitsCutLessThanRandomAlone) {
     EXPECT_GT(free_stats.free_splits, 0u);
     EXPECT_LT(free_stats.fragments, random_stats.fragments) << "seed " << seed;
   }
+}
+
+map::Source shape(const std::string& kind, size_t walls, uint64_t seed = 3) {
+  map::GenerateOptions o;
+  o.walls = walls;
+  o.seed = seed;
+  o.textures = map::builtin_textures();
+  return map::generate_shape(kind, o);
+}
+
+// mapgen's shapes on the 1/256 grid: nearly convex rooms (every wall's line peels a
+// few walls off: before free splitters, a chain 153 deep for the circle of 4,000 walls,
+// 506 for the ellipse, 411 for the spiral, 1,988 for the rings' arcs of walls between
+// two sectors), stars, fans, combs. Sound trees, and shallow.
+TEST(Build, HostileShapesStaySoundAndShallow) {
+  for (const std::string& kind : map::shape_kinds()) {
+    Stats stats;
+    const level::Level level = build(shape(kind, 4000), Options{}, &stats);
+    expect_sound(level, kind);
+    expect_point_location(level, 5, kind);
+    EXPECT_LE(stats.max_depth, 96u) << kind;  // log2(4000) = 12; the chains were 150 to 2,000 deep
+    EXPECT_LE(stats.mean_depth, 48.0) << kind;
+    if (kind == "circle" || kind == "ellipse" || kind == "spiral" || kind == "rings") EXPECT_GT(stats.free_lines, 0u) << kind;
+  }
+}
+
+// Free splitters' lines survive the file, and the same input gives the same bytes.
+TEST(Build, FreeLinesRoundTripAndRepeat) {
+  const map::Source src = shape("ellipse", 3000);
+  const level::Level level = test::compile(src);
+  ASSERT_FALSE(level.free_lines.empty());
+  const std::vector<uint8_t> bytes = level::encode(level);
+  EXPECT_EQ(bytes, level::encode(test::compile(src)));
+  const level::Level back = level::decode(bytes, "ellipse");
+  ASSERT_EQ(back.free_lines.size(), level.free_lines.size());
+  for (size_t i = 0; i < back.free_lines.size(); ++i) {
+    EXPECT_EQ(back.free_lines[i].p1, level.free_lines[i].p1);
+    EXPECT_EQ(back.free_lines[i].p2, level.free_lines[i].p2);
+  }
+  EXPECT_TRUE(check_invariants(back).empty());
 }
 
 TEST(Build, PlayerOutsideEverySectorIsAnError) {

@@ -196,6 +196,12 @@ TEST_F(LevelIo, RejectsInconsistentStructure) {
       {"fragment in a node and a leaf", [](Level& l) { held_leaf(l).first_fragment = l.nodes[0].first_fragment; },
        "belongs to two nodes or leaves"},
       {"fragment in none", [](Level& l) { held_leaf(l).fragment_count = 0; }, "belongs to no node or leaf"},
+      {"free line through one point", [](Level& l) { l.free_lines.push_back({{256, 0}, {256, 0}}); },
+       "x.bsp: section LINE, record 0: free line through one point"},
+      {"free line range", [](Level& l) { l.free_lines.push_back({{0, 0}, {int64_t(1) << 40, 0}}); },
+       "x.bsp: section LINE, record 0: free line coordinate out of range"},
+      {"splitter line", [](Level& l) { l.nodes[0].splitter = uint32_t(l.walls.size()); },
+       "node splitter index"},
   };
   for (const Case& c : cases) {
     Level copy = *level_;

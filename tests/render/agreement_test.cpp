@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "engine/bsp/load.h"
+#include "engine/map/generate.h"
 #include "engine/map/source.h"
 #include "engine/render/renderer.h"
 #include "tests/support/support.h"
@@ -83,6 +84,27 @@ TEST(Agreement, RandomRooms) {
   }
   expect_agreement(t, "rooms");
   EXPECT_GT(t.early_exits, t.frames / 2);
+}
+
+// mapgen's shapes, whose trees split along free lines (lines holding no wall).
+TEST(Agreement, HostileShapes) {
+  for (const std::string& kind : map::shape_kinds()) {
+    map::GenerateOptions o;
+    o.walls = 1500;
+    o.textures = map::builtin_textures();
+    const level::Level level = test::compile(map::generate_shape(kind, o));
+    Tally t;
+    run_cameras(level, 40, 12, t, kind);
+    expect_agreement(t, kind);
+    Rng rng(41);  // the painter, walking the same tree back to front, paints the same pictures
+    for (int i = 0; i < 6; ++i) {
+      const Camera c = test::random_camera(level, rng);
+      Frame a(64, 40), b(64, 40);
+      make_renderer("reference")->render(level, c, a);
+      make_renderer("painter")->render(level, c, b);
+      EXPECT_EQ(a.pixels, b.pixels) << kind << " camera " << i;
+    }
+  }
 }
 
 TEST(Agreement, DefaultMapEveryStrategy) {

@@ -301,6 +301,102 @@ TEST(Import, UnclosedSectorsGiveEveryPointItsLeafsSector) {
   }
 }
 
+// Debian's wadc example `bsp` (wadccli --seed=69 bsp.wl): rooms in the cells of a
+// partition whose outlines, drawn as lines of no sector, wadc gives sector 0, which is
+// left open (an open end at (-2048, -1575)); they face out of their cells. A camera in
+// that open area sees the one room wall facing it and nothing else: Chocolate Doom,
+// with ZDBSP's nodes, from (-2015, -784) at 120.9375 degrees (a start facing 135
+// degrees, then one tic's turn of -10 << 8), 320 wide, draws LINEDEF 79 in columns 257
+// to 319 and no wall in the others (its floor and ceiling there are not drawn at all).
+TestMap wadc_bsp_example() {
+  const int floors[] = {-16, -16, -16, -16, -24, -24, -24, -24, -32, -32, -32, -32, -32, -32, -32, -32};
+  // LINEDEFS in order: x1, y1, x2, y2, front sector, back sector (-1: one-sided).
+  const int lines[][6] = {
+      {0, -641, 0, 0, 0, -1}, {-449, -2048, 0, -2048, 0, -1}, {-2048, -1575, -2048, -2048, 0, -1}, {-1625, 0, -2048, 0, 0, -1},
+      {-441, 0, -909, 0, 0, -1}, {-1460, -2048, -909, -2048, 0, -1}, {-909, -2009, -909, -2048, 0, -1}, {-909, 0, -909, -641, 0, -1},
+      {0, -2048, 0, -641, 0, -1}, {-67, -641, 0, -641, 0, -1}, {-441, -641, -449, -641, 0, 2}, {-909, -641, -728, -641, 0, -1},
+      {-728, -641, -728, -269, 0, -1}, {-728, -269, -441, -269, 0, -1}, {-441, -269, -441, -641, 0, -1}, {0, 0, -162, 0, 0, -1},
+      {-441, 0, -162, 0, 1, -1}, {-162, 0, -162, -135, 1, -1}, {-162, -135, -441, -135, 1, -1}, {-441, -135, -441, 0, 1, -1},
+      {-441, -641, -67, -641, 2, -1}, {-449, -641, -728, -641, 0, -1}, {-67, -641, -67, -884, 2, -1}, {-67, -884, -449, -884, 2, -1},
+      {-449, -884, -449, -719, 2, 3}, {-449, -2048, -707, -2048, 3, -1}, {-909, -2048, -707, -2048, 0, -1}, {-707, -2048, -707, -719, 3, -1},
+      {-707, -719, -449, -719, 3, -1}, {-449, -884, -449, -2048, 3, -1}, {-449, -719, -449, -641, 2, -1}, {-909, -641, -909, -1160, 0, -1},
+      {-2048, -604, -2048, -1160, 0, -1}, {-2036, -1160, -2048, -1160, 0, -1}, {-1266, -1160, -1460, -1160, 0, -1}, {-2048, -2048, -1460, -2048, 0, -1},
+      {-1460, -1878, -1460, -2048, 0, -1}, {-1460, -1602, -1460, -1575, 4, 6}, {-1460, -1160, -1460, -1215, 0, -1}, {-1460, -1215, -1238, -1215, 4, -1},
+      {-1238, -1215, -1238, -1602, 4, -1}, {-1238, -1602, -1340, -1602, 4, 5}, {-909, -1602, -909, -2009, 5, -1}, {-909, -1160, -909, -1602, 0, -1},
+      {-909, -2009, -1340, -2009, 5, -1}, {-1340, -2009, -1340, -1602, 5, -1}, {-1238, -1602, -909, -1602, 5, -1}, {-1340, -1602, -1460, -1602, 4, -1},
+      {-1460, -1602, -1460, -1878, 6, -1}, {-1460, -1575, -1460, -1215, 4, -1}, {-1460, -1878, -1908, -1878, 6, -1}, {-1908, -1878, -1908, -1575, 6, -1},
+      {-1908, -1575, -1907, -1575, 6, 7}, {-2048, -1575, -2048, -1188, 7, -1}, {-2048, -1160, -2048, -1188, 0, -1}, {-2048, -1188, -1907, -1188, 7, -1},
+      {-1907, -1188, -1907, -1575, 7, -1}, {-1908, -1575, -2048, -1575, 7, -1}, {-1907, -1575, -1460, -1575, 6, -1}, {-1460, -1160, -1531, -1160, 0, -1},
+      {-1108, 0, -1531, 0, 0, -1}, {-1531, 0, -1531, -495, 11, -1}, {-1531, -641, -1531, -604, 0, -1}, {-2048, 0, -2048, -604, 0, -1},
+      {-2014, -604, -2048, -604, 0, -1}, {-1531, -604, -1574, -604, 0, -1}, {-1866, -604, -1625, -604, 8, 10}, {-1574, -604, -1574, -1114, 8, -1},
+      {-1574, -1114, -1866, -1114, 8, -1}, {-1866, -1114, -1866, -861, 8, 9}, {-1531, -1160, -1866, -1160, 0, -1}, {-1866, -1160, -2036, -1160, 9, -1},
+      {-2036, -1160, -2036, -861, 9, -1}, {-2036, -861, -1866, -861, 9, -1}, {-1866, -1114, -1866, -1160, 9, -1}, {-1866, -861, -1866, -604, 8, -1},
+      {-1866, -604, -2014, -604, 10, -1}, {-1625, -604, -1574, -604, 8, -1}, {-2014, -604, -2014, -461, 10, -1}, {-2014, -461, -1625, -461, 10, -1},
+      {-1625, -461, -1625, -495, 10, 11}, {-1625, 0, -1531, 0, 11, -1}, {-1531, -604, -1531, -495, 0, -1}, {-1531, -495, -1625, -495, 11, -1},
+      {-1625, -461, -1625, 0, 11, -1}, {-1625, -495, -1625, -604, 10, -1}, {-1531, -1160, -1531, -641, 0, -1}, {-974, -641, -909, -641, 0, -1},
+      {-1108, -641, -1137, -641, 12, 14}, {-1531, -641, -1512, -641, 0, -1}, {-1512, -641, -1512, -512, 12, -1}, {-1512, -512, -1108, -512, 12, -1},
+      {-1108, -512, -1108, -641, 12, -1}, {-909, 0, -959, 0, 0, -1}, {-1108, 0, -959, 0, 13, -1}, {-959, 0, -959, -464, 13, -1},
+      {-959, -464, -1108, -464, 13, -1}, {-1108, -464, -1108, 0, 13, -1}, {-1108, -641, -974, -641, 14, -1}, {-1137, -641, -1512, -641, 12, -1},
+      {-974, -641, -974, -974, 14, -1}, {-974, -974, -1137, -974, 14, -1}, {-1137, -974, -1137, -649, 14, 15}, {-909, -1160, -1137, -1160, 0, -1},
+      {-1137, -1160, -1266, -1160, 15, -1}, {-1266, -1160, -1266, -649, 15, -1}, {-1266, -649, -1137, -649, 15, -1}, {-1137, -974, -1137, -1160, 15, -1},
+      {-1137, -649, -1137, -641, 14, -1},
+  };
+  TestMap m;
+  for (const int floor : floors) {
+    TestMap::Sector s;
+    s.floor = floor;
+    m.sectors.push_back(s);
+  }
+  for (const auto& l : lines) {
+    TestMap::Side front;
+    front.sector = l[4];
+    front.upper = front.lower = "WALL";
+    if (l[5] < 0) {
+      front.middle = "WALL";
+      m.lines.push_back({m.add_vertex(l[0], l[1]), m.add_vertex(l[2], l[3]), TestMap::kBlocking, 0, 0, m.add_side(front)});
+      continue;
+    }
+    TestMap::Side back = front;
+    back.sector = l[5];
+    m.lines.push_back({m.add_vertex(l[0], l[1]), m.add_vertex(l[2], l[3]), TestMap::kTwoSided, 0, 0, m.add_side(front), m.add_side(back)});
+  }
+  m.things.push_back({-32, -32, 270});
+  return m;
+}
+
+TEST(Import, AnOpenAreaSeesTheWallsDoomDraws) {
+  const Built b = build(wadc_bsp_example());
+  EXPECT_TRUE(has_warning(b, "SECTORS #0: warning: not closed: its boundary has an open end at (-2048, -1575)"));
+  const level::Level& l = b.level;
+  EXPECT_TRUE(bsp::check_invariants(l).empty());
+  {
+    const render::Camera camera = render::camera_at(l, {-2015, -784}, 120.9375);
+    render::Frame frame(320, 200);
+    render::Probe probe;
+    probe.want_columns = true;
+    render::make_renderer("reference")->render(l, camera, frame, &probe);
+    ASSERT_EQ(probe.columns.size(), 320u);
+    for (int x = 0; x < 320; ++x) {
+      const int32_t wall = probe.columns[size_t(x)].wall;
+      if (x < 257) EXPECT_EQ(wall, level::kNone) << "column " << x;
+      else EXPECT_TRUE(wall != level::kNone && l.walls[size_t(wall)].source == 79) << "column " << x;
+    }
+  }
+  // The view the issue names, (-2014.75, -784.5) at 121.3 degrees: every renderer as the reference.
+  for (const double angle : {121.3, 135.0, 90.0, 200.0}) {
+    const render::Camera camera = render::camera_at(l, {-2014.75, -784.5}, angle);
+    render::Frame expected(160, 100);
+    render::make_renderer("reference")->render(l, camera, expected);
+    for (const std::string& name : render::renderer_names()) {
+      const auto renderer = render::make_renderer(name);
+      if (!renderer->supports(l)) continue;
+      render::Frame frame(160, 100);
+      renderer->render(l, camera, frame);
+      EXPECT_EQ(frame.pixels, expected.pixels) << name << " angle " << angle;
+    }
+  }
+}
+
 TEST(Import, ZeroLengthLinesAreDropped) {
   TestMap m = two_rooms();
   m.lines.push_back({0, 0, 1, 0, 0, 0});
