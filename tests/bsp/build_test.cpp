@@ -208,7 +208,9 @@ TEST(Build, HostileShapesStaySoundAndShallow) {
     expect_point_location(level, 5, kind);
     EXPECT_LE(stats.max_depth, 96u) << kind;  // log2(4000) = 12; the chains were 150 to 2,000 deep
     EXPECT_LE(stats.mean_depth, 48.0) << kind;
-    if (kind == "circle" || kind == "ellipse" || kind == "spiral" || kind == "rings") EXPECT_GT(stats.free_lines, 0u) << kind;
+    if (kind == "circle" || kind == "ellipse" || kind == "spiral" || kind == "rings") {
+      EXPECT_GT(stats.free_lines, 0u) << kind;
+    }
   }
 }
 
