@@ -61,7 +61,7 @@ DemoBytes demo_bytes(const std::string& name, const bsp::LevelSource& source) {
 // alone, in a single-player game), said once.
 void say_what_is_not_played(const play::DoomDemo& d, const std::string& what) {
   std::string missing;
-  for (const auto& [on, name] : {std::pair{d.deathmatch, "deathmatch"}, {d.player_count() > 1, "other players"}})
+  for (const auto& [on, name] : {std::pair{d.deathmatch != 0, "deathmatch"}, {d.player_count() > 1, "other players"}})
     if (on) missing += std::string(missing.empty() ? "" : ", ") + name;
   if (!missing.empty()) std::fprintf(stderr, "pseudo3d: %s: not simulated yet: %s\n", what.c_str(), missing.c_str());
   if (d.truncated) std::fprintf(stderr, "pseudo3d: %s: ends without Doom's end marker (played as far as it goes)\n", what.c_str());
