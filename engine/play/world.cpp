@@ -126,6 +126,7 @@ void World::tick_players(const std::array<TicCmd, kMaxPlayers>& cmds) {
   }
   run_thinkers();
   update_specials();
+  if (level_timer_ && !--level_timer_) exit_level(false);  // P_UpdateSpecials: a deathmatch's time is up
   respawn_specials();
   ++level_time_;
   stale_ = true;
@@ -368,7 +369,8 @@ void World::show() const {
     // A hanging picture hangs from the ceiling as it stands now; anything else stands at its z.
     shown.z = level_.sprite_frames[size_t(shown.frame)].hanging ? level::resting_z(level_, state_, shown.frame, shown.sector)
                                                                : to_double(mo.z);
-    shown.flags = (mo.flags & kShadow) ? level::kShownShadow : 0;
+    shown.flags = uint8_t(((mo.flags & kShadow) ? level::kShownShadow : 0) |
+                          (((mo.flags & kTranslation) >> kTranslationShift) << level::kShownTranslationShift));
     state_.things.push_back(shown);
   }
   for (int32_t i : static_things_) {
