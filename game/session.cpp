@@ -162,6 +162,7 @@ void Session::tic(const play::DemoTic& tic) {
   if (netgame || !others_.empty()) {
     std::array<play::TicCmd, play::kMaxPlayers> cmds{};
     if (others_at_ < others_.size()) cmds = others_[others_at_++];
+    if (recording_on_) recorded_others_.push_back(cmds);
     cmds[size_t(world_->options().console_player)] = played.cmd;
     world_->tick_players(cmds);
   } else {
@@ -418,6 +419,21 @@ std::vector<uint8_t> Session::encode_recording(const std::filesystem::path& path
     throw Error(path.string() + ": a Doom demo (.lmp) records a WAD's MAPxx or ExMy map, not " + name_);
   play::DoomDemo demo = play::doom_from_demo(recording_, std::max(episode, 1), number, long_tics_);
   demo.deathmatch = flags_.deathmatch;  // a game of one (-deathmatch alone) plays as deathmatch in Doom too
+  if (!recorded_others_.empty()) {  // a netgame: every player's command, each tic, in player order
+    for (int p = 0; p < play::kMaxPlayers; ++p) demo.players[size_t(p)] = flags_.players[size_t(p)];
+    demo.console_player = flags_.console_player;
+    const std::vector<play::DoomTic> console = std::move(demo.commands);
+    demo.commands.clear();
+    for (size_t t = 0; t < console.size() && t < recorded_others_.size(); ++t)
+      for (int p = 0; p < play::kMaxPlayers; ++p) {
+        if (!flags_.players[size_t(p)]) continue;
+        const play::TicCmd& c = recorded_others_[t][size_t(p)];
+        demo.commands.push_back(p == flags_.console_player
+                                    ? console[t]
+                                    : play::DoomTic{c.forward, c.side, long_tics_ ? c.turn : play::doom_demo_turn(c.turn),
+                                                    c.buttons});
+      }
+  }
   return play::encode_doom_demo(demo);
 }
 
@@ -446,6 +462,7 @@ void Session::start_recording(bool doom_turns, bool long_tics) {
   doom_turns_ = doom_turns && !long_tics;
   long_tics_ = long_tics;
   recording_ = {};
+  recorded_others_.clear();
   recording_.level_fingerprint = play::fingerprint(*level_);
   recording_.skill = skill_;
   recording_.fast = flags_.fast;

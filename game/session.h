@@ -258,6 +258,7 @@ class Session {
   std::optional<FileWatch> watch_;
   std::vector<std::array<play::TicCmd, play::kMaxPlayers>> others_;  // play_other_players'
   size_t others_at_ = 0;
+  std::vector<std::array<play::TicCmd, play::kMaxPlayers>> recorded_others_;  // while recording a netgame
 };
 
 }  // namespace p3d::game
