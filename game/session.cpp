@@ -454,6 +454,13 @@ play::Tally Session::tally() const {
   t.secrets = p.secret_count;
   t.total_secrets = world_->total_secrets();
   t.seconds = world_->level_time() / kTicRate;
+  const play::GameOptions& o = world_->options();
+  t.deathmatch = o.deathmatch != play::Deathmatch::kNone;
+  t.me = o.console_player;
+  for (int i = 0; i < play::kMaxPlayers; ++i) {
+    t.in_game[size_t(i)] = o.in_game[size_t(i)];
+    t.frags[size_t(i)] = world_->player(i).frags;
+  }
   return t;
 }
 

@@ -9,7 +9,10 @@
 #include <set>
 
 #include "engine/bsp/load.h"
+#include "engine/play/intermission.h"
 #include "engine/play/world.h"
+#include "engine/wad/art.h"
+#include "engine/wad/picture.h"
 #include "engine/render/translation.h"
 #include "engine/util/error.h"
 #include "tests/support/support.h"
@@ -215,6 +218,49 @@ TEST(Multiplayer, TheTimerEndsADeathmatchLevel) {
   EXPECT_EQ(g.world->exit(), ExitKind::kNormal);
   Netgame coop(2, Deathmatch::kNone, 1);  // Doom's timer is for deathmatch alone
   EXPECT_EQ(coop.world->time_left(), 0);
+}
+
+// The intermission after a deathmatch level: Doom's frag table (WI_drawDeathmatchStats).
+TEST(Multiplayer, TheDeathmatchIntermissionShowsTheFragTable) {
+  const wad::Stack wads = bsp::read_wads({test::freedoom_path("freedm.wad")});
+  const std::vector<uint32_t> palette = wad::Art(wads).palette();
+  const auto art = IntermissionArt::load(wads, 0, 1);
+  ASSERT_TRUE(art.has_value());
+  Tally t;
+  t.deathmatch = true;
+  t.in_game = {true, true, false, true};
+  t.me = 1;
+  t.frags[0] = {0, 3, 0, 1};
+  t.frags[1] = {2, 1, 0, 0};  // one death by its own hand
+  t.frags[3] = {0, 0, 0, 0};
+  EXPECT_EQ(frag_sum(t, 0), 4);
+  EXPECT_EQ(frag_sum(t, 1), 1);
+  EXPECT_EQ(frag_sum(t, 3), 0);
+  t.frags[2] = {50, 50, 0, 50};  // a player not in the game counts for no one
+  EXPECT_EQ(frag_sum(t, 0), 4);
+  image::Image frame(320, 200);
+  art->draw(t, frame, palette);
+  // Whether a picture's opaque texels show at Doom's place (x, y).
+  auto shows = [&](const std::string& lump, int x, int y) {
+    const wad::IndexedImage pic = wad::decode_picture(wads.find(lump)->bytes, lump);
+    for (int c = 0; c < pic.width; ++c)
+      for (int r = 0; r < pic.height; ++r)
+        if (pic.opaque[pic.at(c, r)] &&
+            frame.at(x - pic.left_offset + c, y - pic.top_offset + r) != palette[pic.indices[pic.at(c, r)]])
+          return false;
+    return true;
+  };
+  auto width = [&](const std::string& lump) { return wad::decode_picture(wads.find(lump)->bytes, lump).width; };
+  EXPECT_TRUE(shows("WIKILRS", 10, 100));
+  EXPECT_TRUE(shows("WIVCTMS", 5, 50));
+  EXPECT_TRUE(shows("WIMSTT", 269 - width("WIMSTT") / 2, 68 - 33 + 10));
+  EXPECT_TRUE(shows("STPB0", 42 - width("STPB0") / 2, 68)) << "player 1's row";
+  EXPECT_TRUE(shows("STPB3", 42 + 4 * 40 - width("STPB3") / 2, 68 - 33)) << "player 4's column";
+  EXPECT_FALSE(shows("STPB2", 42 - width("STPB2") / 2, 68 + 2 * 33)) << "player 3 is not in the game";
+  EXPECT_TRUE(shows("STFST01", 42 - width("STPB1") / 2, 68 + 33)) << "the console player's row: its face";
+  const int digit = width("WINUM0");
+  EXPECT_TRUE(shows("WINUM3", 42 + 2 * 40 + digit - digit, 68 + 10)) << "player 1 killed player 2 three times";
+  EXPECT_TRUE(shows("WINUM4", 269 + digit - digit, 68 + 10)) << "player 1's total";
 }
 
 // Other players are drawn in their colours: the World shows each player's colour bits,
