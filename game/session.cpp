@@ -460,7 +460,11 @@ play::Tally Session::tally() const {
   for (int i = 0; i < play::kMaxPlayers; ++i) {
     t.in_game[size_t(i)] = o.in_game[size_t(i)];
     t.frags[size_t(i)] = world_->player(i).frags;
+    t.player_kills[size_t(i)] = world_->player(i).kill_count;
+    t.player_items[size_t(i)] = world_->player(i).inv.items;
+    t.player_secrets[size_t(i)] = world_->player(i).secret_count;
   }
+  t.netgame = o.netgame;
   return t;
 }
 

@@ -14,6 +14,7 @@ constexpr int kNoNumber = 1994;
 // Doom's deathmatch table (wi_stuff.c's DM_*, WI_SPACINGY).
 constexpr int kMatrixX = 42, kMatrixY = 68, kSpacingX = 40, kSpacingY = 33, kTotalsX = 269;
 constexpr int kKillersX = 10, kKillersY = 100, kVictimsX = 5, kVictimsY = 50;
+constexpr int kNetStatsY = 50, kNetSpacingX = 64;  // NG_STATSY, NG_SPACINGX
 
 std::optional<wad::IndexedImage> picture(const wad::Stack& wads, const std::string& name) {
   const wad::Lump* lump = wads.find(name);
@@ -77,6 +78,8 @@ std::optional<IntermissionArt> IntermissionArt::load(const wad::Stack& wads, int
   a.total_ = picture(wads, "WIMSTT");
   a.star_ = picture(wads, "STFST01");
   a.dead_star_ = picture(wads, "STFDEAD0");
+  a.netgame_secret_ = picture(wads, "WIOSTS");
+  a.netgame_frags_ = picture(wads, "WIFRGS");
   for (int i = 0; i < 4; ++i) a.player_faces_[size_t(i)] = picture(wads, "STPB" + std::to_string(i));
   if (!a.background_ && !a.digits_[0]) return std::nullopt;
   const auto pars = dehacked_pars(wads);  // the IWAD's own, as Chocolate Doom reads Freedoom's
@@ -154,6 +157,31 @@ void IntermissionArt::draw(const Tally& t, image::Image& frame, const std::vecto
       for (int j = 0, x = kMatrixX + kSpacingX; j < 4; ++j, x += kSpacingX)
         if (t.in_game[size_t(j)]) number(x + digit_width, row, t.frags[size_t(i)][size_t(j)], 2);
       number(kTotalsX + digit_width, row, frag_sum(t, i), 2);
+    }
+    return;
+  }
+  if (t.netgame) {  // WI_drawNetgameStats: a row a player, with its colour and the counts
+    bool frags = false;  // Doom's dofrags: shown when anyone's total is not 0
+    for (int i = 0; i < 4; ++i) frags |= t.in_game[size_t(i)] && frag_sum(t, i) != 0;
+    const int stats_x = 32 + (star_ ? star_->width / 2 : 0) + (frags ? 0 : 32);
+    auto right = [&](const Picture& pic, int x) { put(pic, x - (pic ? pic->width : 0), kNetStatsY); };
+    right(kills_, stats_x + kNetSpacingX);
+    right(items_, stats_x + 2 * kNetSpacingX);
+    right(netgame_secret_, stats_x + 3 * kNetSpacingX);
+    if (frags) right(netgame_frags_, stats_x + 4 * kNetSpacingX);
+    const int percent_width = percent_ ? percent_->width : 0;
+    for (int i = 0, row = kNetStatsY + (kills_ ? kills_->height : 0); i < 4; ++i) {
+      if (!t.in_game[size_t(i)]) continue;
+      const Picture& face = player_faces_[size_t(i)];
+      const int face_x = stats_x - (face ? face->width : 0);
+      put(face, face_x, row);
+      if (i == t.me) put(star_, face_x, row);
+      int x = stats_x + kNetSpacingX;
+      percentage(x - percent_width, row + 10, percent(t.player_kills[size_t(i)], t.total_kills));
+      percentage((x += kNetSpacingX) - percent_width, row + 10, percent(t.player_items[size_t(i)], t.total_items));
+      percentage((x += kNetSpacingX) - percent_width, row + 10, percent(t.player_secrets[size_t(i)], t.total_secrets));
+      if (frags) number(x + kNetSpacingX, row + 10, frag_sum(t, i), -1);
+      row += kSpacingY;
     }
     return;
   }

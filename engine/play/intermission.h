@@ -27,6 +27,10 @@ struct Tally {
   std::array<bool, 4> in_game{true, false, false, false};
   int me = 0;
   std::array<std::array<int, 4>, 4> frags{};
+  // A co-op netgame's table (Doom's WI_drawNetgameStats, when `netgame` and not
+  // deathmatch): each player's kills, items and secrets, and frags if anyone has any.
+  bool netgame = false;
+  std::array<int, 4> player_kills{}, player_items{}, player_secrets{};
 };
 // A player's total on the frag table: the others killed less its own deaths by its own
 // hand, of the players in the game, between -99 and 99 (Doom's WI_fragSum).
@@ -46,6 +50,7 @@ class IntermissionArt {
   using Picture = std::optional<wad::IndexedImage>;
   Picture background_, level_name_, finished_, kills_, items_, secret_, time_, par_label_, percent_, colon_, minus_, sucks_;
   Picture killers_, victims_, total_, star_, dead_star_;  // the deathmatch table's
+  Picture netgame_secret_, netgame_frags_;               // the co-op table's WIOSTS and WIFRGS
   std::array<Picture, 4> player_faces_;                  // STPB0..3: each player's colour
   std::vector<Picture> digits_;
   int par_ = -1;  // seconds, or -1: none shown

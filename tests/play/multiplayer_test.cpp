@@ -263,6 +263,45 @@ TEST(Multiplayer, TheDeathmatchIntermissionShowsTheFragTable) {
   EXPECT_TRUE(shows("WINUM4", 269 + digit - digit, 68 + 10)) << "player 1's total";
 }
 
+// The intermission after a co-op level: each player's counts (WI_drawNetgameStats).
+TEST(Multiplayer, TheCoopIntermissionShowsEachPlayersCounts) {
+  const wad::Stack wads = bsp::read_wads({test::freedoom_path("freedm.wad")});
+  const std::vector<uint32_t> palette = wad::Art(wads).palette();
+  const auto art = IntermissionArt::load(wads, 0, 1);
+  ASSERT_TRUE(art.has_value());
+  auto width = [&](const std::string& lump) { return wad::decode_picture(wads.find(lump)->bytes, lump).width; };
+  auto height = [&](const std::string& lump) { return wad::decode_picture(wads.find(lump)->bytes, lump).height; };
+  auto shows = [&](const image::Image& frame, const std::string& lump, int x, int y) {
+    const wad::IndexedImage pic = wad::decode_picture(wads.find(lump)->bytes, lump);
+    for (int c = 0; c < pic.width; ++c)
+      for (int r = 0; r < pic.height; ++r)
+        if (pic.opaque[pic.at(c, r)] &&
+            frame.at(x - pic.left_offset + c, y - pic.top_offset + r) != palette[pic.indices[pic.at(c, r)]])
+          return false;
+    return true;
+  };
+  Tally t;
+  t.netgame = true;
+  t.in_game = {true, true, false, false};
+  t.total_kills = 10;
+  t.player_kills = {5, 10, 0, 0};  // 50% and 100%
+  image::Image frame(320, 200);
+  art->draw(t, frame, palette);
+  const int x = 32 + width("STFST01") / 2 + 32;  // no frags: Doom's table moves right
+  const int first_row = 50 + height("WIOSTK");
+  EXPECT_TRUE(shows(frame, "WIOSTK", x + 64 - width("WIOSTK"), 50));
+  EXPECT_TRUE(shows(frame, "WIOSTS", x + 3 * 64 - width("WIOSTS"), 50));
+  EXPECT_FALSE(shows(frame, "WIFRGS", x + 4 * 64 - width("WIFRGS"), 50)) << "nobody has a frag";
+  EXPECT_TRUE(shows(frame, "STPB1", x - width("STPB1"), first_row + 33)) << "player 2's row";
+  const int percent_x = x + 64 - width("WIPCNT"), digit = width("WINUM0");
+  EXPECT_TRUE(shows(frame, "WINUM5", percent_x - 2 * digit, first_row + 10)) << "player 1: 50%";
+  EXPECT_TRUE(shows(frame, "WINUM1", percent_x - 3 * digit, first_row + 33 + 10)) << "player 2: 100%";
+  t.frags[1][0] = 1;  // a frag: the column shows, the table moves left
+  image::Image with_frags(320, 200);
+  art->draw(t, with_frags, palette);
+  EXPECT_TRUE(shows(with_frags, "WIFRGS", x - 32 + 4 * 64 - width("WIFRGS"), 50));
+}
+
 // Other players are drawn in their colours: the World shows each player's colour bits,
 // and the renderers draw the green ramp through Doom's translation (r_draw.c).
 TEST(Multiplayer, OtherPlayersShowInTheirColours) {
