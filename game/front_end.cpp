@@ -124,12 +124,11 @@ bool FrontEnd::start_demo(const std::string& lump) {
   if (!found) return false;
   try {
     const play::DoomDemo d = play::decode_doom_demo(found->bytes, lump);
-    if (d.deathmatch || d.player_count() != 1) return false;  // not played here: one player only
     bsp::LevelSource source = *wads_;
     source.map = d.map_name(mode_ == front::GameMode::kCommercial);
-    GameFlags flags{d.fast, d.respawn, d.no_monsters};
-    auto session = std::make_unique<Session>(source, d.skill, flags);
+    auto session = std::make_unique<Session>(source, d.skill, flags_of(d));
     demo_ = play::demo_from_doom(d, session->level()).tics;
+    if (d.player_count() > 1) session->play_other_players(d);  // a netgame's demo: every player
     change_screen([&] {
       session_ = std::move(session);
       demo_tic_ = 0;

@@ -57,13 +57,8 @@ DemoBytes demo_bytes(const std::string& name, const bsp::LevelSource& source) {
   return {{found->bytes.begin(), found->bytes.end()}, source.wads.back().filename().string() + ":" + lump};
 }
 
-// What a Doom demo asks for that the game does not play (it plays the console player
-// alone, in a single-player game), said once.
+// What a Doom demo holds that is not played as recorded, said once.
 void say_what_is_not_played(const play::DoomDemo& d, const std::string& what) {
-  std::string missing;
-  for (const auto& [on, name] : {std::pair{d.deathmatch, "deathmatch"}, {d.player_count() > 1, "other players"}})
-    if (on) missing += std::string(missing.empty() ? "" : ", ") + name;
-  if (!missing.empty()) std::fprintf(stderr, "pseudo3d: %s: not simulated yet: %s\n", what.c_str(), missing.c_str());
   if (d.truncated) std::fprintf(stderr, "pseudo3d: %s: ends without Doom's end marker (played as far as it goes)\n", what.c_str());
 }
 
@@ -149,6 +144,12 @@ int main(int argc, char** argv) {
   app.add_flag("--fast", flags.fast, "Doom's -fast: faster demons and monster missiles");
   app.add_flag("--respawn", flags.respawn, "Doom's -respawn: dead monsters come back (as in nightmare)");
   app.add_flag("--nomonsters", flags.no_monsters, "Doom's -nomonsters: no monsters are spawned");
+  bool deathmatch = false, altdeath = false, avg = false;
+  app.add_flag("--deathmatch", deathmatch, "Doom's -deathmatch: deathmatch starts, every key, weapons stay");
+  app.add_flag("--altdeath", altdeath, "Doom's -altdeath: deathmatch where items and weapons come back after 30 s");
+  app.add_option("--timer", flags.time_limit, "Doom's -timer: a deathmatch level ends after this many minutes")
+      ->check(CLI::Range(1, 1000000));
+  app.add_flag("--avg", avg, "Doom's -avg: a deathmatch level ends after 20 minutes (Austin Virtual Gaming)");
   app.add_option("--resolution,--size", resolution, "render at this fixed WxH (320x200 for the old look); "
                  "default: the window's size (640x400 headless)");
   app.add_option("--window", window, "window size WxH (default: the settings', 960x600)");
@@ -192,6 +193,11 @@ int main(int argc, char** argv) {
     const game::Settings saved = headless ? game::Settings{} : read_settings(settings_file);
     game::Settings settings = saved;
     if (!window.empty()) cli::parse_size(window, settings.window_width, settings.window_height, "--window");
+    if (deathmatch && altdeath) throw CLI::ValidationError("--altdeath", "use either --deathmatch or --altdeath");
+    flags.deathmatch = altdeath ? 2 : deathmatch ? 1 : 0;
+    if (avg) flags.time_limit = 20;  // Doom's -avg
+    if (flags.time_limit && !flags.deathmatch)
+      throw CLI::ValidationError("--timer", "--timer and --avg end deathmatch levels: add --deathmatch or --altdeath");
     if (fullscreen || windowed) settings.fullscreen = fullscreen;
     if (!renderer.empty()) settings.renderer = renderer;
     if (music_volume >= 0) settings.menu.music_volume = music_volume;
@@ -255,7 +261,7 @@ int main(int argc, char** argv) {
         if (!source.is_wad()) throw Error(bytes.what + ": a Doom demo plays a WAD's map: name the IWAD with --iwad");
         if (level_args.map.empty() && warp.empty()) source.map = doom_demo->map_name(has_doom2_maps(source));
         skill = doom_demo->skill;
-        flags = {doom_demo->fast, doom_demo->respawn, doom_demo->no_monsters};
+        flags = game::flags_of(*doom_demo);
         say_what_is_not_played(*doom_demo, bytes.what);
       }
     }
@@ -287,7 +293,10 @@ int main(int argc, char** argv) {
     }
 
     auto session = std::make_unique<game::Session>(source, skill, flags);
-    if (doom_demo) demo = play::demo_from_doom(*doom_demo, session->level());
+    if (doom_demo) {
+      demo = play::demo_from_doom(*doom_demo, session->level());
+      if (doom_demo->player_count() > 1) session->play_other_players(*doom_demo);
+    }
     session->fov = fov;
     session->show_status_bar = !no_status_bar;
     session->renderer_options = renderer_options;

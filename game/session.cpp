@@ -88,6 +88,13 @@ void Session::start_world(const play::Inventory* carried) {
   o.fast = flags_.fast;
   o.respawn = flags_.respawn;
   o.no_monsters = flags_.no_monsters;
+  o.deathmatch = flags_.deathmatch == 0   ? play::Deathmatch::kNone
+                 : flags_.deathmatch == 2 ? play::Deathmatch::kAltdeath
+                                          : play::Deathmatch::kDeathmatch;
+  o.time_limit = flags_.time_limit;
+  o.in_game = flags_.players;
+  o.console_player = flags_.console_player;
+  o.netgame = flags_.players[1];  // Doom's test for a demo's netgame
   o.game_tic = world_ ? world_->game_tic() : 0;  // the last level's clock goes on
   world_ = std::make_unique<play::World>(std::move(*map), *level_, o, random_, carried);
   if (all_keys_) set_keys(63);
@@ -122,9 +129,29 @@ void Session::spawn(geom::Vec2 pos, double angle) {
   tics_ = 0;
 }
 
+GameFlags flags_of(const play::DoomDemo& d) {
+  GameFlags f{d.fast, d.respawn, d.no_monsters};
+  f.deathmatch = d.deathmatch;
+  for (int p = 0; p < play::kMaxPlayers; ++p) f.players[size_t(p)] = d.players[size_t(p)];
+  f.console_player = d.console_player;
+  return f;
+}
+
+void Session::play_other_players(const play::DoomDemo& demo) {
+  others_.assign(demo.tic_count(), {});
+  for (size_t t = 0; t < demo.tic_count(); ++t)
+    for (int p = 0; p < play::kMaxPlayers; ++p)
+      if (demo.players[size_t(p)] && p != demo.console_player) {
+        const play::DoomTic d = demo.player_tic(t, p);
+        others_[t][size_t(p)] = {d.forward, d.side, d.turn, d.buttons};
+      }
+  others_at_ = 0;
+}
+
 void Session::tic(const play::DemoTic& tic) {
   if (world_->exit() != play::ExitKind::kNone) return;  // the level is over: waiting for the next one
-  if (player().state == play::PlayerState::kReborn) {  // Doom's G_DoReborn: the level from its start
+  const bool netgame = world_->options().netgame;
+  if (!netgame && player().state == play::PlayerState::kReborn) {  // Doom's G_DoReborn: the level from its start
     random_ = world_->random();
     start_world(nullptr);
   }
@@ -132,7 +159,15 @@ void Session::tic(const play::DemoTic& tic) {
   play::DemoTic played = tic;
   if (recording_on_ && doom_turns_) played.cmd.turn = play::doom_demo_turn(tic.cmd.turn);
   if (played.cheats) world_->apply_cheats(played.cheats);
-  world_->tick(played.cmd);
+  if (netgame || !others_.empty()) {
+    std::array<play::TicCmd, play::kMaxPlayers> cmds{};
+    if (others_at_ < others_.size()) cmds = others_[others_at_++];
+    if (recording_on_) recorded_others_.push_back(cmds);
+    cmds[size_t(world_->options().console_player)] = played.cmd;
+    world_->tick_players(cmds);
+  } else {
+    world_->tick(played.cmd);
+  }
   ++tics_;
   if (recording_on_) recording_.tics.push_back(played);
   after_tic();
@@ -259,7 +294,12 @@ const render::RenderStats& Session::render(render::Frame& frame, double alpha) {
   }
   if (bar > 0) {
     const play::Player& p = player();
-    status_art_->draw(p.inv.status(p.cards, face_.index()), frame, palette);
+    play::StatusValues values = p.inv.status(p.cards, face_.index());
+    const play::GameOptions& o = world_->options();
+    if (o.netgame) values.face_background = o.console_player;  // Doom's STFB: the player's colour
+    values.deathmatch = o.deathmatch != play::Deathmatch::kNone;
+    values.frags = play::frag_total(p);
+    status_art_->draw(values, frame, palette);
   }
   // Doom's message line, top left, in its own font; over a smaller view's border Doom
   // redraws the border after it while a menu is open (D_Display's R_DrawViewBorder).
@@ -377,7 +417,24 @@ std::vector<uint8_t> Session::encode_recording(const std::filesystem::path& path
   int episode = 0, number = 0;
   if (!doom_map_numbers(episode, number))
     throw Error(path.string() + ": a Doom demo (.lmp) records a WAD's MAPxx or ExMy map, not " + name_);
-  return play::encode_doom_demo(play::doom_from_demo(recording_, std::max(episode, 1), number, long_tics_));
+  play::DoomDemo demo = play::doom_from_demo(recording_, std::max(episode, 1), number, long_tics_);
+  demo.deathmatch = flags_.deathmatch;  // a game of one (-deathmatch alone) plays as deathmatch in Doom too
+  if (!recorded_others_.empty()) {  // a netgame: every player's command, each tic, in player order
+    for (int p = 0; p < play::kMaxPlayers; ++p) demo.players[size_t(p)] = flags_.players[size_t(p)];
+    demo.console_player = flags_.console_player;
+    const std::vector<play::DoomTic> console = std::move(demo.commands);
+    demo.commands.clear();
+    for (size_t t = 0; t < console.size() && t < recorded_others_.size(); ++t)
+      for (int p = 0; p < play::kMaxPlayers; ++p) {
+        if (!flags_.players[size_t(p)]) continue;
+        const play::TicCmd& c = recorded_others_[t][size_t(p)];
+        demo.commands.push_back(p == flags_.console_player
+                                    ? console[t]
+                                    : play::DoomTic{c.forward, c.side, long_tics_ ? c.turn : play::doom_demo_turn(c.turn),
+                                                    c.buttons});
+      }
+  }
+  return play::encode_doom_demo(demo);
 }
 
 bool Session::start_intermission() {
@@ -397,6 +454,17 @@ play::Tally Session::tally() const {
   t.secrets = p.secret_count;
   t.total_secrets = world_->total_secrets();
   t.seconds = world_->level_time() / kTicRate;
+  const play::GameOptions& o = world_->options();
+  t.deathmatch = o.deathmatch != play::Deathmatch::kNone;
+  t.me = o.console_player;
+  for (int i = 0; i < play::kMaxPlayers; ++i) {
+    t.in_game[size_t(i)] = o.in_game[size_t(i)];
+    t.frags[size_t(i)] = world_->player(i).frags;
+    t.player_kills[size_t(i)] = world_->player(i).kill_count;
+    t.player_items[size_t(i)] = world_->player(i).inv.items;
+    t.player_secrets[size_t(i)] = world_->player(i).secret_count;
+  }
+  t.netgame = o.netgame;
   return t;
 }
 
@@ -405,6 +473,7 @@ void Session::start_recording(bool doom_turns, bool long_tics) {
   doom_turns_ = doom_turns && !long_tics;
   long_tics_ = long_tics;
   recording_ = {};
+  recorded_others_.clear();
   recording_.level_fingerprint = play::fingerprint(*level_);
   recording_.skill = skill_;
   recording_.fast = flags_.fast;

@@ -5,6 +5,7 @@
 // headless replay; no SDL here.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -41,10 +42,17 @@ constexpr int kTicRate = 35;
 // The renderers on keys F5 to F9.
 const std::vector<std::string>& key_renderers();
 
-// Doom's -fast, -respawn and -nomonsters.
+// Doom's -fast, -respawn and -nomonsters; -deathmatch (1) or -altdeath (2) with
+// -timer's minutes (-avg: 20); who plays (a demo's players and console player; a
+// game played here has player 1 alone).
 struct GameFlags {
   bool fast = false, respawn = false, no_monsters = false;
+  int deathmatch = 0, time_limit = 0;
+  std::array<bool, play::kMaxPlayers> players{true, false, false, false};
+  int console_player = 0;
 };
+// The game a Doom demo was recorded in.
+GameFlags flags_of(const play::DoomDemo& demo);
 
 class Session {
  public:
@@ -110,6 +118,9 @@ class Session {
   };
   Pose pose() const { return pose_; }
   uint64_t tics() const { return tics_; }
+  // A netgame demo's other players: each tic() plays their next commands beside the
+  // console player's.
+  void play_other_players(const play::DoomDemo& demo);
   // The camera between the previous tic (alpha 0) and this one (alpha 1).
   render::Camera camera(double alpha) const;
 
@@ -245,6 +256,9 @@ class Session {
   bool recording_on_ = false, doom_turns_ = false, long_tics_ = false;
   play::Demo recording_;
   std::optional<FileWatch> watch_;
+  std::vector<std::array<play::TicCmd, play::kMaxPlayers>> others_;  // play_other_players'
+  size_t others_at_ = 0;
+  std::vector<std::array<play::TicCmd, play::kMaxPlayers>> recorded_others_;  // while recording a netgame
 };
 
 }  // namespace p3d::game

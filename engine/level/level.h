@@ -311,7 +311,10 @@ struct ShownThing {
   uint8_t flags = 0;       // ShownFlag bits
   int32_t placed = kNone;  // its index in Level::things when placed on the map (Doom's spawnpoint), else kNone
 };
-enum ShownFlag : uint8_t { kShownShadow = 1 };  // Doom's partial invisibility (MF_SHADOW): drawn as Doom's fuzz
+// kShownShadow: Doom's partial invisibility (MF_SHADOW), drawn as Doom's fuzz.
+// kShownTranslation: a player's colour, 1..3 (render/translation.h), in those bits.
+enum ShownFlag : uint8_t { kShownShadow = 1, kShownTranslation = 6 };
+constexpr int kShownTranslationShift = 1;
 
 struct State {
   std::vector<SectorState> sectors;

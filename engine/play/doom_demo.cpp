@@ -21,9 +21,11 @@ DoomTic read_tic(std::span<const uint8_t> b, bool long_tics) {
 
 int DoomDemo::player_count() const { return int(std::count(players.begin(), players.end(), true)); }
 
-DoomTic DoomDemo::console_tic(size_t tic) const {
-  int slot = 0;  // the console player's place among the players in the game
-  for (int p = 0; p < console_player; ++p) slot += players[size_t(p)];
+DoomTic DoomDemo::console_tic(size_t tic) const { return player_tic(tic, console_player); }
+
+DoomTic DoomDemo::player_tic(size_t tic, int player) const {
+  int slot = 0;  // the player's place among the players in the game
+  for (int p = 0; p < player; ++p) slot += players[size_t(p)];
   return commands[tic * size_t(player_count()) + size_t(slot)];
 }
 
@@ -48,7 +50,7 @@ DoomDemo decode_doom_demo(std::span<const uint8_t> bytes, const std::string& wha
   d.episode = bytes[at++];
   d.map = bytes[at++];
   if (!old) {
-    d.deathmatch = bytes[at++] != 0;
+    d.deathmatch = bytes[at++];
     d.respawn = bytes[at++] != 0;
     d.fast = bytes[at++] != 0;
     d.no_monsters = bytes[at++] != 0;
@@ -73,7 +75,7 @@ DoomDemo decode_doom_demo(std::span<const uint8_t> bytes, const std::string& wha
 
 std::vector<uint8_t> encode_doom_demo(const DoomDemo& d) {
   std::vector<uint8_t> out = {uint8_t(d.long_tics() ? kVersionLongTics : kVersion19), uint8_t(d.skill - 1), uint8_t(d.episode), uint8_t(d.map),
-                              d.deathmatch, d.respawn, d.fast, d.no_monsters, uint8_t(d.console_player)};
+                              uint8_t(d.deathmatch), d.respawn, d.fast, d.no_monsters, uint8_t(d.console_player)};
   for (bool p : d.players) out.push_back(p);
   for (const DoomTic& t : d.commands) {
     const uint16_t turn = uint16_t(t.turn);

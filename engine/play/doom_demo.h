@@ -37,7 +37,8 @@ struct DoomDemo {
   int version = kVersion19;  // or kVersionLongTics; 0 for the old headerless format
   int skill = 3;      // 1..5, as -skill
   int episode = 1, map = 1;
-  bool deathmatch = false, respawn = false, fast = false, no_monsters = false;
+  int deathmatch = 0;  // Doom's byte: 0 none, 2 altdeath, any other deathmatch
+  bool respawn = false, fast = false, no_monsters = false;
   int console_player = 0;
   std::array<bool, kPlayers> players{true, false, false, false};
   // Tic by tic, one command for each player in the game, in player order.
@@ -49,6 +50,10 @@ struct DoomDemo {
   size_t tic_count() const { return player_count() ? commands.size() / size_t(player_count()) : 0; }
   // The command of the console player (the one whose view the demo shows) at a tic.
   DoomTic console_tic(size_t tic) const;
+  // Player p's command at a tic (p in the game).
+  DoomTic player_tic(size_t tic, int p) const;
+  // Doom's netgame for a demo: a second player is in it (G_DoPlayDemo's test).
+  bool netgame() const { return players[1]; }
   // The map's lump name: MAPxx for Doom II's games (commercial), else ExMy.
   std::string map_name(bool commercial) const;
 };

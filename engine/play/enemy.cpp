@@ -167,6 +167,11 @@ void ThingActions::chase(Mobj* actor) {
     return;
   }
 
+  // In a netgame, a monster that lost sight of its target may pick another player.
+  if (w_.options_.netgame && !actor->threshold && !w_.check_sight(actor, actor->target) &&
+      w_.look_for_players(actor, true))
+    return;
+
   if (--actor->move_count < 0 || !w_.move(actor)) w_.new_chase_dir(actor);
 
   if (actor->info->active_sound != Sound::kNone && roll() < 3) w_.start_sound(actor, actor->info->active_sound);
@@ -546,7 +551,9 @@ bool ThingActions::boss_death_counts(ThingType type) const {
 
 void ThingActions::boss_death(Mobj* mo) {
   if (!boss_death_counts(mo->type)) return;
-  if (w_.player_.inv.health <= 0) return;  // no one left to win
+  bool someone_alive = false;  // to win
+  for (int n = 0; n < kMaxPlayers; ++n) someone_alive |= w_.in_game(n) && w_.player(n).inv.health > 0;
+  if (!someone_alive) return;
   if (another_alive(mo)) return;
 
   Line tagged;  // Doom's junk line: only its tag matters
@@ -912,22 +919,23 @@ void World::new_chase_dir(Mobj* actor) {
 
 bool World::look_for_players(Mobj* actor, bool all_around) {
   // Doom looks through its four player slots from the last one looked at, at most
-  // two players a call; only the first slot is in the game.
+  // two players a call.
   int looked = 0;
   const int stop = (actor->last_look - 1) & 3;
   for (;; actor->last_look = (actor->last_look + 1) & 3) {
-    if (actor->last_look != 0) continue;  // not in the game
+    if (!in_game(actor->last_look)) continue;
     if (looked++ == 2 || actor->last_look == stop) return false;
-    if (player_.inv.health <= 0 || !player_.mo) continue;  // dead
-    if (!check_sight(actor, player_.mo)) continue;
+    const Player& player = players_[size_t(actor->last_look)];
+    if (player.inv.health <= 0 || !player.mo) continue;  // dead
+    if (!check_sight(actor, player.mo)) continue;
     if (!all_around) {
-      const Angle an = point_to_angle(actor->x, actor->y, player_.mo->x, player_.mo->y) - actor->angle;
+      const Angle an = point_to_angle(actor->x, actor->y, player.mo->x, player.mo->y) - actor->angle;
       if (an > kAngle90 && an < kAngle270) {
-        const Fixed dist = approx_distance(wrap_sub(player_.mo->x, actor->x), wrap_sub(player_.mo->y, actor->y));
+        const Fixed dist = approx_distance(wrap_sub(player.mo->x, actor->x), wrap_sub(player.mo->y, actor->y));
         if (dist > kMeleeRange) continue;  // behind it, and not near enough to feel
       }
     }
-    actor->target = player_.mo;
+    actor->target = player.mo;
     return true;
   }
 }

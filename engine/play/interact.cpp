@@ -34,16 +34,21 @@ void World::touch_special_thing(Mobj* special, Mobj* toucher) {
   Player* player = toucher->player;
   if (!player) return;  // only players pick up (Doom would crash)
   const bool dropped = special->flags & kDropped, counted = special->flags & kCountitem;
-  const Pickup got =
-      touch(player->inv, player->cards, special->sprite, dropped, counted, options_.skill, options_.commercial);
+  const Pickup got = touch(player->inv, player->cards, special->sprite, dropped, counted, options_.skill,
+                           options_.commercial, NetRules{options_.netgame, int(options_.deathmatch)});
+  if (got.stays) {  // a netgame's weapon or key, left for the others
+    if (!got.message.empty()) say(*player, got.message);
+    if (is_console(*player)) start_sound(nullptr, got.sound);
+    return;
+  }
   if (!got.taken) return;
   // The player's thing mirrors its health (as P_GiveBody and the spheres set it; the
   // two are equal while the player lives).
   toucher->health = player->inv.health;
   if (special->sprite == Sprite::kPins) toucher->flags |= kShadow;  // P_GivePower's invisibility
-  if (!got.message.empty()) say(got.message);
+  if (!got.message.empty()) say(*player, got.message);
   remove_mobj(special);
-  start_sound(nullptr, got.sound);  // the console player's own: heard from nowhere
+  if (is_console(*player)) start_sound(nullptr, got.sound);  // the console player's own: heard from nowhere
 }
 
 // Doom's P_KillMobj: the body falls as a corpse, the kill is counted, a dead player's
@@ -55,10 +60,12 @@ void World::kill_mobj(Mobj* source, Mobj* target) {
   target->height >>= 2;
   if (source && source->player) {
     if (target->flags & kCountkill) ++source->player->kill_count;
-  } else if (target->flags & kCountkill) {
-    ++player_.kill_count;  // by a monster's hand or the world's: it still counts
+    if (target->player) ++source->player->frags[size_t(target->player->number)];
+  } else if (!options_.netgame && (target->flags & kCountkill)) {
+    ++players_[0].kill_count;  // by a monster's hand or the world's: it still counts (Doom's player 1)
   }
   if (Player* player = target->player) {
+    if (!source) ++player->frags[size_t(player->number)];  // the world's kill counts against the player
     target->flags &= ~kSolid;
     player->state = PlayerState::kDead;
     drop_weapon(*player);

@@ -11,6 +11,10 @@ namespace {
 
 constexpr int kTitleY = 2, kStatsX = 50, kStatsY = 50, kTimeX = 16, kTimeY = kScreenHeight - 32;
 constexpr int kNoNumber = 1994;
+// Doom's deathmatch table (wi_stuff.c's DM_*, WI_SPACINGY).
+constexpr int kMatrixX = 42, kMatrixY = 68, kSpacingX = 40, kSpacingY = 33, kTotalsX = 269;
+constexpr int kKillersX = 10, kKillersY = 100, kVictimsX = 5, kVictimsY = 50;
+constexpr int kNetStatsY = 50, kNetSpacingX = 64;  // NG_STATSY, NG_SPACINGX
 
 std::optional<wad::IndexedImage> picture(const wad::Stack& wads, const std::string& name) {
   const wad::Lump* lump = wads.find(name);
@@ -26,6 +30,14 @@ std::optional<wad::IndexedImage> picture(const wad::Stack& wads, const std::stri
 int percent(int n, int total) { return n * 100 / std::max(total, 1); }
 
 }  // namespace
+
+int frag_sum(const Tally& t, int player) {
+  int sum = 0;
+  for (int j = 0; j < 4; ++j)
+    if (t.in_game[size_t(j)] && j != player) sum += t.frags[size_t(player)][size_t(j)];
+  sum -= t.frags[size_t(player)][size_t(player)];
+  return std::clamp(sum, -99, 99);
+}
 
 int par_seconds(int episode, int map) {
   static constexpr int kDoom[3][9] = {{30, 75, 120, 90, 165, 180, 180, 30, 165},
@@ -61,6 +73,14 @@ std::optional<IntermissionArt> IntermissionArt::load(const wad::Stack& wads, int
   a.minus_ = picture(wads, "WIMINUS");
   a.sucks_ = picture(wads, "WISUCKS");
   for (int i = 0; i < 10; ++i) a.digits_.push_back(picture(wads, "WINUM" + std::to_string(i)));
+  a.killers_ = picture(wads, "WIKILRS");
+  a.victims_ = picture(wads, "WIVCTMS");
+  a.total_ = picture(wads, "WIMSTT");
+  a.star_ = picture(wads, "STFST01");
+  a.dead_star_ = picture(wads, "STFDEAD0");
+  a.netgame_secret_ = picture(wads, "WIOSTS");
+  a.netgame_frags_ = picture(wads, "WIFRGS");
+  for (int i = 0; i < 4; ++i) a.player_faces_[size_t(i)] = picture(wads, "STPB" + std::to_string(i));
   if (!a.background_ && !a.digits_[0]) return std::nullopt;
   const auto pars = dehacked_pars(wads);  // the IWAD's own, as Chocolate Doom reads Freedoom's
   const auto par = pars.find({episode, map});
@@ -117,6 +137,54 @@ void IntermissionArt::draw(const Tally& t, image::Image& frame, const std::vecto
     y += 5 * level_name_->height / 4;
   }
   if (finished_) put(finished_, (kScreenWidth - finished_->width) / 2, y);
+  if (t.deathmatch) {  // WI_drawDeathmatchStats: killers down, victims across, totals on the right
+    auto half = [](const Picture& pic) { return pic ? pic->width / 2 : 0; };
+    put(total_, kTotalsX - half(total_), kMatrixY - kSpacingY + 10);
+    put(killers_, kKillersX, kKillersY);
+    put(victims_, kVictimsX, kVictimsY);
+    for (int i = 0, x = kMatrixX + kSpacingX, row = kMatrixY; i < 4; ++i, x += kSpacingX, row += kSpacingY) {
+      if (!t.in_game[size_t(i)]) continue;
+      const Picture& face = player_faces_[size_t(i)];
+      put(face, x - half(face), kMatrixY - kSpacingY);
+      put(face, kMatrixX - half(face), row);
+      if (i == t.me) {  // the console player's own: a dead face across, a live one down
+        put(dead_star_, x - half(face), kMatrixY - kSpacingY);
+        put(star_, kMatrixX - half(face), row);
+      }
+    }
+    for (int i = 0, row = kMatrixY + 10; i < 4; ++i, row += kSpacingY) {
+      if (!t.in_game[size_t(i)]) continue;
+      for (int j = 0, x = kMatrixX + kSpacingX; j < 4; ++j, x += kSpacingX)
+        if (t.in_game[size_t(j)]) number(x + digit_width, row, t.frags[size_t(i)][size_t(j)], 2);
+      number(kTotalsX + digit_width, row, frag_sum(t, i), 2);
+    }
+    return;
+  }
+  if (t.netgame) {  // WI_drawNetgameStats: a row a player, with its colour and the counts
+    bool frags = false;  // Doom's dofrags: shown when anyone's total is not 0
+    for (int i = 0; i < 4; ++i) frags |= t.in_game[size_t(i)] && frag_sum(t, i) != 0;
+    const int stats_x = 32 + (star_ ? star_->width / 2 : 0) + (frags ? 0 : 32);
+    auto right = [&](const Picture& pic, int x) { put(pic, x - (pic ? pic->width : 0), kNetStatsY); };
+    right(kills_, stats_x + kNetSpacingX);
+    right(items_, stats_x + 2 * kNetSpacingX);
+    right(netgame_secret_, stats_x + 3 * kNetSpacingX);
+    if (frags) right(netgame_frags_, stats_x + 4 * kNetSpacingX);
+    const int percent_width = percent_ ? percent_->width : 0;
+    for (int i = 0, row = kNetStatsY + (kills_ ? kills_->height : 0); i < 4; ++i) {
+      if (!t.in_game[size_t(i)]) continue;
+      const Picture& face = player_faces_[size_t(i)];
+      const int face_x = stats_x - (face ? face->width : 0);
+      put(face, face_x, row);
+      if (i == t.me) put(star_, face_x, row);
+      int x = stats_x + kNetSpacingX;
+      percentage(x - percent_width, row + 10, percent(t.player_kills[size_t(i)], t.total_kills));
+      percentage((x += kNetSpacingX) - percent_width, row + 10, percent(t.player_items[size_t(i)], t.total_items));
+      percentage((x += kNetSpacingX) - percent_width, row + 10, percent(t.player_secrets[size_t(i)], t.total_secrets));
+      if (frags) number(x + kNetSpacingX, row + 10, frag_sum(t, i), -1);
+      row += kSpacingY;
+    }
+    return;
+  }
   const int line = digits_[0] ? 3 * digits_[0]->height / 2 : 18;
   put(kills_, kStatsX, kStatsY);
   percentage(kScreenWidth - kStatsX, kStatsY, percent(t.kills, t.total_kills));

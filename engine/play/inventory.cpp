@@ -168,7 +168,8 @@ StatusValues Inventory::status(uint8_t keys, int face) const {
   return v;
 }
 
-Pickup touch(Inventory& inv, uint8_t& keys, Sprite sprite, bool dropped, bool counted, int skill, bool commercial) {
+Pickup touch(Inventory& inv, uint8_t& keys, Sprite sprite, bool dropped, bool counted, int skill, bool commercial,
+             NetRules net) {
   Pickup p;
   std::string& m = p.message;
   // Each returns whether the thing is taken, its message said.
@@ -184,6 +185,16 @@ Pickup touch(Inventory& inv, uint8_t& keys, Sprite sprite, bool dropped, bool co
     return true;
   };
   auto weapon = [&](Weapon w, bool drop, const char* message) {
+    if (net.netgame && net.deathmatch != 2 && !drop) {  // a placed weapon stays for everyone
+      if (inv.weapons[size_t(w)]) return false;
+      inv.bonus_count += kBonusAdd;
+      inv.weapons[size_t(w)] = true;
+      give_ammo(inv, ammo_of(w), net.deathmatch ? 5 : 2, skill);
+      inv.pending = w;
+      p.stays = true;
+      p.sound = Sound::kWpnup;
+      return false;
+    }
     if (!give_weapon(inv, w, drop, skill)) return false;
     m = message;
     p.sound = Sound::kWpnup;
@@ -192,6 +203,10 @@ Pickup touch(Inventory& inv, uint8_t& keys, Sprite sprite, bool dropped, bool co
   auto key = [&](const Key& k) {  // taken even when held, silently
     if (!(keys & (1 << k.card))) m = k.message;
     give_card(inv, keys, k.card);
+    if (net.netgame) {  // left for everyone, silently
+      p.stays = true;
+      p.sound = Sound::kNone;
+    }
     return true;
   };
   bool taken = true;
@@ -264,6 +279,7 @@ Pickup touch(Inventory& inv, uint8_t& keys, Sprite sprite, bool dropped, bool co
     case Sprite::kSgn2: taken = weapon(Weapon::kSuperShotgun, dropped, "You got the super shotgun!"); break;
     default: return {};  // not a thing Doom lets the player pick up
   }
+  if (p.stays) return p;
   if (!taken) return {};
   p.taken = true;
   if (counted) ++inv.items;
@@ -271,9 +287,10 @@ Pickup touch(Inventory& inv, uint8_t& keys, Sprite sprite, bool dropped, bool co
   return p;
 }
 
-Pickup touch(Inventory& inv, uint8_t& keys, ThingType type, bool dropped, int skill, bool commercial) {
+Pickup touch(Inventory& inv, uint8_t& keys, ThingType type, bool dropped, int skill, bool commercial, NetRules net) {
   const ThingInfo& info = thing_info(type);
-  return touch(inv, keys, state_info(info.spawn).sprite, dropped, (info.flags & kCountitem) != 0, skill, commercial);
+  return touch(inv, keys, state_info(info.spawn).sprite, dropped, (info.flags & kCountitem) != 0, skill, commercial,
+               net);
 }
 
 }  // namespace p3d::play

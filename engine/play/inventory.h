@@ -46,6 +46,9 @@ struct Inventory {
 
 struct Pickup {
   bool taken = false;
+  // Given but left where it lies, for the others (a netgame's placed weapons and keys):
+  // the message and sound stand, the thing is not removed nor counted.
+  bool stays = false;
   Sound sound = Sound::kItemup;
   std::string message;  // Doom's words; empty for nothing to say (a key already held)
 };
@@ -85,6 +88,13 @@ constexpr int damage_at_skill(int damage, int skill) { return skill == 1 ? damag
 // 1, nothing while invulnerable, then absorb_damage. Returns the health lost.
 int damage(Inventory& inventory, int amount, int skill);
 
+// A netgame's pickup rules (Doom's netgame and deathmatch): placed weapons stay unless
+// in altdeath (5 clips of ammo in deathmatch, 2 in co-op, nothing if owned), keys stay.
+struct NetRules {
+  bool netgame = false;
+  int deathmatch = 0;  // 0, 1 or 2 (altdeath)
+};
+
 // Doom's P_TouchSpecialThing, by the thing's sprite as Doom identifies it: what the
 // player gains, or nothing (taken false: the thing stays, as a medikit at full
 // health). `keys` holds the six key bits (blue, yellow, red card, then skulls);
@@ -94,8 +104,9 @@ int damage(Inventory& inventory, int amount, int skill);
 // New weapons, berserk and ammo after none set `pending`: the weapon's sprite lowers
 // the old one and raises it (set `ready` yourself where no weapon sprite runs).
 Pickup touch(Inventory& inventory, uint8_t& keys, Sprite sprite, bool dropped, bool counted, int skill,
-             bool commercial);
+             bool commercial, NetRules net = {});
 // The same for a thing of this type, lying where the map put it or dropped.
-Pickup touch(Inventory& inventory, uint8_t& keys, ThingType type, bool dropped, int skill, bool commercial = true);
+Pickup touch(Inventory& inventory, uint8_t& keys, ThingType type, bool dropped, int skill, bool commercial = true,
+             NetRules net = {});
 
 }  // namespace p3d::play

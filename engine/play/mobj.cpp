@@ -222,16 +222,26 @@ Mobj* World::spawn_mobj(Fixed x, Fixed y, Fixed z, ThingType type) {
 }
 
 void World::remove_mobj(Mobj* mobj) {
-  // (Doom queues items for respawning in deathmatch 2 here: single player never does.)
+  // An item taken (not one a monster dropped, nor the invulnerability and invisibility
+  // spheres) queues its spot for altdeath's respawning; the 129th loses the oldest.
+  if ((mobj->flags & kSpecial) && !(mobj->flags & kDropped) && mobj->type != ThingType::kInv &&
+      mobj->type != ThingType::kIns) {
+    item_queue_[item_queue_head_] = mobj->spawn_point;
+    item_queue_time_[item_queue_head_] = level_time_;
+    item_queue_head_ = (item_queue_head_ + 1) % kItemQueueSize;
+    if (item_queue_head_ == item_queue_tail_) item_queue_tail_ = (item_queue_tail_ + 1) % kItemQueueSize;
+  }
   unset_thing_position(mobj);
   stop_sound(mobj);
   remove_thinker(mobj);
 }
 
 void World::spawn_player(const MapThing& start) {
-  Player& p = player_;
-  if (p.state == PlayerState::kReborn) reborn_player();
+  if (start.type < 1 || start.type > kMaxPlayers || !in_game(start.type - 1)) return;
+  Player& p = players_[size_t(start.type - 1)];
+  if (p.state == PlayerState::kReborn) reborn_player(p);
   Mobj* mobj = spawn_mobj(Fixed(start.x) << kFracBits, Fixed(start.y) << kFracBits, kOnFloorZ, ThingType::kPlayer);
+  mobj->flags |= uint32_t(start.type - 1) << kTranslationShift;  // the player's colour
   mobj->angle = kAngle45 * Angle(start.angle / 45);
   mobj->player = &p;
   mobj->health = p.inv.health;
@@ -245,16 +255,21 @@ void World::spawn_player(const MapThing& start) {
   p.fixed_colormap = 0;
   p.view_height = kViewHeight;
   setup_psprites(p);
+  if (options_.deathmatch != Deathmatch::kNone) p.cards = 0x3f;  // every key in deathmatch
 }
 
 void World::spawn_map_thing(const MapThing& mt) {
-  if (mt.type == 11) return;  // a deathmatch start
-  if (mt.type <= 0) return;   // Doom 2's type 0, left by some editors
-  if (mt.type <= 4) {         // player starts
-    if (mt.type == 1) spawn_player(mt);
+  if (mt.type == 11) {  // a deathmatch start: Doom keeps the first ten
+    if (deathmatch_starts_.size() < kDeathmatchStarts) deathmatch_starts_.push_back(mt);
     return;
   }
-  if (mt.options & 16) return;  // multiplayer only
+  if (mt.type <= 0) return;   // Doom 2's type 0, left by some editors
+  if (mt.type <= 4) {         // player starts, kept for respawning in a netgame
+    player_starts_[size_t(mt.type - 1)] = mt;
+    if (options_.deathmatch == Deathmatch::kNone) spawn_player(mt);
+    return;
+  }
+  if (!options_.netgame && (mt.options & 16)) return;  // multiplayer only
   const int skill = options_.skill - 1;  // Doom's gameskill
   const int bit = skill == 0 ? 1 : skill == 4 ? 4 : int(1u << ((skill - 1) & 0x1F));
   if (!(mt.options & bit)) return;
@@ -264,6 +279,7 @@ void World::spawn_map_thing(const MapThing& mt) {
     return;
   }
   const ThingInfo& info = thing_info_[size_t(type)];
+  if (options_.deathmatch != Deathmatch::kNone && (info.flags & kNotdmatch)) return;  // keys
   if (options_.no_monsters && (type == ThingType::kSkull || (info.flags & kCountkill))) return;
   const Fixed z = (info.flags & kSpawnceiling) ? kOnCeilingZ : kOnFloorZ;
   Mobj* mobj = spawn_mobj(Fixed(mt.x) << kFracBits, Fixed(mt.y) << kFracBits, z, type);

@@ -474,7 +474,7 @@ bool World::do_locked_door(Line* line, Door::Type type, Mobj* thing) {
                                            "You need a yellow key to activate this object",
                                            "You need a red key to activate this object"};
   if (const int color = lock_color(line->special); color >= 0 && !has_key(*player, color)) {
-    say(kNeeds[color]);
+    say(*player, kNeeds[color]);
     start_sound(nullptr, Sound::kOof);
     return false;
   }
@@ -490,7 +490,7 @@ void World::vertical_door(Line* line, Mobj* thing) {
   if (const int color = lock_color(line->special); color >= 0) {
     if (!thing->player) return;
     if (!has_key(*thing->player, color)) {
-      say(kNeeds[color]);
+      say(*thing->player, kNeeds[color]);
       start_sound(nullptr, Sound::kOof);
       return;
     }

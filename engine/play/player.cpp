@@ -162,10 +162,12 @@ void World::run_down_powers(Player& player) {
     player.fixed_colormap = 0;
 }
 
-void World::reborn_player() {
-  Player& p = player_;
-  const int kills = p.kill_count, items = p.inv.items, secrets = p.secret_count;
+void World::reborn_player(Player& p) {
+  const int kills = p.kill_count, items = p.inv.items, secrets = p.secret_count, number = p.number;
+  const auto frags = p.frags;
   p = Player{};
+  p.number = number;
+  p.frags = frags;
   p.kill_count = kills;
   p.inv.items = items;
   p.secret_count = secrets;

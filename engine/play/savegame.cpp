@@ -310,7 +310,7 @@ void fill_mobj(World& w, Mobj& m, const DoomMobj& d) {
   m.move_dir = d.move_dir, m.move_count = d.move_count;
   m.target = m.tracer = nullptr;
   m.reaction_time = d.reaction_time, m.threshold = d.threshold;
-  m.player = d.player ? &w.player_ : nullptr;
+  m.player = d.player ? &w.player() : nullptr;
   m.last_look = d.last_look;
   m.spawn_point = spawn_point_of(w, d);
 }
@@ -877,8 +877,8 @@ void clear_thinkers(World& w) {
   w.removed_since_pass_ = 0;
   w.active_plats_.clear();
   w.active_ceilings_.clear();
-  w.player_.mo = nullptr;
-  w.player_.attacker = nullptr;
+  w.player().mo = nullptr;
+  w.player().attacker = nullptr;
   // Doom's globals pointing at things are all set before they are read, save the
   // boss brain's spots, which Doom keeps pointing at the old level's things.
   w.tm_ = {};
@@ -893,7 +893,7 @@ void clear_thinkers(World& w) {
 }
 
 void apply_player(World& w, const DoomPlayer& d) {
-  Player& p = w.player_;
+  Player& p = w.player();
   p.state = PlayerState(d.state);
   p.cmd = TicCmd{d.forward, d.side, d.turn, d.buttons};
   p.view_z = d.view_z, p.view_height = d.view_height, p.delta_view_height = d.delta_view_height, p.bob = d.bob;
@@ -979,7 +979,7 @@ void apply_thinkers(World& w, const DoomSave& s, const DoomNumbers& numbers, War
     w.set_thing_position(m);
     m->floor_z = m->subsector->sector->floor_height;  // Doom's loader: the sector's, not the saved ones
     m->ceiling_z = m->subsector->sector->ceiling_height;
-    if (m->player) w.player_.mo = m;
+    if (m->player) w.player().mo = m;
   }
   for (size_t i = 0; i < s.specials.size(); ++i) {
     std::visit(

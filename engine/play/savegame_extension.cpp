@@ -89,8 +89,8 @@ std::vector<uint8_t> encode_extension(const World& w, const SaveExtras& x) {
   out.u32(uint32_t(w.brain_target_on_));
   out.u32(uint32_t(w.brain_targets_.size()));
   for (const Mobj* m : w.brain_targets_) out.i32(refs.ref(m));
-  out.i32(refs.ref(w.player_.attacker));
-  out.str(w.player_.message.substr(0, kMaxMessage));
+  out.i32(refs.ref(w.player().attacker));
+  out.str(w.player().message.substr(0, kMaxMessage));
   // the map in full precision, with the sectors' thing lists in order
   out.u32(uint32_t(w.map_.sectors.size()));
   for (const Sector& s : w.map_.sectors) {
@@ -606,8 +606,8 @@ void apply_extension(World& w, const DoomSave& doom, const Extension& x, SaveRea
   w.brain_targets_.clear();
   for (int32_t r : x.brain_targets) w.brain_targets_.push_back(mobj(r));
   w.brain_target_on_ = x.brain_target_on;
-  w.player_.attacker = mobj(x.attacker);
-  w.player_.message = x.message;
+  w.player().attacker = mobj(x.attacker);
+  w.player().message = x.message;
 }
 
 }  // namespace p3d::play::savegame_local

@@ -17,7 +17,6 @@
 
 namespace p3d::play::savegame_local {
 
-constexpr int kMaxPlayers = 4;
 constexpr int kFaceCount = 42;  // Face::index(): 5 pains x 8, god, dead
 constexpr size_t kMaxMessage = 4096;
 

@@ -40,6 +40,7 @@ int attacker_offset(Angle to_attacker, Angle facing) {
 
 // Doom's places on its 320x200 screen (st_stuff.c).
 constexpr int kAmmoX = 44, kAmmoY = 171, kHealthX = 90, kHealthY = 171, kArmorX = 221, kArmorY = 171;
+constexpr int kFragsX = 138, kFragsY = 171, kFaceBackX = 143;  // Doom's ST_FRAGSX, ST_FRAGSY, ST_FX
 constexpr int kArmsX = 111, kArmsY = 172, kArmsBackgroundX = 104, kArmsSpaceX = 12, kArmsSpaceY = 10;
 constexpr int kFaceX = 143, kFaceY = 168, kKeyX = 239;
 constexpr int kKeyY[3] = {171, 181, 191};
@@ -170,6 +171,7 @@ std::optional<StatusBarArt> StatusBarArt::load(const wad::Stack& wads) {
   a.percent_ = picture(wads, "STTPRCNT");
   a.minus_ = picture(wads, "STTMINUS");
   a.arms_background_ = picture(wads, "STARMS");
+  for (int i = 0; i < 4; ++i) a.face_backgrounds_[size_t(i)] = picture(wads, "STFB" + std::to_string(i));
   for (int i = 0; i < 10; ++i) {
     a.tall_[size_t(i)] = picture(wads, "STTNUM" + std::to_string(i));
     a.small_[size_t(i)] = picture(wads, "STYSNUM" + std::to_string(i));
@@ -207,13 +209,15 @@ void StatusBarArt::draw(const StatusValues& v, image::Image& frame, const std::v
     if (negative) put(minus_, x - 8, y);
   };
   put(bar_, 0, kBarTop);
-  put(arms_background_, kArmsBackgroundX, kBarTop);
+  if (v.face_background >= 0 && v.face_background < 4) put(face_backgrounds_[size_t(v.face_background)], kFaceBackX, kBarTop);
+  if (!v.deathmatch) put(arms_background_, kArmsBackgroundX, kBarTop);
   number(tall_, v.ready_ammo, kAmmoX, kAmmoY, 3);
   number(tall_, v.health, kHealthX, kHealthY, 3);
   put(percent_, kHealthX, kHealthY);
   number(tall_, v.armor, kArmorX, kArmorY, 3);
   put(percent_, kArmorX, kArmorY);
-  for (int i = 0; i < 6; ++i)  // the arms: yellow when owned, grey when not
+  if (v.deathmatch) number(tall_, v.frags, kFragsX, kFragsY, 2);  // Doom's st_fragscount
+  for (int i = 0; i < 6 && !v.deathmatch; ++i)  // the arms: yellow when owned, grey when not
     put(v.arms[size_t(i)] ? small_[size_t(i + 2)] : grey_[size_t(i + 2)], kArmsX + (i % 3) * kArmsSpaceX,
         kArmsY + (i / 3) * kArmsSpaceY);
   if (v.face >= 0 && size_t(v.face) < faces_.size()) put(faces_[size_t(v.face)], kFaceX, kFaceY);

@@ -29,6 +29,11 @@ struct StatusValues {
   std::array<bool, 6> arms{true, false, false, false, false, false};  // weapons 2 to 7 owned
   uint8_t keys = 0;                             // blue, yellow, red cards, then the skulls (bits 0..5)
   int face = 0;                                 // Face::index()
+  // A netgame: the face on its player's colour (STFB0..3), or -1; in deathmatch the
+  // frag count stands where the arms were.
+  int face_background = -1;
+  bool deathmatch = false;
+  int frags = 0;
 };
 
 // What Doom's face reads from the player each tic (ST_updateFaceWidget's plyr).
@@ -103,6 +108,7 @@ class StatusBarArt {
  private:
   using Picture = std::optional<wad::IndexedImage>;
   Picture bar_, percent_, minus_, arms_background_;
+  std::array<Picture, 4> face_backgrounds_;  // STFB0..3
   std::array<Picture, 10> tall_, small_, grey_;
   std::array<Picture, 6> keys_;
   std::vector<Picture> faces_;  // Face::index() order: 5 pains x 8, then god, then dead

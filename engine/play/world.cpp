@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "engine/play/dehacked.h"
+#include "engine/play/doom_demo.h"
 #include "engine/util/doom.h"
 
 namespace p3d::play {
@@ -14,6 +15,7 @@ namespace p3d::play {
 namespace {
 
 constexpr double kDegreesPerAngle = 360.0 / 4294967296.0;
+constexpr int kTicRate = 35;
 
 // Doom II's monsters, which Doom's own games do not spawn: Doom stops loading a map's
 // things at the first of them.
@@ -40,6 +42,16 @@ GameOptions game_options_for(const wad::Stack& wads, const std::string& map_name
   return o;
 }
 
+void set_demo_game(GameOptions& o, const DoomDemo& d) {
+  o.fast = d.fast;
+  o.respawn = d.respawn;
+  o.no_monsters = d.no_monsters;
+  for (int p = 0; p < kMaxPlayers; ++p) o.in_game[size_t(p)] = d.players[size_t(p)];
+  o.console_player = d.console_player;
+  o.netgame = d.netgame();
+  o.deathmatch = d.deathmatch == 0 ? Deathmatch::kNone : d.deathmatch == 2 ? Deathmatch::kAltdeath : Deathmatch::kDeathmatch;
+}
+
 World::World(Map map, const level::Level& level, const GameOptions& options, Random random, const Inventory* carried)
     : map_(std::move(map)), level_(level), options_(options), random_(random), game_tic_at_start_(options.game_tic) {
   states_.assign(std::begin(kStates), std::end(kStates));
@@ -54,16 +66,26 @@ World::World(Map map, const level::Level& level, const GameOptions& options, Ran
   index_walls();
   index_sprite_frames();
   index_static_things();
+  for (int n = 0; n < kMaxPlayers; ++n) players_[size_t(n)].number = n;
   if (carried) {
-    player_.inv = *carried;
-    player_.state = PlayerState::kLive;
+    player().inv = *carried;
+    player().state = PlayerState::kLive;
   }
-  player_.view_z = 1;
+  player().view_z = 1;
   for (const MapThing& mt : map_.things) {
     if (!options_.commercial && doom2_only(mt.type)) break;
     spawn_map_thing(mt);
   }
+  if (options_.deathmatch != Deathmatch::kNone)  // P_SetupLevel: each player at a random deathmatch start
+    for (int n = 0; n < kMaxPlayers; ++n)
+      if (in_game(n)) {
+        players_[size_t(n)].mo = nullptr;
+        deathmatch_spawn_player(n);
+      }
+  item_queue_head_ = item_queue_tail_ = 0;
   spawn_specials();
+  if (options_.time_limit > 0 && options_.deathmatch != Deathmatch::kNone)
+    level_timer_ = options_.time_limit * 60 * kTicRate;
   state_ = level::start_state(level_, options_.skill);
   for (size_t l = 0; l < map_.lines.size(); ++l) show_line(l);
 }
@@ -71,18 +93,41 @@ World::World(Map map, const level::Level& level, const GameOptions& options, Ran
 World::~World() = default;
 
 Fixed World::eye_z() const {
-  const Mobj* mo = player_.mo;
-  if (level_time_ > 0 || !mo) return player_.view_z;
-  return std::min(wrap_add(mo->z, player_.view_height), wrap_sub(mo->ceiling_z, 4 * kFracUnit));  // as calc_height
+  const Player& p = player();
+  const Mobj* mo = p.mo;
+  if (level_time_ > 0 || !mo) return p.view_z;
+  return std::min(wrap_add(mo->z, p.view_height), wrap_sub(mo->ceiling_z, 4 * kFracUnit));  // as calc_height
+}
+
+int frag_total(const Player& player) {
+  int total = 0;
+  for (int n = 0; n < kMaxPlayers; ++n) total += n == player.number ? -player.frags[size_t(n)] : player.frags[size_t(n)];
+  return total;
 }
 
 void World::tick(const TicCmd& cmd) {
+  std::array<TicCmd, kMaxPlayers> cmds{};
+  cmds[size_t(options_.console_player)] = cmd;
+  tick_players(cmds);
+}
+
+void World::tick_players(const std::array<TicCmd, kMaxPlayers>& cmds) {
   sounds_.clear();
   messages_.clear();
-  player_.cmd = cmd;
-  if (player_.mo) player_think(player_);
+  if (options_.netgame)  // G_Ticker: the dead who pressed use come back first
+    for (int n = 0; n < kMaxPlayers; ++n)
+      if (in_game(n) && players_[size_t(n)].state == PlayerState::kReborn && players_[size_t(n)].mo)
+        reborn_in_netgame(n);
+  for (int n = 0; n < kMaxPlayers; ++n) {  // P_Ticker: each player thinks, in order
+    if (!in_game(n)) continue;
+    Player& p = players_[size_t(n)];
+    p.cmd = cmds[size_t(n)];
+    if (p.mo) player_think(p);
+  }
   run_thinkers();
   update_specials();
+  if (level_timer_ && !--level_timer_) exit_level(false);  // P_UpdateSpecials: a deathmatch's time is up
+  respawn_specials();
   ++level_time_;
   stale_ = true;
 }
@@ -146,10 +191,12 @@ void World::start_sector_sound(const Sector* sector, Sound sound) {
 
 void World::stop_sound(const Mobj*) {}  // sounds are the listener's business
 
-void World::say(std::string message) {
+void World::say(std::string message) { say(player(), std::move(message)); }
+
+void World::say(Player& player, std::string message) {
   if (const auto it = options_.texts.find(message); it != options_.texts.end()) message = it->second;
-  player_.message = message;
-  messages_.push_back(std::move(message));
+  player.message = message;
+  if (is_console(player)) messages_.push_back(std::move(message));
 }
 
 void World::exit_level(bool secret) { exit_ = secret ? ExitKind::kSecret : ExitKind::kNormal; }
@@ -211,8 +258,8 @@ int World::wake_monsters() {
   for (size_t i = 0; i < thinkers_.size(); ++i) {
     if (thinkers_[i]->kind != Thinker::Kind::kMobj || thinkers_[i]->removed) continue;
     Mobj* mo = static_cast<Mobj*>(thinkers_[i].get());
-    if (!(mo->flags & kCountkill) || mo->health <= 0 || mo->info->see == StateId::kNull || !player_.mo) continue;
-    mo->target = player_.mo;
+    if (!(mo->flags & kCountkill) || mo->health <= 0 || mo->info->see == StateId::kNull || !player().mo) continue;
+    mo->target = player().mo;
     set_mobj_state(mo, mo->info->see);
     ++woken;
   }
@@ -220,7 +267,8 @@ int World::wake_monsters() {
 }
 
 void World::place_player(Fixed x, Fixed y, Angle angle) {
-  Mobj* mo = player_.mo;
+  Player& p = player();
+  Mobj* mo = p.mo;
   if (!mo) return;
   unset_thing_position(mo);
   mo->x = x;
@@ -230,12 +278,12 @@ void World::place_player(Fixed x, Fixed y, Angle angle) {
   mo->ceiling_z = mo->subsector->sector->ceiling_height;
   mo->z = mo->floor_z;
   mo->angle = angle;
-  player_.view_z = wrap_add(mo->z, player_.view_height);
+  p.view_z = wrap_add(mo->z, p.view_height);
   stale_ = true;
 }
 
 void World::apply_cheats(uint8_t cheats) {
-  Player& p = player_;
+  Player& p = player();
   if (cheats & 1) {  // idclip
     p.cheats ^= kCheatNoclip;
     say(p.cheats & kCheatNoclip ? "No Clipping Mode ON" : "No Clipping Mode OFF");
@@ -276,7 +324,7 @@ void World::show_line(size_t l) const {
 
 void World::show() const {
   stale_ = false;
-  state_.fixed_light_map = player_.fixed_colormap ? player_.fixed_colormap : level::kNone;
+  state_.fixed_light_map = player().fixed_colormap ? player().fixed_colormap : level::kNone;
   for (size_t i = 0; i < map_.sectors.size() && i < state_.sectors.size(); ++i) {
     const Sector& s = map_.sectors[i];
     level::SectorState& out = state_.sectors[i];
@@ -307,7 +355,7 @@ void World::show() const {
   for (const auto& t : thinkers_) {
     if (t->kind != Thinker::Kind::kMobj || t->removed) continue;
     const Mobj& mo = static_cast<const Mobj&>(*t);
-    if (&mo == player_.mo) continue;  // the view's own body
+    if (&mo == player().mo) continue;  // the view's own body
     if (mo.flags & kNosector) continue;  // in no sector's list: Doom never draws it (teleport destinations)
     level::ShownThing shown;
     shown.pos = {to_double(mo.x), to_double(mo.y)};
@@ -321,7 +369,8 @@ void World::show() const {
     // A hanging picture hangs from the ceiling as it stands now; anything else stands at its z.
     shown.z = level_.sprite_frames[size_t(shown.frame)].hanging ? level::resting_z(level_, state_, shown.frame, shown.sector)
                                                                : to_double(mo.z);
-    shown.flags = (mo.flags & kShadow) ? level::kShownShadow : 0;
+    shown.flags = uint8_t(((mo.flags & kShadow) ? level::kShownShadow : 0) |
+                          (((mo.flags & kTranslation) >> kTranslationShift) << level::kShownTranslationShift));
     state_.things.push_back(shown);
   }
   for (int32_t i : static_things_) {

@@ -16,6 +16,7 @@
 //   specials.cpp  lines walked, used and shot, sector specials, animations (p_spec.c, p_switch.c, p_telept.c)
 //   movers.cpp    doors, lifts, floors, stairs, ceilings and crushers (p_doors.c, p_plats.c, p_floor.c, p_ceilng.c)
 //   lights.cpp    flickering, strobing and glowing sectors (p_lights.c)
+//   multiplayer.cpp  netgames: spawn spots, deathmatch starts, respawning, altdeath's items (g_game.c)
 #pragma once
 
 #include <array>
@@ -53,6 +54,11 @@ constexpr Fixed kOnCeilingZ = std::numeric_limits<Fixed>::max();
 constexpr int kFullBright = 0x8000;  // a frame's bright bit (Doom's FF_FULLBRIGHT)
 constexpr int kFrameMask = 0x7fff;
 constexpr int kMtfAmbush = 8;  // a placed thing's deaf flag (Doom's MTF_AMBUSH)
+constexpr int kMaxPlayers = 4;  // Doom's MAXPLAYERS
+
+// Doom's multiplayer modes: deathmatch 0 (co-op, or one player), 1 (-deathmatch) or 2
+// (-altdeath: items come back 30 seconds after they were taken).
+enum class Deathmatch : uint8_t { kNone, kDeathmatch, kAltdeath };
 
 // The game being played (Doom's gameskill, gamemode and the -fast, -respawn and
 // -nomonsters options).
@@ -65,6 +71,14 @@ struct GameOptions {
   // Doom's gametic as the level begins: it counts on through a level started again
   // after the player's death (and A_Tracer steers by it).
   int game_tic = 0;
+  // Who plays: Doom's playeringame[], consoleplayer (whose view is shown, whose sounds
+  // are heard) and netgame (several players: weapons stay, keys stay, monsters look
+  // for others; a dead player respawns in the level rather than the level restarting).
+  std::array<bool, kMaxPlayers> in_game{true, false, false, false};
+  int console_player = 0;
+  bool netgame = false;
+  Deathmatch deathmatch = Deathmatch::kNone;
+  int time_limit = 0;  // minutes, in deathmatch: the level ends when they have passed (-timer, -avg's 20)
   std::map<std::string, std::string> texts;  // Doom's messages as the WAD rewords them (play/dehacked.h)
 };
 
@@ -156,7 +170,11 @@ struct Player {
   int fixed_colormap = 0;    // the light amplification visor and invulnerability
   std::array<Psprite, kPsCount> psprites{};
   bool did_secret = false;
+  std::array<int, kMaxPlayers> frags{};  // players this one killed (its own entry: deaths by its own hand or the world's)
+  int number = 0;                         // 0..3: which player (the colour: green, indigo, brown, red)
 };
+// The frag count the status bar shows: kills of others minus deaths by one's own hand.
+int frag_total(const Player& player);
 enum Cheat : int { kCheatNoclip = 1, kCheatGodMode = 2 };
 
 // ---- sector movers (p_spec.h)
@@ -239,6 +257,11 @@ constexpr uint64_t kSectorOrigin = uint64_t(1) << 40;
 
 enum class ExitKind : uint8_t { kNone, kNormal, kSecret };
 
+// Who plays a demo and how (its players, console player, netgame and deathmatch, and
+// -fast, -respawn, -nomonsters), set on the game's options.
+struct DoomDemo;
+void set_demo_game(GameOptions& options, const DoomDemo& demo);
+
 // Doom's game for a map of a WAD stack: Doom II's rules for MAPxx, Doom's (with the
 // fourth episode's when the WADs have E4M1) for ExMy, the map's numbers, the IWAD's
 // DEHACKED wording of the messages.
@@ -259,6 +282,10 @@ class World {
   // One tic (Doom's P_Ticker): the player thinks, every thinker runs, the specials
   // update. Then state() shows the level as it stands.
   void tick(const TicCmd& cmd);
+  // One tic with each player's command (the entries of players not in the game are
+  // ignored). In a netgame, a player who asked to be reborn comes back first (Doom's
+  // G_DoReborn in G_Ticker); in a single-player game the caller starts the level again.
+  void tick_players(const std::array<TicCmd, kMaxPlayers>& cmds);
 
   // The level as it stands, for the renderers: brought up to date when asked (ticks
   // that nobody draws cost nothing here).
@@ -266,8 +293,15 @@ class World {
     if (stale_) show();
     return state_;
   }
-  const Player& player() const { return player_; }
-  Player& player() { return player_; }
+  // The console player (the one whose view is shown).
+  const Player& player() const { return players_[size_t(options_.console_player)]; }
+  Player& player() { return players_[size_t(options_.console_player)]; }
+  const Player& player(int n) const { return players_[size_t(n)]; }
+  bool in_game(int n) const { return options_.in_game[size_t(n)]; }
+  // The deathmatch starts Doom keeps (the first ten of the map's: vanilla's array).
+  const std::vector<MapThing>& deathmatch_starts() const { return deathmatch_starts_; }
+  // Tics left before a deathmatch's time limit ends the level (0: no limit).
+  int time_left() const { return level_timer_; }
   // The height of the player's eye, for drawing. Doom draws only after a tic (the
   // first one computes view_z, until then 0 for a new player, 1 for one carried over);
   // a frame drawn before it sees from where that tic puts a player at rest.
@@ -318,7 +352,9 @@ class World {
   void start_sound(const Mobj* origin, Sound sound);
   void start_sector_sound(const Sector* sector, Sound sound);
   void stop_sound(const Mobj* origin);  // Doom's S_StopSound (a no-op for play)
-  void say(std::string message);        // the player's message
+  void say(std::string message);        // the console player's message
+  void say(Player& player, std::string message);  // a player's (only the console player's is heard and shown)
+  bool is_console(const Player& player) const { return &player == &players_[size_t(options_.console_player)]; }
   void exit_level(bool secret);
   void index_walls();          // line_walls_ and the sides' starting offsets
   void index_sprite_frames();  // sprite_frames_
@@ -393,6 +429,11 @@ class World {
   Mobj* spawn_mobj(Fixed x, Fixed y, Fixed z, ThingType type);
   void remove_mobj(Mobj* mo);
   void spawn_player(const MapThing& start);
+  // g_game.c's spawning of players in a netgame: G_CheckSpot, G_DeathMatchSpawnPlayer, G_DoReborn.
+  bool check_spot(int player, const MapThing& spot);
+  void deathmatch_spawn_player(int player);
+  void reborn_in_netgame(int player);
+  void respawn_specials();  // P_RespawnSpecials: altdeath's items come back
   void spawn_map_thing(const MapThing& mt);
   void spawn_puff(Fixed x, Fixed y, Fixed z);
   void spawn_blood(Fixed x, Fixed y, Fixed z, int damage);
@@ -409,7 +450,7 @@ class World {
   void move_player(Player& player);
   void death_think(Player& player);
   void player_think(Player& player);
-  void reborn_player();  // Doom's G_PlayerReborn: a fresh player, keeping the level's counts
+  void reborn_player(Player& player);  // Doom's G_PlayerReborn: a fresh player, keeping the level's counts and frags
   void choose_weapon(Player& player, Weapon weapon);  // the weapon keys
   void run_down_powers(Player& player);
 
@@ -500,7 +541,22 @@ class World {
   const level::Level& level_;
   GameOptions options_;
   Random random_;
-  Player player_;
+  std::array<Player, kMaxPlayers> players_;
+  // Netgames (g_game.c, p_mobj.c): the map's starts, the corpses left by respawning
+  // players, the items taken (for altdeath), the deathmatch's clock.
+  std::array<MapThing, kMaxPlayers> player_starts_{};
+  std::vector<MapThing> deathmatch_starts_;
+  static constexpr size_t kDeathmatchStarts = 10;  // Doom's array: later starts are not used
+  std::vector<Mobj*> body_queue_;  // Doom's bodyque: the last kBodyQueueSize corpses
+  size_t body_queue_slot_ = 0;
+  static constexpr size_t kBodyQueueSize = 32;  // Doom's BODYQUESIZE: the 33rd corpse removes the first
+  // Doom's itemrespawnque: a ring of kItemQueueSize spots; when full, the oldest is lost
+  // (Doom's rule, kept for sync).
+  static constexpr size_t kItemQueueSize = 128;
+  std::array<MapThing, kItemQueueSize> item_queue_{};
+  std::array<int, kItemQueueSize> item_queue_time_{};
+  size_t item_queue_head_ = 0, item_queue_tail_ = 0;
+  int level_timer_ = 0;  // tics left, or 0 (Doom's levelTimer and levelTimeCount)
   std::vector<StateInfo> states_;
   std::vector<ThingInfo> thing_info_;
   bool respawn_monsters_ = false;  // nightmare or -respawn

@@ -20,6 +20,7 @@
 #include <cstring>
 
 #include "engine/render/texel_loops.h"
+#include "engine/render/translation.h"
 
 namespace p3d::render {
 
@@ -497,7 +498,8 @@ void Canvas::add_sprite(uint32_t thing) {
   const double seen_from = std::atan2(to_thing.y, to_thing.x) * (180 / M_PI) - t.angle + 22.5 * 9;
   const int rotation = int(level::floor_mod(to_int(seen_from / 45), level::kRotations));
   const level::SpriteImage& image = level_->sprite_images[size_t(frame.image[rotation])];
-  const level::Texture& tex = level_->textures[size_t(image.texture)];
+  const int translation = (t.flags & level::kShownTranslation) >> level::kShownTranslationShift;
+  const level::Texture& tex = translated_texture(*level_, size_t(image.texture), translation);
   Sprite s;
   s.thing = thing;
   s.depth = depth;

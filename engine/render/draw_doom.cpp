@@ -20,6 +20,7 @@
 
 #include "engine/render/draw.h"
 #include "engine/render/texel_loops.h"
+#include "engine/render/translation.h"
 
 namespace p3d::render {
 
@@ -486,7 +487,8 @@ bool Canvas::project_doom_sprite(const level::Level& level, const level::State& 
   const Angle seen = doom::point_to_angle(view.fx, view.fy, gx, gy);
   const int rotation = int((seen - doom::to_angle(th.angle) + (play::kAngle45 / 2) * 9) >> 29);
   const level::SpriteImage& image = level.sprite_images[size_t(frame.image[rotation])];
-  const level::Texture& tex = level.textures[size_t(image.texture)];
+  const int translation = (th.flags & level::kShownTranslation) >> level::kShownTranslationShift;
+  const level::Texture& tex = translated_texture(level, size_t(image.texture), translation);
   s.flip = frame.flip[rotation];
   // Crispy measures a mirrored picture's offset from its other edge.
   const int left = t.crispy && s.flip ? tex.width - image.left : image.left;

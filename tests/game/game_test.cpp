@@ -385,6 +385,25 @@ TEST(Session, SoundsComeFromTheirSectorsAndTheWadsLumps) {
   std::filesystem::remove_all(dir);
 }
 
+// A netgame's demo played with every player's input and recorded again: FreeDM's DEMO3
+// (three players, altdeath) comes out byte for byte as the WAD holds it.
+TEST(Session, ANetgameDemoPlayedAndRecordedIsTheSameDemo) {
+  const auto wad = test::freedoom_path("freedm.wad");
+  const wad::Stack wads = bsp::read_wads({wad});
+  const wad::Lump* lump = wads.find("DEMO3");
+  ASSERT_NE(lump, nullptr);
+  const std::vector<uint8_t> original(lump->bytes.begin(), lump->bytes.end());
+  const play::DoomDemo doom = play::decode_doom_demo(original, "DEMO3");
+  ASSERT_EQ(doom.player_count(), 3);
+  Session s(bsp::LevelSource{{}, {wad}, doom.map_name(true)}, doom.skill, flags_of(doom));
+  s.play_other_players(doom);
+  s.start_recording(true);
+  for (const play::DemoTic& t : play::demo_from_doom(doom, s.level()).tics) s.tic(t);
+  EXPECT_TRUE(s.world().options().netgame);
+  EXPECT_EQ(s.world().options().deathmatch, play::Deathmatch::kAltdeath);
+  EXPECT_EQ(s.encode_recording("demo3.lmp"), original);
+}
+
 // --record x.lmp: a Doom v1.9 demo of the walk, its turns rounded as Doom keeps them
 // before they are played, so replaying the Doom demo walks the same path.
 TEST(Session, ADoomDemoRecordingReplaysTheSameWalk) {

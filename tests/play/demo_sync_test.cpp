@@ -9,6 +9,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -132,6 +133,121 @@ TEST(DemoSync, GeneratedRandomDemosPlayInSyncToTheirLastTic) {
       ++demos;
     }
   EXPECT_GE(demos, 4u);
+}
+
+// ---- netgames: every player after every tic
+
+// Chocolate Doom's trace of every player (tests/golden/netgame_demos, condensed by
+// tools/peers/netgame_trace.py): each tic's lines hashed, some tics in full.
+struct NetTrace {
+  std::vector<uint64_t> hashes;                  // per tic
+  std::map<size_t, std::vector<std::string>> full;  // tic -> its player lines
+};
+
+NetTrace read_net_trace(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  NetTrace out;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.size() < 2 || line[0] == '#') continue;
+    std::istringstream fields(line.substr(2));
+    size_t tic = 0;
+    fields >> tic;
+    if (line[0] == 'H') {
+      std::string hex;
+      fields >> hex;
+      out.hashes.resize(tic + 1);
+      out.hashes[tic] = std::stoull(hex, nullptr, 16);
+    } else if (line[0] == 'F') {
+      out.full[tic].push_back(line.substr(2));
+    }
+  }
+  return out;
+}
+
+uint64_t fnv1a64(const std::string& text) {
+  uint64_t h = 0xcbf29ce484222325ull;
+  for (unsigned char c : text) h = (h ^ c) * 0x100000001b3ull;
+  return h;
+}
+
+// Our players after a tic, in the trace's words (p3d-multiplayer.patch's fprintf).
+std::vector<std::string> net_lines(const World& w, size_t tic) {
+  std::vector<std::string> out;
+  for (int n = 0; n < kMaxPlayers; ++n) {
+    const Player& p = w.player(n);
+    if (!w.in_game(n) || !p.mo) continue;
+    std::ostringstream o;
+    o << tic << " " << n << " " << p.mo->x << " " << p.mo->y << " " << p.mo->z << " " << uint32_t(p.mo->angle) << " "
+      << p.mo->mom_x << " " << p.mo->mom_y << " " << p.inv.health << " " << p.inv.armor;
+    for (int f : p.frags) o << " " << f;
+    o << " " << int(w.random().play_index()) << " " << p.view_z;
+    out.push_back(o.str());
+  }
+  return out;
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+  std::string s;
+  for (size_t i = 0; i < lines.size(); ++i) s += (i ? "\n" : "") + lines[i];
+  return s;
+}
+
+// Plays DEMOn of a netgame WAD (every player's input) beside Chocolate Doom's trace of it.
+Sync net_sync_of(const std::string& wad_file, int demo_number,
+                 const std::filesystem::path& golden = test::source_dir() / "tests/golden/netgame_demos") {
+  const auto wad = test::freedoom_path(wad_file);
+  const wad::Stack wads = bsp::read_wads({wad});
+  const std::string lump = "DEMO" + std::to_string(demo_number);
+  const DoomDemo demo = decode_doom_demo(wads.find(lump)->bytes, lump);
+  const bool commercial = wads.map("MAP01").has_value();
+  const std::string map_name = demo.map_name(commercial);
+  const level::Level level = bsp::open_level(bsp::LevelSource{{}, {wad}, map_name}).level;
+  GameOptions options = game_options_for(wads, map_name, demo.skill);
+  set_demo_game(options, demo);
+  World world(map_from_wads(wads, map_name, level), level, options, Random{});
+  const std::string stem = wad_file.substr(0, wad_file.find('.')) + "_demo" + std::to_string(demo_number);
+  const NetTrace trace = read_net_trace(golden / (stem + ".trace"));
+  std::ofstream dump;
+  if (const char* d = std::getenv("P3D_SYNC_DUMP")) dump.open(std::filesystem::path(d) / (stem + ".ours"));
+  Sync s;
+  s.traced = trace.hashes.size();
+  s.demo_tics = demo.tic_count();
+  for (size_t t = 0; t < trace.hashes.size() && t < demo.tic_count(); ++t) {
+    std::array<TicCmd, kMaxPlayers> cmds{};
+    for (int n = 0; n < kMaxPlayers; ++n)
+      if (demo.players[size_t(n)]) {
+        const DoomTic d = demo.player_tic(t, n);
+        cmds[size_t(n)] = TicCmd{d.forward, d.side, d.turn, d.buttons};
+      }
+    world.tick_players(cmds);
+    if (dump.is_open()) dump_things(dump, world, t);
+    const std::vector<std::string> ours = net_lines(world, t);
+    if (fnv1a64(joined(ours)) != trace.hashes[t]) {
+      std::printf("[ parted   ] %s %s at tic %zu:\n", wad_file.c_str(), lump.c_str(), t);
+      for (const std::string& l : ours) std::printf("  ours  %s\n", l.c_str());
+      if (const auto it = trace.full.find(t); it != trace.full.end())
+        for (const std::string& l : it->second) std::printf("  doom  %s\n", l.c_str());
+      break;
+    }
+    ++s.tics_in_sync;
+  }
+  std::printf("[ sync     ] %s %s %s skill %d, %d players: %zu of %zu traced tics in sync (%zu in the demo)\n",
+              wad_file.c_str(), lump.c_str(), map_name.c_str(), demo.skill, demo.player_count(), s.tics_in_sync,
+              s.traced, s.demo_tics);
+  return s;
+}
+
+// FreeDM's own demos: three- and four-player altdeath games. Two are in the tree;
+// P3D_FREEDM_TRACES=DIR plays all four beside the traces there (freedm_demoN.trace,
+// made as tools/peers/netgame_trace.py says).
+TEST(DemoSync, FreedmsAltdeathDemosPlayInSyncWithChocolateDoomForEveryPlayer) {
+  const char* all = std::getenv("P3D_FREEDM_TRACES");
+  for (int demo : all ? std::vector<int>{1, 2, 3, 4} : std::vector<int>{3, 4}) {
+    const Sync s = all ? net_sync_of("freedm.wad", demo, all) : net_sync_of("freedm.wad", demo);
+    EXPECT_EQ(s.traced, s.demo_tics) << "freedm DEMO" << demo << ": the trace covers the whole demo";
+    EXPECT_EQ(s.tics_in_sync, s.demo_tics) << "freedm DEMO" << demo;
+  }
 }
 
 }  // namespace

@@ -58,6 +58,26 @@ TEST(StatusBar, PiecesAtDoomsPlacesAsTheValuesSay) {
   EXPECT_TRUE(f.shows(frame, "STFST11", 143, 168)) << "the face the index names";
 }
 
+// A netgame: the face on the player's colour; in deathmatch the frags where the arms were.
+TEST(StatusBar, DeathmatchShowsTheFragsAndANetgameThePlayersColour) {
+  Fixture f;
+  image::Image frame(320, 200, image::rgba(1, 2, 3));
+  StatusValues v;
+  v.deathmatch = true;
+  v.frags = 12;
+  v.face_background = 2;
+  f.art.draw(v, frame, f.palette);
+  const int digit = wad::decode_picture(f.wads.find("STTNUM0")->bytes, "STTNUM0").width;
+  EXPECT_TRUE(f.shows(frame, "STTNUM2", 138 - digit, 171)) << "12 frags, right-aligned at x 138";
+  EXPECT_TRUE(f.shows(frame, "STTNUM1", 138 - 2 * digit, 171));
+  EXPECT_FALSE(f.shows(frame, "STYSNUM2", 111, 172)) << "no arms in deathmatch";
+  EXPECT_FALSE(f.shows(frame, "STARMS", 104, 168));
+  image::Image coop(320, 200, image::rgba(1, 2, 3));
+  v.deathmatch = false;
+  f.art.draw(v, coop, f.palette);
+  EXPECT_TRUE(f.shows(coop, "STYSNUM2", 111, 172));
+}
+
 TEST(StatusBar, ScaledByWholeFactorsAndCentred) {
   StatusBarFixture f;
   image::Image small(320, 200), big(700, 400);
