@@ -17,6 +17,7 @@
 #include "engine/play/doom_demo.h"
 #include "engine/play/thing_dump.h"
 #include "engine/play/world.h"
+#include "engine/util/bytes.h"
 #include "engine/util/file.h"
 #include "tests/support/player_trace.h"
 #include "tests/support/support.h"
@@ -165,12 +166,6 @@ NetTrace read_net_trace(const std::filesystem::path& path) {
   return out;
 }
 
-uint64_t fnv1a64(const std::string& text) {
-  uint64_t h = 0xcbf29ce484222325ull;
-  for (unsigned char c : text) h = (h ^ c) * 0x100000001b3ull;
-  return h;
-}
-
 // Our players after a tic, in the trace's words (p3d-multiplayer.patch's fprintf).
 std::vector<std::string> net_lines(const World& w, size_t tic) {
   std::vector<std::string> out;
@@ -221,9 +216,10 @@ Sync net_sync_of(const std::string& wad_file, int demo_number,
         cmds[size_t(n)] = TicCmd{d.forward, d.side, d.turn, d.buttons};
       }
     world.tick_players(cmds);
-    if (dump.is_open()) dump_things(dump, world, t);
+    if (dump.is_open()) dump << dump_things(world, t);
     const std::vector<std::string> ours = net_lines(world, t);
-    if (fnv1a64(joined(ours)) != trace.hashes[t]) {
+    const std::string text = joined(ours);
+    if (fnv1a64({reinterpret_cast<const uint8_t*>(text.data()), text.size()}) != trace.hashes[t]) {
       std::printf("[ parted   ] %s %s at tic %zu:\n", wad_file.c_str(), lump.c_str(), t);
       for (const std::string& l : ours) std::printf("  ours  %s\n", l.c_str());
       if (const auto it = trace.full.find(t); it != trace.full.end())

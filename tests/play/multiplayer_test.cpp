@@ -178,7 +178,9 @@ TEST(Multiplayer, PlacedWeaponsStayInCoopAndDeathmatchAndGoInAltdeath) {
     // Deathmatch gives five clips of shells, co-op and altdeath two.
     EXPECT_EQ(p.inv.ammo[size_t(AmmoType::kShell)], mode == Deathmatch::kDeathmatch ? 20 : 8) << int(mode);
     g.world->touch_special_thing(gun, p.mo);  // once owned, a staying weapon gives nothing more
-    if (mode != Deathmatch::kAltdeath) EXPECT_EQ(p.inv.ammo[size_t(AmmoType::kShell)], mode == Deathmatch::kDeathmatch ? 20 : 8);
+    if (mode != Deathmatch::kAltdeath) {
+      EXPECT_EQ(p.inv.ammo[size_t(AmmoType::kShell)], mode == Deathmatch::kDeathmatch ? 20 : 8);
+    }
   }
 }
 

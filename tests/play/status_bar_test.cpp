@@ -60,7 +60,7 @@ TEST(StatusBar, PiecesAtDoomsPlacesAsTheValuesSay) {
 
 // A netgame: the face on the player's colour; in deathmatch the frags where the arms were.
 TEST(StatusBar, DeathmatchShowsTheFragsAndANetgameThePlayersColour) {
-  Fixture f;
+  StatusBarFixture f;
   image::Image frame(320, 200, image::rgba(1, 2, 3));
   StatusValues v;
   v.deathmatch = true;
