@@ -56,7 +56,7 @@ constexpr int kChannels = 16;
 constexpr int kMusPercussion = 15, kMidiPercussion = 9;
 constexpr uint32_t kLongestDelay = 0x0FFFFFFF;  // MIDI's variable-length numbers hold 28 bits
 // MIDI's default tempo (microseconds a quarter note) and our ticks a quarter: 1/140 s a tick.
-constexpr uint64_t kTempo = 500000, kDivision = 70;
+constexpr uint64_t kMidiTempo = 500000, kDivision = 70;
 
 class MusReader {
  public:
@@ -250,7 +250,7 @@ std::vector<uint8_t> mus_to_midi(std::span<const uint8_t> mus, const std::string
       } while (byte & 0x80);
       track.delay(delay);
       score_ticks += delay;
-      if (score_ticks * kTempo / kDivision > kLongestMidiSongUs)
+      if (score_ticks * kMidiTempo / kDivision > kLongestMidiSongUs)
         in.fail(delay_at, "the score runs longer than " + std::to_string(kLongestMidiSongUs / 3600000000) + " hours");
     }
   }
