@@ -118,14 +118,15 @@ void Canvas::set_up_doom_wall(DoomSide& d, const WallHit& hit, int near) {
   const level::SectorState* b = d.far != kNone ? &state_->sectors[d.far] : nullptr;
   const Fixed viewz = view_->fz;
   const Fixed front_floor = fixed_of(s.floor);
-  d.worldtop = fixed_of(s.ceiling) - viewz;
-  d.worldbottom = front_floor - viewz;
+  // Doom's fixed_t heights wrap (a sector at the map's limits, seen from the other one).
+  d.worldtop = play::wrap_sub(fixed_of(s.ceiling), viewz);
+  d.worldbottom = play::wrap_sub(front_floor, viewz);
   d.worldhigh = d.worldlow = 0;
   d.mark_ceiling = d.mark_floor = true;
   d.top_part = d.bottom_part = false;
   if (b) {
-    d.worldhigh = fixed_of(b->ceiling) - viewz;
-    d.worldlow = fixed_of(b->floor) - viewz;
+    d.worldhigh = play::wrap_sub(fixed_of(b->ceiling), viewz);
+    d.worldlow = play::wrap_sub(fixed_of(b->floor), viewz);
     if (s.ceiling_texture == kSky && b->ceiling_texture == kSky) d.worldtop = d.worldhigh;  // the sky hack
     d.mark_floor = d.worldlow != d.worldbottom || b->floor_texture != s.floor_texture || b->light != s.light;
     d.mark_ceiling = d.worldhigh != d.worldtop || b->ceiling_texture != s.ceiling_texture || b->light != s.light;
@@ -143,16 +144,16 @@ void Canvas::set_up_doom_wall(DoomSide& d, const WallHit& hit, int near) {
   };
   Fixed mid[3];  // each part's texture mid before the side's offsets: Doom's pegging
   mid[level::kMiddlePart] =
-      (w.flags & level::kUnpegLower) ? front_floor + height_of(level::kMiddlePart) - viewz : d.worldtop;
+      (w.flags & level::kUnpegLower) ? play::wrap_add(d.worldbottom, height_of(level::kMiddlePart)) : d.worldtop;
   mid[level::kUpperPart] = (w.flags & level::kUnpegUpper) || !b
                                ? d.worldtop
-                               : fixed_of(b->ceiling) + height_of(level::kUpperPart) - viewz;
+                               : play::wrap_add(d.worldhigh, height_of(level::kUpperPart));
   mid[level::kLowerPart] = (w.flags & level::kUnpegLower) ? d.worldtop : d.worldlow;
   const Fixed row_offset = fixed_of(side.y_offset);
   for (int part = 0; part < 3; ++part) {
     d.textures[part] = state_->shown(state_->texture(hit.wall, hit.side, part));
     d.part_x[part] = fixed_of(level_->part_x(side, part));
-    d.mid[part] = play::wrap_add(mid[part], row_offset + fixed_of(level_->part_y(side, part)));
+    d.mid[part] = play::wrap_add(mid[part], play::wrap_add(row_offset, fixed_of(level_->part_y(side, part))));
   }
 }
 

@@ -3,7 +3,8 @@
 # time, under ASan and UBSan, seeded from the bundled files; prints a table of
 # executions, coverage and crashes. A long run: tests/fuzz/run.sh 3600. Builds
 # build-sanitize first (clang, see tests/build-sanitize.sh). A crash leaves its input in
-# build-sanitize/crashes/TARGET/ and fails the script.
+# build-sanitize/crashes/TARGET/ and fails the script; kept in tests/fuzz/regressions/TARGET/
+# once fixed, every run tries it first.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-5}
@@ -22,7 +23,7 @@ seed grid tests/fuzz/seeds/room.grid tests/bad/*.grid
 seed demo tests/fuzz/seeds/walk.demo maps/*.demo
 seed cameras maps/*.cameras maps/*.path maps/*.route
 seed png maps/textures/lantern.png maps/textures/lamp.png maps/textures/hazard.png tests/bad/fake.png
-seed wad tests/fuzz/seeds/map01.wad
+seed wad tests/fuzz/seeds/map01.wad tests/fuzz/regressions/wad/*
 seed udmf tests/fuzz/seeds/textmap.udmf
 seed lmp tests/fuzz/seeds/walk.lmp tests/fuzz/seeds/old.lmp
 seed dmx tests/fuzz/seeds/beep.dmx
