@@ -200,6 +200,14 @@ class Reader {
     }
   }
 
+  // A wall's or a free line's two ends, each coordinate within the fixed-point range.
+  void read_ends(geom::IPoint& p1, geom::IPoint& p2, const std::string& what) {
+    p1 = {in_.i64(), in_.i64()};
+    p2 = {in_.i64(), in_.i64()};
+    for (int64_t c : {p1.x, p1.y, p2.x, p2.y})
+      if (c < -geom::kMaxFixed || c > geom::kMaxFixed) in_.fail(what + " coordinate out of range");
+  }
+
   void read_walls() {
     section(format::kWalls, "WALL");
     const uint32_t n = in_.count(format::kWallRecord, "walls");
@@ -207,10 +215,7 @@ class Reader {
     level_.walls.resize(n);
     for (Wall& w : level_.walls) {
       in_.at("WALL", &w - level_.walls.data());
-      w.p1 = {in_.i64(), in_.i64()};
-      w.p2 = {in_.i64(), in_.i64()};
-      for (int64_t c : {w.p1.x, w.p1.y, w.p2.x, w.p2.y})
-        if (c < -geom::kMaxFixed || c > geom::kMaxFixed) in_.fail("wall coordinate out of range");
+      read_ends(w.p1, w.p2, "wall");
       if (w.p1 == w.p2) in_.fail("zero-length wall");
       w.flags = in_.u32();
       if (w.flags & ~kWallFlags) in_.fail("unknown wall flags");
@@ -230,10 +235,7 @@ class Reader {
     level_.free_lines.resize(n);
     for (FreeLine& l : level_.free_lines) {
       in_.at("LINE", &l - level_.free_lines.data());
-      l.p1 = {in_.i64(), in_.i64()};
-      l.p2 = {in_.i64(), in_.i64()};
-      for (int64_t c : {l.p1.x, l.p1.y, l.p2.x, l.p2.y})
-        if (c < -geom::kMaxFixed || c > geom::kMaxFixed) in_.fail("free line coordinate out of range");
+      read_ends(l.p1, l.p2, "free line");
       if (l.p1 == l.p2) in_.fail("free line through one point");
     }
   }

@@ -11,6 +11,11 @@ namespace p3d::level {
 
 namespace {
 
+// A wall's or a free line's two ends.
+void write_ends(ByteWriter& out, const geom::IPoint& p1, const geom::IPoint& p2) {
+  for (int64_t c : {p1.x, p1.y, p2.x, p2.y}) out.i64(c);
+}
+
 void write_side(ByteWriter& out, const Side& s) {
   out.i32(s.sector);
   out.i32(s.upper);
@@ -121,10 +126,7 @@ void write_payload(ByteWriter& out, const Level& level) {
   out.u32(format::kWalls);
   out.u32(static_cast<uint32_t>(level.walls.size()));
   for (const Wall& w : level.walls) {
-    out.i64(w.p1.x);
-    out.i64(w.p1.y);
-    out.i64(w.p2.x);
-    out.i64(w.p2.y);
+    write_ends(out, w.p1, w.p2);
     out.u32(w.flags);
     out.i32(w.source);
     out.i32(w.special);
@@ -135,12 +137,7 @@ void write_payload(ByteWriter& out, const Level& level) {
 
   out.u32(format::kLines);
   out.u32(static_cast<uint32_t>(level.free_lines.size()));
-  for (const FreeLine& l : level.free_lines) {
-    out.i64(l.p1.x);
-    out.i64(l.p1.y);
-    out.i64(l.p2.x);
-    out.i64(l.p2.y);
-  }
+  for (const FreeLine& l : level.free_lines) write_ends(out, l.p1, l.p2);
 
   out.u32(format::kFragments);
   out.u32(static_cast<uint32_t>(level.fragments.size()));

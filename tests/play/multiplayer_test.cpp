@@ -16,6 +16,7 @@
 #include "engine/render/translation.h"
 #include "engine/util/error.h"
 #include "tests/support/support.h"
+#include "tests/support/wad_pictures.h"
 
 namespace p3d::play {
 namespace {
@@ -242,17 +243,8 @@ TEST(Multiplayer, TheDeathmatchIntermissionShowsTheFragTable) {
   EXPECT_EQ(frag_sum(t, 0), 4);
   image::Image frame(320, 200);
   art->draw(t, frame, palette);
-  // Whether a picture's opaque texels show at Doom's place (x, y).
-  auto shows = [&](const std::string& lump, int x, int y) {
-    const wad::IndexedImage pic = wad::decode_picture(wads.find(lump)->bytes, lump);
-    for (int c = 0; c < pic.width; ++c)
-      for (int r = 0; r < pic.height; ++r)
-        if (pic.opaque[pic.at(c, r)] &&
-            frame.at(x - pic.left_offset + c, y - pic.top_offset + r) != palette[pic.indices[pic.at(c, r)]])
-          return false;
-    return true;
-  };
-  auto width = [&](const std::string& lump) { return wad::decode_picture(wads.find(lump)->bytes, lump).width; };
+  auto shows = [&](const std::string& lump, int x, int y) { return test::shows_picture(frame, wads, palette, lump, x, y); };
+  auto width = [&](const std::string& lump) { return test::picture_width(wads, lump); };
   EXPECT_TRUE(shows("WIKILRS", 10, 100));
   EXPECT_TRUE(shows("WIVCTMS", 5, 50));
   EXPECT_TRUE(shows("WIMSTT", 269 - width("WIMSTT") / 2, 68 - 33 + 10));
@@ -271,16 +263,10 @@ TEST(Multiplayer, TheCoopIntermissionShowsEachPlayersCounts) {
   const std::vector<uint32_t> palette = wad::Art(wads).palette();
   const auto art = IntermissionArt::load(wads, 0, 1);
   ASSERT_TRUE(art.has_value());
-  auto width = [&](const std::string& lump) { return wad::decode_picture(wads.find(lump)->bytes, lump).width; };
+  auto width = [&](const std::string& lump) { return test::picture_width(wads, lump); };
   auto height = [&](const std::string& lump) { return wad::decode_picture(wads.find(lump)->bytes, lump).height; };
   auto shows = [&](const image::Image& frame, const std::string& lump, int x, int y) {
-    const wad::IndexedImage pic = wad::decode_picture(wads.find(lump)->bytes, lump);
-    for (int c = 0; c < pic.width; ++c)
-      for (int r = 0; r < pic.height; ++r)
-        if (pic.opaque[pic.at(c, r)] &&
-            frame.at(x - pic.left_offset + c, y - pic.top_offset + r) != palette[pic.indices[pic.at(c, r)]])
-          return false;
-    return true;
+    return test::shows_picture(frame, wads, palette, lump, x, y);
   };
   Tally t;
   t.netgame = true;

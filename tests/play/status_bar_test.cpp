@@ -12,6 +12,7 @@
 #include "engine/play/world.h"
 #include "engine/wad/art.h"
 #include "tests/support/support.h"
+#include "tests/support/wad_pictures.h"
 
 namespace p3d::play {
 namespace {
@@ -23,13 +24,7 @@ struct StatusBarFixture {
 
   // Whether the picture's opaque texels show at Doom's screen place (x, y) of a 320x200 frame.
   bool shows(const image::Image& frame, const std::string& lump, int x, int y) const {
-    const wad::IndexedImage pic = wad::decode_picture(wads.find(lump)->bytes, lump);
-    for (int c = 0; c < pic.width; ++c)
-      for (int r = 0; r < pic.height; ++r)
-        if (pic.opaque[pic.at(c, r)] &&
-            frame.at(x - pic.left_offset + c, y - pic.top_offset + r) != palette[pic.indices[pic.at(c, r)]])
-          return false;
-    return true;
+    return test::shows_picture(frame, wads, palette, lump, x, y);
   }
 };
 

@@ -56,12 +56,17 @@ def wad_maps(path):
     return names
 
 
+def replay(args, demo, *options):
+    """Our game replaying the demo headless, without frames."""
+    command = [args.game, "--iwad", args.iwad, *sum((["--file", f] for f in args.file), []), "--play", demo,
+               "--headless", "--stats-only", *options]
+    return subprocess.run(command, capture_output=True, timeout=args.timeout)
+
+
 def ours_trace(args, demo, work):
     """Our replay's rows: tic k's values after k tics, as Chocolate's trace line k - 1."""
     out = os.path.join(work, "ours")
-    command = [args.game, "--iwad", args.iwad, *sum((["--file", f] for f in args.file), []), "--play", demo,
-               "--headless", "--stats-only", "--raw-stats", "--capture-every", "1", "--out", out]
-    subprocess.run(command, check=True, capture_output=True, timeout=args.timeout)
+    replay(args, demo, "--raw-stats", "--capture-every", "1", "--out", out).check_returncode()
     rows = []
     with open(os.path.join(out, "stats.csv")) as f:
         for r in csv.DictReader(f):
@@ -96,9 +101,7 @@ def first_thing_difference(args, demo, work):
     which may be tics before the player shows it."""
     theirs, ours = os.path.join(work, "chocolate.things"), os.path.join(work, "ours.things")
     chocolate_trace(args, demo, work, dump=theirs)
-    command = [args.game, "--iwad", args.iwad, *sum((["--file", f] for f in args.file), []), "--play", demo,
-               "--headless", "--stats-only", "--dump-things", ours, "--out", os.path.join(work, "dump")]
-    if subprocess.run(command, capture_output=True, timeout=args.timeout).returncode != 0:
+    if replay(args, demo, "--dump-things", ours, "--out", os.path.join(work, "dump")).returncode != 0:
         return "our game could not dump its things (--dump-things)"
     tic, index = None, 0
     with open(ours) as a, open(theirs) as b:
