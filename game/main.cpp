@@ -50,10 +50,10 @@ DemoBytes demo_bytes(const std::string& name, const bsp::LevelSource& source) {
   const std::string lump = wad::normalize_name(name);
   const bool lump_name = lump.size() == 5 && lump.compare(0, 4, "DEMO") == 0 && std::isdigit(static_cast<unsigned char>(lump[4]));
   if (!source.is_wad() || !lump_name)
-    throw CLI::ValidationError("--play", name + ": no such file" + std::string(source.is_wad() ? " or DEMOn lump" : ""));
+    throw cli::ValidationError("--play", name + ": no such file" + std::string(source.is_wad() ? " or DEMOn lump" : ""));
   const wad::Stack wads = bsp::read_wads(source.wads);
   const wad::Lump* found = wads.find(lump);
-  if (!found) throw CLI::ValidationError("--play", name + ": no such file, and the WADs have no lump " + lump);
+  if (!found) throw cli::ValidationError("--play", name + ": no such file, and the WADs have no lump " + lump);
   return {{found->bytes.begin(), found->bytes.end()}, source.wads.back().filename().string() + ":" + lump};
 }
 
@@ -77,18 +77,18 @@ game::Settings read_settings(const std::filesystem::path& path) {
 }
 
 // Doom's music: -nomusic, the sound font, the volume.
-void add_music_options(CLI::App& app, bool& no_music, std::string& soundfont, int& volume) {
+void add_music_options(cli::App& app, bool& no_music, std::string& soundfont, int& volume) {
   app.add_flag("--nomusic", no_music, "no music (Doom's -nomusic)");
   app.add_option("--soundfont", soundfont,
                  "the music's SoundFont (.sf2); default: $SDL_SOUNDFONTS, else Debian's fluid-soundfont-gm");
   app.add_option("--music-volume", volume, "Doom's music volume, 0 to 15 (default: the settings', 8)")
-      ->check(CLI::Range(0, 15));
+      ->check(cli::Range(0, 15));
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"pseudo3d: Doom's front end on a WAD (title, menus, saves), or walk a level (.bsp, .map, .grid)", "pseudo3d"};
+  cli::App app{"pseudo3d: Doom's front end on a WAD (title, menus, saves), or walk a level (.bsp, .map, .grid)", "pseudo3d"};
   cli::LevelArgs level_args;
   std::vector<int> warp;
   std::string record, play, out_dir, resolution, window, renderer, autopilot, script, config;
@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
   cli::add_level_options(app, level_args);
   app.add_option("--warp", warp, "start on a WAD map as Doom's -warp: MAP (Doom II) or EPISODE [MAP]")
       ->expected(1, 2)
-      ->check(CLI::Range(0, 99));
+      ->check(cli::Range(0, 99));
   app.add_option("--record", record, "record every tic's input to this demo file (x.lmp: as a Doom v1.9 demo)");
   app.add_flag("--longtics", long_tics, "with --record x.lmp: Doom v1.91's long tics (whole turns), as Chocolate's -longtics");
   app.add_option("--play", play,
@@ -115,9 +115,9 @@ int main(int argc, char** argv) {
   app.add_flag("--headless", headless,
                "no window: with --play, write frames and stats; with --autopilot, record; with --script, run it");
   app.add_option("--script", script, "--headless: drive Doom's front end by this key script (game/key_script.h)")
-      ->check(CLI::ExistingFile);
+      ->check(cli::existing_file());
   app.add_option("--capture-every", capture_every, "--headless: tics between captured frames")
-      ->check(CLI::Range(1, 1 << 20))
+      ->check(cli::Range(1, 1 << 20))
       ->capture_default_str();
   app.add_option("--out", out_dir, "--headless: directory for the frames and stats.csv");
   app.add_flag("--json", json, "--headless --play: also stats.json, the same statistics by name");
@@ -148,7 +148,7 @@ int main(int argc, char** argv) {
   app.add_flag("--deathmatch", deathmatch, "Doom's -deathmatch: deathmatch starts, every key, weapons stay");
   app.add_flag("--altdeath", altdeath, "Doom's -altdeath: deathmatch where items and weapons come back after 30 s");
   app.add_option("--timer", flags.time_limit, "Doom's -timer: a deathmatch level ends after this many minutes")
-      ->check(CLI::Range(1, 1000000));
+      ->check(cli::Range(1, 1000000));
   app.add_flag("--avg", avg, "Doom's -avg: a deathmatch level ends after 20 minutes (Austin Virtual Gaming)");
   app.add_option("--resolution,--size", resolution, "render at this fixed WxH (320x200 for the old look); "
                  "default: the window's size (640x400 headless)");
@@ -165,7 +165,7 @@ int main(int argc, char** argv) {
   app.add_option("--autopilot", autopilot,
                  "walk through these waypoints (a camera list; a camera named 'use' presses use there, 'wait' waits) "
                  "instead of reading input")
-      ->check(CLI::ExistingFile);
+      ->check(cli::existing_file());
   app.add_option("--sensitivity", sensitivity, "mouse turn per pixel, in 1/65536 of a turn (default: from the menu's "
                  "mouse sensitivity)")
       ->check(cli::finite_range(0.0, 10000.0));
@@ -177,27 +177,27 @@ int main(int argc, char** argv) {
   app.add_flag("--all-keys", all_keys, "start every map with every key (recorded in demos)");
 
   return cli::run(app, argc, argv, [&] {
-    if (!play.empty() && !autopilot.empty()) throw CLI::ValidationError("--play", "use either --play or --autopilot");
-    if (timedemo && play.empty()) throw CLI::ValidationError("--timedemo", "needs --play");
-    if (json && (!headless || play.empty())) throw CLI::ValidationError("--json", "needs --headless --play");
+    if (!play.empty() && !autopilot.empty()) throw cli::ValidationError("--play", "use either --play or --autopilot");
+    if (timedemo && play.empty()) throw cli::ValidationError("--timedemo", "needs --play");
+    if (json && (!headless || play.empty())) throw cli::ValidationError("--json", "needs --headless --play");
     if (!script.empty() && (!headless || !play.empty() || !autopilot.empty()))
-      throw CLI::ValidationError("--script", "needs --headless, without --play or --autopilot");
+      throw cli::ValidationError("--script", "needs --headless, without --play or --autopilot");
     if (headless && play.empty() && autopilot.empty() && script.empty())
-      throw CLI::ValidationError("--headless", "needs --play (to capture frames), --autopilot (to record) or --script");
+      throw cli::ValidationError("--headless", "needs --play (to capture frames), --autopilot (to record) or --script");
     if (headless && (!play.empty() || !script.empty()) && out_dir.empty())
-      throw CLI::ValidationError("--out", "--headless --play and --script need --out DIR");
-    if (fullscreen && windowed) throw CLI::ValidationError("--fullscreen", "use either --fullscreen or --windowed");
+      throw cli::ValidationError("--out", "--headless --play and --script need --out DIR");
+    if (fullscreen && windowed) throw cli::ValidationError("--fullscreen", "use either --fullscreen or --windowed");
 
     // The settings, with what the command line says for this run on top.
     const std::filesystem::path settings_file = config.empty() ? game::settings_path() : std::filesystem::path(config);
     const game::Settings saved = headless ? game::Settings{} : read_settings(settings_file);
     game::Settings settings = saved;
     if (!window.empty()) cli::parse_size(window, settings.window_width, settings.window_height, "--window");
-    if (deathmatch && altdeath) throw CLI::ValidationError("--altdeath", "use either --deathmatch or --altdeath");
+    if (deathmatch && altdeath) throw cli::ValidationError("--altdeath", "use either --deathmatch or --altdeath");
     flags.deathmatch = altdeath ? 2 : deathmatch ? 1 : 0;
     if (avg) flags.time_limit = 20;  // Doom's -avg
     if (flags.time_limit && !flags.deathmatch)
-      throw CLI::ValidationError("--timer", "--timer and --avg end deathmatch levels: add --deathmatch or --altdeath");
+      throw cli::ValidationError("--timer", "--timer and --avg end deathmatch levels: add --deathmatch or --altdeath");
     if (fullscreen || windowed) settings.fullscreen = fullscreen;
     if (!renderer.empty()) settings.renderer = renderer;
     if (music_volume >= 0) settings.menu.music_volume = music_volume;
@@ -212,12 +212,12 @@ int main(int argc, char** argv) {
     }
     bsp::LevelSource source = cli::level_source(level_args);
     if (!warp.empty()) {
-      if (!source.is_wad()) throw CLI::ValidationError("--warp", "picks a map in WADs: use it with --iwad");
-      if (!level_args.map.empty()) throw CLI::ValidationError("--warp", "use either --warp or --map");
+      if (!source.is_wad()) throw cli::ValidationError("--warp", "picks a map in WADs: use it with --iwad");
+      if (!level_args.map.empty()) throw cli::ValidationError("--warp", "use either --warp or --map");
       source.map = warp_map(source, warp);
     }
     if (map_reload && !source.is_wad() && !bsp::is_source_path(source.file))
-      throw CLI::ValidationError("--map-reload", "needs a .map or .grid source or a WAD, not a compiled level");
+      throw cli::ValidationError("--map-reload", "needs a .map or .grid source or a WAD, not a compiled level");
     int rw = 0, rh = 0;
     if (!resolution.empty()) cli::parse_size(resolution, rw, rh, "--resolution");
     if (source.is_wad() && !level_args.iwad.empty()) settings.last_wad = std::filesystem::absolute(level_args.iwad);
@@ -231,7 +231,7 @@ int main(int argc, char** argv) {
     const bool title = source.is_wad() && source.map.empty() && warp.empty() && play.empty() && autopilot.empty() &&
                        record.empty() && !map_reload;
     if (headless && !script.empty()) {
-      if (!source.is_wad()) throw CLI::ValidationError("--script", "drives Doom's front end: name a WAD with --iwad");
+      if (!source.is_wad()) throw cli::ValidationError("--script", "drives Doom's front end: name a WAD with --iwad");
       front_options.save_dir = std::filesystem::path(out_dir) / "savegames";  // never the player's own slots
       std::unique_ptr<game::FrontEnd> front =
           title ? std::make_unique<game::FrontEnd>(source, settings, front_options)
@@ -246,10 +246,10 @@ int main(int argc, char** argv) {
 
     std::optional<play::Demo> demo;
     std::optional<play::DoomDemo> doom_demo;
-    if (stats_only && (!headless || play.empty())) throw CLI::ValidationError("--stats-only", "needs --headless --play");
+    if (stats_only && (!headless || play.empty())) throw cli::ValidationError("--stats-only", "needs --headless --play");
     if ((!save_at.empty() || !load_at.empty() || raw_stats || !dump_things.empty()) && (!headless || play.empty()))
-      throw CLI::ValidationError("--save-at", "--save-at, --load-at, --raw-stats and --dump-things need --headless --play");
-    if (load_doom_only && load_at.empty()) throw CLI::ValidationError("--load-doom-only", "needs --load-at");
+      throw cli::ValidationError("--save-at", "--save-at, --load-at, --raw-stats and --dump-things need --headless --play");
+    if (load_doom_only && load_at.empty()) throw cli::ValidationError("--load-doom-only", "needs --load-at");
     if (!play.empty()) {
       const DemoBytes bytes = demo_bytes(play, source);
       if (play::is_our_demo(bytes.bytes)) {

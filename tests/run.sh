@@ -7,11 +7,16 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
 times=()
-phase() {  # phase NAME COMMAND...: runs it, keeps its wall time
-  local name=$1 start=$SECONDS
+cpu_ticks() {  # prints "busy total": the machine's CPU time so far, in clock ticks
+  awk '/^cpu /{print $2 + $3 + $4 + $7 + $8, $2 + $3 + $4 + $5 + $6 + $7 + $8; exit}' /proc/stat
+}
+phase() {  # phase NAME COMMAND...: runs it, keeps its wall time and how busy the cores were
+  local name=$1 start=$SECONDS before after
   shift
+  before=$(cpu_ticks)
   "$@"
-  times+=("$name $((SECONDS - start))")
+  after=$(cpu_ticks)
+  times+=("$name|$((SECONDS - start))|$(echo "$before $after" | awk '{d = $4 - $2; print d ? int(100 * ($3 - $1) / d) : 0}')")
 }
 sanitized_ctest() {
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
@@ -24,10 +29,11 @@ phase "test Release" ctest --test-dir build --output-on-failure -j "$jobs"
 phase "configure and build sanitized" tests/build-sanitize.sh
 phase "test sanitized" sanitized_ctest
 phase "fuzz smoke" tests/fuzz/run.sh 5
-printf '\n| step | seconds |\n|---|---:|\n'
+printf '\n| step | seconds | cores busy |\n|---|---:|---:|\n'
 total=0
 for t in "${times[@]}"; do
-  printf '| %s | %s |\n' "${t% *}" "${t##* }"
-  total=$((total + ${t##* }))
+  IFS='|' read -r name seconds busy <<<"$t"
+  printf '| %s | %s | %s%% |\n' "$name" "$seconds" "$busy"
+  total=$((total + seconds))
 done
-printf '| total | %s |\n' "$total"
+printf '| total | %s | |\n' "$total"

@@ -1036,49 +1036,49 @@ std::string cpu_name() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"pseudo3d-bench: renderer and compiler benchmarks, printed as markdown tables", "pseudo3d-bench"};
+  cli::App app{"pseudo3d-bench: renderer and compiler benchmarks, printed as markdown tables", "pseudo3d-bench"};
   Settings s;
   std::vector<std::string> sections;
   std::string size_text = "640x400";
   app.add_option("sections", sections,
                  "render, scaling, grids, strategies, hostile, capture, threads, wad, doom, play (default: all but wad, doom and play; with --iwad, wad)")
-      ->check(CLI::IsMember({"render", "scaling", "grids", "strategies", "hostile", "capture", "threads", "wad", "doom", "play"}));
+      ->check(cli::IsMember({"render", "scaling", "grids", "strategies", "hostile", "capture", "threads", "wad", "doom", "play"}));
   cli::add_wad_options(app, s.wads);
-  app.add_option("--cameras", s.cameras, "wad: random cameras per map")->check(CLI::Range(1, 100000))->capture_default_str();
-  app.add_option("--runs", s.runs, "wad: compiles per map and tool (median)")->check(CLI::Range(1, 1000))->capture_default_str();
+  app.add_option("--cameras", s.cameras, "wad: random cameras per map")->check(cli::Range(1, 100000))->capture_default_str();
+  app.add_option("--runs", s.runs, "wad: compiles per map and tool (median)")->check(cli::Range(1, 1000))->capture_default_str();
   cli::add_skill_option(app, s.skill);
   app.add_option("--size", size_text, "resolution WxH")->capture_default_str();
-  app.add_option("--repeat", s.repeat, "renders per camera")->check(CLI::Range(1, 1000))->capture_default_str();
+  app.add_option("--repeat", s.repeat, "renders per camera")->check(cli::Range(1, 1000))->capture_default_str();
   app.add_option("--budget", s.budget_seconds, "seconds per renderer and map before the path is cut short")
       ->check(cli::finite_range(0.01, 3600.0))
       ->capture_default_str();
   app.add_option("--sizes", s.sizes, "wall counts for the scaling section")->delimiter(',')->capture_default_str();
   app.add_option("--renderers", s.renderers, "renderers to time (default: all)")->delimiter(',');
   app.add_option("--beside", s.beside_mapc, "hostile: another pseudo3d-mapc (an older build) compiling each level just before this one")
-      ->check(CLI::ExistingFile);
+      ->check(cli::existing_file());
   std::string json;
   app.add_option("--peer-reps", s.peer_reps, "doom: Crispy Doom's timings per demo (median); 0: ours only")
-      ->check(CLI::Range(0, 100))
+      ->check(cli::Range(0, 100))
       ->capture_default_str();
   app.add_option("--json", json, "also write the tables as JSON (sections of rows, columns by name)");
   std::string plots;
   app.add_option("--plots", plots, "also draw charts of the scaling, threads and doom tables as SVG files in this directory");
   app.add_option("--source-dir", s.source_dir, "the project's source directory (for maps/)")
-      ->check(CLI::ExistingDirectory)
+      ->check(cli::existing_directory())
       ->capture_default_str();
   return cli::run(app, argc, argv, [&] {
     cli::parse_size(size_text, s.width, s.height);
     if (!json.empty()) cli::output_file(json, ".json", "--json");
     if (!plots.empty()) cli::output_dir(plots, "--plots");  // before the run, not after it
     for (const auto& r : s.renderers)
-      if (!render::make_renderer(r)) throw CLI::ValidationError("--renderers", "unknown renderer '" + r + "'");
+      if (!render::make_renderer(r)) throw cli::ValidationError("--renderers", "unknown renderer '" + r + "'");
     if (sections.empty())
       sections = s.wads.iwad.empty() ? std::vector<std::string>{"render", "scaling", "grids", "strategies", "hostile", "capture", "threads"}
                                      : std::vector<std::string>{"wad"};
     // hostile measures children's peak memory, which includes this process's size at fork: first.
     std::stable_partition(sections.begin(), sections.end(), [](const std::string& name) { return name == "hostile"; });
     if (std::count(sections.begin(), sections.end(), "wad") && s.wads.iwad.empty())
-      throw CLI::ValidationError("--iwad", "the wad section needs WADs: --iwad [--file ...] [--map ...]");
+      throw cli::ValidationError("--iwad", "the wad section needs WADs: --iwad [--file ...] [--map ...]");
 #ifndef NDEBUG
     report.print("WARNING: not a Release build; timings are meaningless.\n");
 #endif

@@ -66,7 +66,7 @@ class PngEncoder {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"pseudo3d-capture: render views of a level (.bsp, .map, .grid or a WAD's map) to PNG files", "pseudo3d-capture"};
+  cli::App app{"pseudo3d-capture: render views of a level (.bsp, .map, .grid or a WAD's map) to PNG files", "pseudo3d-capture"};
   cli::LevelArgs level_args;
   std::string output, pos_text, size_text = "640x400", renderer_name = "bsp", columns, cameras, json;
   std::optional<double> angle;
@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
   }())->capture_default_str();
   app.add_option("-o,--output", output, "PNG to write (a directory with --cameras); default: out/<level>.png (out/<level>/)");
   app.add_option("--columns", columns, "CSV of x,wall,dist per column (a directory with --cameras)");
-  app.add_option("--cameras", cameras, "file of cameras: NAME X Y ANGLE [EYE [FOV]] per line")->check(CLI::ExistingFile);
+  app.add_option("--cameras", cameras, "file of cameras: NAME X Y ANGLE [EYE [FOV]] per line")->check(cli::existing_file());
   app.add_flag("--stats", stats, "print per-frame statistics (a statdump line) and time per frame (apart)");
   app.add_option("--json", json, "with --stats: also write them as JSON, with the same names");
   app.add_flag("--all-warnings", all_warnings, "list every warning about a WAD map's quirks");
@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
     int width = 0, height = 0;
     cli::parse_size(size_text, width, height);
     auto renderer = render::make_renderer(renderer_name, ropt);
-    if (!renderer) throw CLI::ValidationError("--renderer", "unknown renderer '" + renderer_name + "'");
+    if (!renderer) throw cli::ValidationError("--renderer", "unknown renderer '" + renderer_name + "'");
 
     const bsp::LevelSource source = cli::level_source(level_args);
     if (output.empty()) output = cli::default_output(source, cameras.empty() ? ".png" : "/");
@@ -112,12 +112,12 @@ int main(int argc, char** argv) {
     }
     if (!json.empty()) cli::output_file(json, ".json", "--json");
     std::vector<render::CameraSpec> shots;
-    if (!json.empty() && !stats) throw CLI::ValidationError("--json", "writes the --stats: add --stats");
+    if (!json.empty() && !stats) throw cli::ValidationError("--json", "writes the --stats: add --stats");
     if (!cameras.empty()) {
-      if (!pos_text.empty()) throw CLI::ValidationError("--pos", "use either --pos or --cameras");
+      if (!pos_text.empty()) throw cli::ValidationError("--pos", "use either --pos or --cameras");
       shots = render::read_camera_list(cameras);
     } else {
-      if (angle && !std::isfinite(*angle)) throw CLI::ValidationError("--angle", "must be finite");
+      if (angle && !std::isfinite(*angle)) throw cli::ValidationError("--angle", "must be finite");
       cli::check_eye(eye);
     }
 

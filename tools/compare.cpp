@@ -97,7 +97,7 @@ image::Image compose(const std::vector<Row>& rows, int w, int h) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"pseudo3d-compare: one level and camera through every renderer, side by side", "pseudo3d-compare"};
+  cli::App app{"pseudo3d-compare: one level and camera through every renderer, side by side", "pseudo3d-compare"};
   cli::LevelArgs level_args;
   std::string pos_text, path_file, size_text = "320x200", output, json;
   std::vector<std::string> names;
@@ -113,11 +113,11 @@ int main(int argc, char** argv) {
   app.add_option("--eye", eye, "eye height above the floor")->check(cli::finite())->capture_default_str();
   app.add_option("--fov", fov, "horizontal field of view")->check(cli::finite_range(1.0, 179.0))->capture_default_str();
   app.add_option("--path", path_file, "camera path (NAME X Y ANGLE [EYE [FOV]] per line): report medians")
-      ->check(CLI::ExistingFile);
+      ->check(cli::existing_file());
   app.add_option("--size", size_text, "resolution WxH")->capture_default_str();
   app.add_option("--renderers", names, "renderers to compare (default: every one that can draw the level)")
       ->delimiter(',');
-  app.add_option("--frames", frames, "timed frames per camera (median)")->check(CLI::Range(1, 1000))->capture_default_str();
+  app.add_option("--frames", frames, "timed frames per camera (median)")->check(cli::Range(1, 1000))->capture_default_str();
   cli::add_renderer_options(app, ropt);
   app.add_option("-o,--output", output, "PNG to write (default: out/<level>_compare.png)");
   app.add_option("--json", json, "also write the table as JSON");
@@ -131,10 +131,10 @@ int main(int argc, char** argv) {
     if (!json.empty()) cli::output_file(json, ".json", "--json");
     std::vector<render::CameraSpec> specs;
     if (!path_file.empty()) {
-      if (!pos_text.empty()) throw CLI::ValidationError("--pos", "use either --pos or --path");
+      if (!pos_text.empty()) throw cli::ValidationError("--pos", "use either --pos or --path");
       specs = render::read_camera_list(path_file);
     } else {
-      if (angle && !std::isfinite(*angle)) throw CLI::ValidationError("--angle", "must be finite");
+      if (angle && !std::isfinite(*angle)) throw cli::ValidationError("--angle", "must be finite");
       cli::check_eye(eye);
     }
     const bool asked = !names.empty();
@@ -155,7 +155,7 @@ int main(int argc, char** argv) {
     std::vector<Row> rows;
     for (const std::string& name : names) {
       auto r = render::make_renderer(name, ropt);
-      if (!r) throw CLI::ValidationError("--renderers", "unknown renderer '" + name + "'");
+      if (!r) throw cli::ValidationError("--renderers", "unknown renderer '" + name + "'");
       if (!r->supports(level)) {
         if (asked) std::fprintf(stderr, "pseudo3d-compare: %s: the %s renderer cannot draw this level (it needs %s); left out\n",
                                 opened.name.c_str(), name.c_str(), std::string(r->needs()).c_str());

@@ -172,8 +172,8 @@ int compile_one(Args& a, const bsp::LevelSource& source, Progress& progress) {
 
 // Every map of the WADs into a directory, with a progress line and a summary table.
 int compile_all(Args& a, const bsp::LevelSource& source) {
-  if (!source.is_wad()) throw CLI::ValidationError("--all", "compiles every map of WADs: use it with --iwad (or a WAD)");
-  if (!a.svg.empty()) throw CLI::ValidationError("--svg", "draws one level: leave out --all");
+  if (!source.is_wad()) throw cli::ValidationError("--all", "compiles every map of WADs: use it with --iwad (or a WAD)");
+  if (!a.svg.empty()) throw cli::ValidationError("--svg", "draws one level: leave out --all");
   const wad::Stack wads = bsp::read_wads(source.wads);
   const std::vector<std::string> maps = wads.map_names();
   if (maps.empty()) throw Error(source.wads.back().string() + ": the WADs hold no maps");
@@ -218,7 +218,7 @@ int compile_all(Args& a, const bsp::LevelSource& source) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"pseudo3d-mapc: compile a level (.map, .grid, or a WAD map) into a self-contained BSP (.bsp)", "pseudo3d-mapc"};
+  cli::App app{"pseudo3d-mapc: compile a level (.map, .grid, or a WAD map) into a self-contained BSP (.bsp)", "pseudo3d-mapc"};
   Args a;
   cli::add_level_options(app, a.level);
   app.add_option("-o,--output", a.output,
@@ -226,14 +226,14 @@ int main(int argc, char** argv) {
   app.add_flag("--all", a.all_maps, "compile every map of the WADs into the -o directory, with a summary table");
   app.add_flag("--all-warnings", a.all_warnings, "list every warning about a WAD map's quirks (default: 5 of a kind)");
   app.add_option("--strategy", a.strategy, "splitter choice: first, random, freesplit or greedy")
-      ->check(CLI::IsMember({"first", "random", "freesplit", "greedy"}))
+      ->check(cli::IsMember({"first", "random", "freesplit", "greedy"}))
       ->capture_default_str();
   app.add_option("--seed", a.seed, "seed for random choices (same seed, same file)")->capture_default_str();
   app.add_option("--candidates", a.options.greedy_candidates, "greedy: candidate splitters per cell")
-      ->check(CLI::Range(1, 1 << 20))
+      ->check(cli::Range(1, 1 << 20))
       ->capture_default_str();
   app.add_option("--sample", a.options.greedy_sample, "greedy: fragments scored per candidate")
-      ->check(CLI::Range(1, 1 << 30))
+      ->check(cli::Range(1, 1 << 30))
       ->capture_default_str();
   // Greedy's weights, each a finite cost of its own.
   struct Weight {
@@ -252,7 +252,7 @@ int main(int argc, char** argv) {
   for (const Weight& w : weights)
     app.add_option(w.name, *w.value, w.help)->check(cli::finite_range(0.0, 1e9))->capture_default_str();
   app.add_option("--free-min", a.options.free_min_fragments, "greedy: fragments a cell needs for a free splitter (a line holding no wall)")
-      ->check(CLI::Range(2, 1 << 30))
+      ->check(cli::Range(2, 1 << 30))
       ->capture_default_str();
   app.add_option("--free-lopsided", a.options.free_lopsided,
                  "greedy: a free splitter is tried when the best wall's line takes less than this share of the cell")
@@ -262,7 +262,7 @@ int main(int argc, char** argv) {
       ->check(cli::finite_range(0.0, 0.5))
       ->capture_default_str();
   app.add_option("--free-candidates", a.options.free_candidates, "greedy: lines through two vertices scored as free splitters per cell")
-      ->check(CLI::Range(0, 1 << 20))
+      ->check(cli::Range(0, 1 << 20))
       ->capture_default_str();
   app.add_flag("--stats", a.stats, "print tree statistics (a statdump line) and times (apart)");
   app.add_option("--json", a.json, "with --stats: also write them as JSON, with the same names");
@@ -271,18 +271,18 @@ int main(int argc, char** argv) {
   app.add_option("--pos", a.pos, "--svg: show a camera at X,Y: its view cone, draw order and closed columns");
   app.add_option("--angle", a.angle, "--svg: the camera's angle")->check(cli::finite())->capture_default_str();
   app.add_option("--fov", a.fov, "--svg: the camera's field of view")->check(cli::finite_range(1.0, 179.0))->capture_default_str();
-  app.add_option("--columns", a.columns, "--svg: screen columns traced")->check(CLI::Range(1, 4096))->capture_default_str();
+  app.add_option("--columns", a.columns, "--svg: screen columns traced")->check(cli::Range(1, 4096))->capture_default_str();
 
   return cli::run(app, argc, argv, [&] {
     a.options.strategy = *bsp::parse_strategy(a.strategy);
     a.options.seed = a.seed;
     const bsp::LevelSource source = cli::level_source(a.level);
-    if (!a.json.empty() && !a.stats) throw CLI::ValidationError("--json", "writes the --stats: add --stats");
+    if (!a.json.empty() && !a.stats) throw cli::ValidationError("--json", "writes the --stats: add --stats");
     if (!a.json.empty()) cli::output_file(a.json, ".json", "--json");
     if (!a.svg.empty()) cli::output_file(a.svg, ".svg", "--svg");
     if (a.output.empty()) a.output = cli::default_output(source, a.all_maps ? "/" : ".bsp");
     if (a.all_maps) {
-      if (!a.level.map.empty()) throw CLI::ValidationError("--all", "compiles every map: leave out --map");
+      if (!a.level.map.empty()) throw cli::ValidationError("--all", "compiles every map: leave out --map");
       return compile_all(a, source);
     }
     cli::output_file(a.output, ".bsp", "--output");

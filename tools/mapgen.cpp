@@ -23,7 +23,7 @@ std::vector<std::string> texture_files(const std::string& texture_dir, const std
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"pseudo3d-mapgen: write a random level: a .map (soup, rooms, shapes) or a .grid (maze, caves)", "pseudo3d-mapgen"};
+  cli::App app{"pseudo3d-mapgen: write a random level: a .map (soup, rooms, shapes) or a .grid (maze, caves)", "pseudo3d-mapgen"};
   const std::string texture_dir = (cli::bundled_maps_dir() / "textures").string();
   std::string kind, output, grid_size = "64x64";
   map::GenerateOptions options;
@@ -36,12 +36,12 @@ int main(int argc, char** argv) {
                  "shapes: circle, ellipse, jitter (a circle's vertices moved in or out), star, fan, spiral, comb, rings "
                  "(nested circular rooms), each vertex on the 1/256 grid")
       ->required()
-      ->check(CLI::IsMember(kinds));
+      ->check(cli::IsMember(kinds));
   app.add_option("--walls", options.walls, "soup, rooms, shapes: number of walls (rooms: at least this many)")
-      ->check(CLI::Range(size_t{1}, limits::kMaxWalls / 2))
+      ->check(cli::Range(size_t{1}, limits::kMaxWalls / 2))
       ->capture_default_str();
   app.add_option("--grid", grid_size, "maze, caves, arena: tiles WxH")->capture_default_str();
-  app.add_option("--cell", grid.cell, "maze, caves, arena: cell size in map units")->check(CLI::Range(8, 512))->capture_default_str();
+  app.add_option("--cell", grid.cell, "maze, caves, arena: cell size in map units")->check(cli::Range(8, 512))->capture_default_str();
   app.add_option("--seed", options.seed, "random seed")->capture_default_str();
   app.add_option("-o,--output", output, "file to write")->required();
 
@@ -49,14 +49,14 @@ int main(int argc, char** argv) {
     const bool grid_kind = kind == "maze" || kind == "caves" || kind == "arena";
     const std::string ext = std::filesystem::path(output).extension().string();
     if (ext != (grid_kind ? ".grid" : ".map"))
-      throw CLI::ValidationError("--output", kind + " writes a " + (grid_kind ? ".grid tile map" : ".map") + ": name it " +
+      throw cli::ValidationError("--output", kind + " writes a " + (grid_kind ? ".grid tile map" : ".map") + ": name it " +
                                                  std::filesystem::path(output).replace_extension(grid_kind ? ".grid" : ".map").string());
     if (const auto parent = std::filesystem::path(output).parent_path(); !parent.empty())
       std::filesystem::create_directories(parent);
     if (grid_kind) {
       cli::parse_size(grid_size, grid.cols, grid.rows);
       if (grid.cols < 8 || grid.rows < 8 || grid.cols > 4096 || grid.rows > 4096)
-        throw CLI::ValidationError("--grid", "between 8x8 and 4096x4096 tiles");
+        throw cli::ValidationError("--grid", "between 8x8 and 4096x4096 tiles");
       grid.kind = kind;
       grid.seed = options.seed;
       grid.texture_files = texture_files(texture_dir, {"brick", "stone", "metal", "wood", "tech", "tiles", "ceiling"});

@@ -163,7 +163,7 @@ void save_picture(const image::Image& ours, const image::Image& theirs, const st
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"peer_pixels: our frames against a Doom port's, pixel by pixel (as palette colours)", "peer_pixels"};
+  cli::App app{"peer_pixels: our frames against a Doom port's, pixel by pixel (as palette colours)", "peer_pixels"};
   std::string iwad, label = "view", pictures;
   std::vector<std::string> files;
   app.add_option("--iwad", iwad, "the WAD whose PLAYPAL the frames use")->required();

@@ -283,7 +283,7 @@ image::Image lantern() {  // a lantern hanging from a chain
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"pseudo3d-texgen: write the bundled procedural textures (CC0) into a directory", "pseudo3d-texgen"};
+  cli::App app{"pseudo3d-texgen: write the bundled procedural textures (CC0) into a directory", "pseudo3d-texgen"};
   std::string dir;
   app.add_option("directory", dir, "output directory, e.g. maps/textures (made if missing)")->required();
   return cli::run(app, argc, argv, [&] {
