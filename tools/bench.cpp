@@ -484,6 +484,31 @@ std::pair<double, double> time_threads(const level::Level& level, const level::S
   return {median(ms1), median(msn)};
 }
 
+// Every map of a WAD at once: `pseudo3d-mapc --all` beside ZDBSP rebuilding the
+// whole WAD's nodes, whole processes, interleaved, median of `runs`.
+void bench_whole_wad(const std::filesystem::path& wad, const std::string& mapc, bool zdbsp,
+                     const std::filesystem::path& dir, int runs) {
+  const std::vector<std::string> ours = {mapc, "--iwad", wad.string(), "--all", "-o", (dir / "all").string()};
+  const std::vector<std::string> peer = {"zdbsp", "-o", (dir / "all.wad").string(), wad.string()};
+  std::vector<double> ours_s, ours_cpu, peer_s, peer_cpu;
+  for (int r = 0; r < runs; ++r) {
+    const Measured o = run_measured(ours);
+    if (o.status != 0) throw Error(mapc + " --all failed (" + wad.string() + ")");
+    ours_s.push_back(o.seconds), ours_cpu.push_back(o.cpu_seconds);
+    if (!zdbsp) continue;
+    const Measured p = run_measured(peer);
+    if (p.status != 0) throw Error("zdbsp failed (" + wad.string() + ")");
+    peer_s.push_back(p.seconds), peer_cpu.push_back(p.cpu_seconds);
+  }
+  const auto peer_cell = [&](double v, int digits) { return zdbsp ? fixed(v, digits) : std::string("n/a"); };
+  report.print("\n#### %s: the whole WAD at once (`pseudo3d-mapc --all` beside ZDBSP rebuilding every map's nodes)\n\n",
+               wad.filename().c_str());
+  report.print("| WAD | mapc --all s | CPU s | zdbsp s | CPU s | mapc / zdbsp | CPU: mapc / zdbsp |\n|---|---:|---:|---:|---:|---:|---:|\n");
+  const double os = median(ours_s), oc = median(ours_cpu), ps = zdbsp ? median(peer_s) : 0, pc = zdbsp ? median(peer_cpu) : 0;
+  report.print("| %s | %s | %s | %s | %s | %s | %s |\n", wad.filename().c_str(), fixed(os, 2).c_str(), fixed(oc, 2).c_str(),
+               peer_cell(ps, 2).c_str(), peer_cell(pc, 2).c_str(), peer_cell(os / ps, 2).c_str(), peer_cell(oc / pc, 2).c_str());
+}
+
 void bench_wad(const Settings& s) {
   const bsp::LevelSource source = cli::level_source(s.wads);
   const wad::Stack wads = bsp::read_wads(source.wads);
@@ -558,6 +583,7 @@ void bench_wad(const Settings& s) {
     report.print("| worst map | | | | | | | %s | | | %s | | | %s | | | | | | | |\n", worst(seg_ratios).c_str(),
                 worst(leaf_ratios).c_str(), worst(depth_ratios).c_str());
   }
+  if (s.wads.map.empty() && source.wads.size() == 1) bench_whole_wad(source.wads.front(), mapc, zdbsp, dir, s.runs);
   std::filesystem::remove_all(dir);
 }
 

@@ -12,6 +12,7 @@
 #include "engine/level/io.h"
 #include "engine/render/renderer.h"
 #include "engine/util/file.h"
+#include "engine/wad/art_cache.h"
 #include "tools/cli.h"
 #include "tools/overview_svg.h"
 
@@ -177,6 +178,11 @@ int compile_all(Args& a, const bsp::LevelSource& source) {
   const wad::Stack wads = bsp::read_wads(source.wads);
   const std::vector<std::string> maps = wads.map_names();
   if (maps.empty()) throw Error(source.wads.back().string() + ": the WADs hold no maps");
+  wad::ImportOptions import = import_options(a);
+  try {  // the art every map shares, made once (without art, each map says why it fails)
+    import.art_cache = std::make_shared<wad::ArtCache>(wads);
+  } catch (const Error&) {
+  }
   std::filesystem::create_directories(a.output);
   const bool terminal = ::isatty(2);
   std::printf("%-6s %-28s %7s %9s %7s %7s %9s %8s %9s\n", "map", "title", "walls", "fragments", "nodes", "leaves", "depth",
@@ -189,7 +195,7 @@ int compile_all(Args& a, const bsp::LevelSource& source) {
       const auto start = std::chrono::steady_clock::now();
       bsp::Stats stats;
       std::vector<std::string> warnings;
-      const level::Level level = bsp::build_wad_map(wads, maps[i], a.options, &warnings, &stats, import_options(a));
+      const level::Level level = bsp::build_wad_map(wads, maps[i], a.options, &warnings, &stats, import);
       if (a.check && !check(level, maps[i])) throw Error(maps[i] + ": the BSP breaks its invariants");
       level::write(level, std::filesystem::path(a.output) / (maps[i] + ".bsp"));
       const double ms = cli::seconds_since(start) * 1000;

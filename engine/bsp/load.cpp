@@ -117,7 +117,7 @@ level::Level build_wad_map(const wad::Stack& wads, const std::string& map, const
   o.player_must_be_inside = false;
   const FileLoc player = imported.source.player.loc;
   level::Level level = build(std::move(imported.source), o, stats);  // its pictures move into the level
-  wad::attach_doom_data(wads, wad::normalize_name(map), level);  // to draw by Doom's rules
+  wad::attach_doom_data(wads, wad::normalize_name(map), level, import.art_cache.get());  // to draw by Doom's rules
   const bool player_outside =
       !level.sectors.empty() && level::sector_at_brute_force(level, level.player_start) == level::kNone;
   if (warnings) {

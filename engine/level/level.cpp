@@ -10,6 +10,10 @@
 #include <limits>
 #include <string>
 
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
 #include "engine/geom/polygon.h"
 #include "engine/util/doom.h"
 
@@ -29,6 +33,33 @@ void transpose_to_columns(const T* src, int w, int h, T* dst) {
         for (int y = y0; y < y1; ++y) to[y] = src[size_t(y) * w + x];
       }
     }
+}
+
+// Bit y % 64 of word y / 64 set where texel y of a column is transparent (alpha 0):
+// runs are then found a word at a time, not a texel at a time.
+void transparent_rows(const uint32_t* column, int height, std::vector<uint64_t>& words) {
+  words.assign(size_t(height + 63) / 64, 0);
+  int y = 0;
+#ifdef __SSE2__
+  const __m128i zero = _mm_setzero_si128();
+  for (; y + 4 <= height; y += 4) {  // four rows share a word: 64 is a multiple of 4
+    const __m128i alpha = _mm_srli_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(column + y)), 24);
+    const int clear = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(alpha, zero)));
+    words[size_t(y) / 64] |= uint64_t(unsigned(clear)) << (y % 64);
+  }
+#endif
+  for (; y < height; ++y)
+    if (!(column[y] >> 24)) words[size_t(y) / 64] |= uint64_t(1) << (y % 64);
+}
+
+// The first row from `y` on whose transparent bit is `bit`; `height` if none.
+int next_row(const std::vector<uint64_t>& words, int y, int height, bool bit) {
+  for (size_t w = size_t(y) / 64; w < words.size(); ++w) {
+    uint64_t candidates = bit ? words[w] : ~words[w];
+    if (w == size_t(y) / 64) candidates &= ~uint64_t(0) << (y % 64);
+    if (candidates) return std::min(height, int(w * 64) + std::countr_zero(candidates));
+  }
+  return height;
 }
 
 }  // namespace
@@ -55,26 +86,25 @@ Texture make_texture_from_columns(std::string name, int width, int height, std::
   t.pow2_height = std::has_single_bit(static_cast<unsigned>(height));
   t.texels = std::move(texels);
   t.indices = std::move(indices);
-  uint32_t transparent = 0;
-  for (uint32_t c : t.texels) transparent |= uint32_t((c >> 24) == 0);  // vectorizes, unlike an early exit
-  t.holes = transparent != 0;
   static_assert(limits::kMaxTextureSize <= UINT16_MAX, "a run's rows are 16-bit");
-  if (t.holes) {
-    t.run_start.reserve(size_t(width) + 1);
-    for (int x = 0; x < width; ++x) {
-      t.run_start.push_back(uint32_t(t.runs.size()));
-      const uint32_t* column = t.column(x);
-      for (int y = 0; y < height;) {
-        if (!(column[y] >> 24)) {
-          ++y;
-          continue;
-        }
-        const int first = y;
-        while (y < height && (column[y] >> 24)) ++y;
-        t.runs.push_back({uint16_t(first), uint16_t(y)});
-      }
-    }
+  t.run_start.reserve(size_t(width) + 1);
+  std::vector<uint64_t> transparent;
+  for (int x = 0; x < width; ++x) {
     t.run_start.push_back(uint32_t(t.runs.size()));
+    transparent_rows(t.column(x), height, transparent);
+    for (int y = 0; y < height;) {
+      const int first = next_row(transparent, y, height, false);
+      if (first == height) break;
+      y = next_row(transparent, first, height, true);
+      t.runs.push_back({uint16_t(first), uint16_t(y)});
+      if (first > 0 || y < height) t.holes = true;
+    }
+    if (t.runs.size() == t.run_start.back()) t.holes = true;  // a column with no opaque texel
+  }
+  t.run_start.push_back(uint32_t(t.runs.size()));
+  if (!t.holes) {  // one run a column, top to bottom: no posts to keep
+    std::vector<uint32_t>().swap(t.run_start);
+    std::vector<Texture::Run>().swap(t.runs);
   }
   return t;
 }

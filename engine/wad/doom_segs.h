@@ -13,15 +13,18 @@
 
 namespace p3d::wad {
 
+class ArtCache;
+
 // Fills level.doom_segs from the map's SEGS and VERTEXES when they are vanilla's and
 // fit its LINEDEFS (a wall's `source` is its LINEDEF); leaves them empty otherwise.
 void attach_doom_segs(const MapLumps& lumps, level::Level& level);
 
 // Fills level.doom_column_start and doom_columns: Doom's 128-row columns of each of the
-// level's wall textures (a texture of the WADs' TEXTURE1/2 by its name and size).
-void attach_doom_columns(const Stack& wads, level::Level& level);
+// level's wall textures (a texture of the WADs' TEXTURE1/2 by its name and size). With
+// a cache for these WADs, each texture's columns are made once for every map.
+void attach_doom_columns(const Stack& wads, level::Level& level, ArtCache* cache = nullptr);
 
 // Both, for map `map` of the WADs.
-void attach_doom_data(const Stack& wads, const std::string& map, level::Level& level);
+void attach_doom_data(const Stack& wads, const std::string& map, level::Level& level, ArtCache* cache = nullptr);
 
 }  // namespace p3d::wad

@@ -6,11 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
+#include <stdexcept>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "engine/util/error.h"
-#include "engine/wad/art.h"
+#include "engine/wad/art_cache.h"
 #include "engine/wad/nodes.h"
 #include "engine/wad/things.h"
 
@@ -32,7 +34,13 @@ struct Piece {
 class Importer {
  public:
   Importer(const Stack& stack, const MapData& data, const ImportOptions& options)
-      : stack_(stack), data_(data), options_(options), art_(stack) {}
+      : data_(data),
+        options_(options),
+        own_cache_(options.art_cache ? nullptr : std::make_unique<ArtCache>(stack)),
+        cache_(options.art_cache ? *options.art_cache : *own_cache_),
+        art_(cache_.art()) {
+    if (&cache_.stack() != &stack) throw std::logic_error("ImportOptions::art_cache serves another Stack");
+  }
 
   ImportResult run() {
     src_.path = data_.where;
@@ -81,23 +89,15 @@ class Importer {
             art_.palette()[art_.colormap()[size_t(m) * kPaletteColors + i]];
   }
 
-  int add_texture(const std::string& name, IndexedImage img) {
+  int add_texture(const std::string& name, const ArtCache::Picture& picture) {
     map::Texture t;
     t.name = name;
-    t.image = colours(img);
-    t.indices = std::move(img.indices);
+    t.image = picture.colours;
+    t.indices = picture.indices;
     t.column_major = true;
     t.loc = FileLoc{data_.where, 0};
     src_.textures.push_back(std::move(t));
     return int(src_.textures.size()) - 1;
-  }
-
-  // The picture's colours, laid out as its indices (columns); a hole is 0, transparent.
-  image::Image colours(const IndexedImage& img) const {
-    image::Image out(img.width, img.height);
-    const uint32_t* palette = art_.palette().data();
-    for (size_t p = 0; p < img.indices.size(); ++p) out.pixels[p] = palette[img.indices[p]] & (img.opaque[p] ? ~0u : 0u);
-    return out;
   }
 
   // A wall texture by name: its index, kNone for "-" or an unknown name (warned about
@@ -106,14 +106,15 @@ class Importer {
     if (name.empty() || name == "-") return map::kNone;
     const auto it = wall_textures_.find(name);
     if (it != wall_textures_.end()) return it->second;
-    std::vector<std::string> problems;
-    auto img = must_exist || art_.has_texture(name) ? art_.texture(name, problems) : std::nullopt;
-    for (const std::string& p : problems) warn("broken patches", record, p);
-    const int index = img ? add_texture(name, std::move(*img)) : map::kNone;
-    if (!img && must_exist) warn("unknown textures", record, "texture " + printable(name) + " does not exist (drawn as missing)");
+    const ArtCache::Entry* entry = must_exist || art_.has_texture(name) ? &cache_.texture(name) : nullptr;
+    const bool found = entry && entry->picture;
+    if (entry)
+      for (const std::string& p : entry->problems) warn("broken patches", record, p);
+    const int index = found ? add_texture(name, *entry->picture) : map::kNone;
+    if (!found && must_exist) warn("unknown textures", record, "texture " + printable(name) + " does not exist (drawn as missing)");
     wall_textures_[name] = index;
-    if (const std::string pair = doom::switch_partner(name); img && !pair.empty()) wall_texture(pair, record, false);
-    if (img) animate(true, name, record);
+    if (const std::string pair = doom::switch_partner(name); found && !pair.empty()) wall_texture(pair, record, false);
+    if (found) animate(true, name, record);
     return index;
   }
 
@@ -121,18 +122,17 @@ class Importer {
   int flat(const std::string& name, const std::string& record) {
     const auto it = flats_.find(name);
     if (it != flats_.end()) return it->second;
-    std::vector<std::string> problems;
-    auto img = art_.flat(name, problems);
-    for (const std::string& p : problems) warn("broken flats", record, p);
+    const ArtCache::Entry& entry = cache_.flat(name);
+    for (const std::string& p : entry.problems) warn("broken flats", record, p);
     int index;
-    if (img) {
-      index = add_texture(name, std::move(*img));
+    if (entry.picture) {
+      index = add_texture(name, *entry.picture);
     } else {
       warn("unknown flats", record, "flat " + printable(name) + " does not exist (drawn as a placeholder)");
-      index = add_texture(name, placeholder());
+      index = add_texture(name, cache_.colour(placeholder()));
     }
     flats_[name] = index;
-    if (img) animate(false, name, record);
+    if (entry.picture) animate(false, name, record);
     return index;
   }
 
@@ -492,8 +492,7 @@ class Importer {
     int lumps[map::kRotations];
     bool flips[map::kRotations] = {};
     std::fill(std::begin(lumps), std::end(lumps), -1);
-    if (sprite_lumps_.empty())
-      for (const Lump* l : stack_.namespace_lumps({"S", "SS"})) sprite_lumps_.push_back(l);
+    const std::vector<const Lump*>& sprite_lumps = cache_.sprite_lumps();
     auto install = [&](char rotation, int lump, bool flip) {
       if (rotation == '0') {
         for (int r = 0; r < map::kRotations; ++r)
@@ -502,9 +501,8 @@ class Importer {
         lumps[rotation - '1'] = lump, flips[rotation - '1'] = flip;
       }
     };
-    for (size_t k = 0; k < sprite_lumps_.size(); ++k) {
-      const std::string& lump = sprite_lumps_[k]->name;
-      if (lump.size() < 6 || lump.compare(0, 4, sprite) != 0) continue;
+    for (const uint32_t k : cache_.sprite_lumps_named(sprite)) {  // PPPP: the names that may hold the frame
+      const std::string& lump = sprite_lumps[k]->name;
       if (lump[4] == frame_letter) install(lump[5], int(k), false);
       if (lump.size() >= 8 && lump[6] == frame_letter) install(lump[7], int(k), true);
     }
@@ -522,7 +520,7 @@ class Importer {
     frame.drop = info.height;
     for (int r = 0; r < map::kRotations; ++r) {
       const int lump = lumps[r] >= 0 ? lumps[r] : any;
-      const int image = sprite_image(*sprite_lumps_[size_t(lump)], record);
+      const int image = sprite_image(*sprite_lumps[size_t(lump)], record);
       if (image < 0) return map::kNone;
       frame.image[r] = image;
       frame.flip[r] = lumps[r] >= 0 && flips[r];
@@ -534,19 +532,18 @@ class Importer {
   int sprite_image(const Lump& lump, const std::string& record) {
     if (const auto it = sprite_images_.find(lump.name); it != sprite_images_.end()) return it->second;
     int index = -1;
-    try {
-      IndexedImage img = decode_picture(lump.bytes, "sprite " + lump.name);
+    const ArtCache::Entry& entry = cache_.sprite(lump);
+    for (const std::string& p : entry.problems) warn("broken sprites", record, p + " (not drawn)");
+    if (entry.picture) {
       map::SpriteImage out;
       out.name = lump.name;
-      out.image = colours(img);
-      out.indices = std::move(img.indices);
+      out.image = entry.picture->colours;
+      out.indices = entry.picture->indices;
       out.column_major = true;
-      out.left = img.left_offset;
-      out.top = img.top_offset;
+      out.left = entry.picture->left;
+      out.top = entry.picture->top;
       src_.sprite_images.push_back(std::move(out));
       index = int(src_.sprite_images.size()) - 1;
-    } catch (const Error& e) {
-      warn("broken sprites", record, std::string(e.what()) + " (not drawn)");
     }
     sprite_images_[lump.name] = index;
     return index;
@@ -561,10 +558,11 @@ class Importer {
     return (a + b) * 0.5 + geom::Vec2(d.y, -d.x) * 8.0;  // the front is on the right
   }
 
-  const Stack& stack_;
   const MapData& data_;
   const ImportOptions& options_;
-  Art art_;
+  std::unique_ptr<ArtCache> own_cache_;  // when the options bring none
+  ArtCache& cache_;
+  const Art& art_;
   map::Source src_;
   std::vector<std::string> warnings_;
   std::map<std::string, size_t> warning_counts_;
@@ -577,7 +575,6 @@ class Importer {
     bool used;
   };
   std::optional<std::vector<AnimatedRangeInUse>> animation_frames_;
-  std::vector<const Lump*> sprite_lumps_;
 };
 
 }  // namespace

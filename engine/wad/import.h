@@ -15,6 +15,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,6 +25,8 @@
 #include "engine/wad/wad.h"
 
 namespace p3d::wad {
+
+class ArtCache;
 
 // A sprite frame a thing may show: its four-letter name, frame letter and full bright.
 struct FrameName {
@@ -41,6 +44,9 @@ struct ImportOptions {
   // Frames embedded in every map whatever its things (the player's, puffs, blood...).
   // Frames of either list whose sprite lumps the WADs lack are left out silently.
   std::vector<FrameName> always_frames;
+  // Pictures made once for many maps of the same Stack (see art_cache.h); when unset,
+  // the import makes its own.
+  std::shared_ptr<ArtCache> art_cache;
 };
 
 struct ImportResult {

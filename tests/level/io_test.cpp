@@ -310,12 +310,21 @@ TEST_F(LevelIo, TexturesOfAnySizeWrap) {
 
 // A texture with holes lists each column's runs of opaque texels (Doom's posts): every
 // opaque texel in exactly one run, runs in order, separated by transparent texels.
+// Columns up to 300 tall, in stretches of up to 80 texels: runs across the 64-row words
+// the runs are found by; any alpha but 0 is opaque.
 TEST_F(LevelIo, TexturesWithHolesListTheirOpaqueRuns) {
   Rng rng(17);
-  for (int trial = 0; trial < 50; ++trial) {
-    const int w = 1 + int(rng.below(9)), h = 1 + int(rng.below(40));
-    std::vector<uint32_t> rows(size_t(w) * size_t(h));
-    for (uint32_t& p : rows) p = rng.below(3) ? 0xFF000000u | uint32_t(rng.below(256)) : 0;
+  for (int trial = 0; trial < 100; ++trial) {
+    const int w = 1 + int(rng.below(9)), h = 1 + int(rng.below(trial < 50 ? 40 : 300));
+    std::vector<uint32_t> columns(size_t(w) * size_t(h)), rows(columns.size());
+    const uint64_t stretch = trial < 50 ? 1 : 80;
+    for (size_t i = 0; i < columns.size();) {
+      const bool opaque = rng.below(3) != 0;
+      for (uint64_t n = 1 + rng.below(stretch); n > 0 && i < columns.size(); --n, ++i)
+        columns[i] = opaque ? uint32_t(1 + rng.below(255)) << 24 | uint32_t(rng.below(256)) : 0;
+    }
+    for (int u = 0; u < w; ++u)
+      for (int v = 0; v < h; ++v) rows[size_t(v) * size_t(w) + size_t(u)] = columns[size_t(u) * size_t(h) + size_t(v)];
     rows[0] = 0;  // some texel is transparent
     const Texture t = make_texture("t", w, h, rows.data());
     ASSERT_TRUE(t.holes);

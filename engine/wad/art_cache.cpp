@@ -1,0 +1,65 @@
+#include "engine/wad/art_cache.h"
+
+#include "engine/util/error.h"
+
+namespace p3d::wad {
+
+ArtCache::ArtCache(const Stack& stack) : stack_(stack), art_(stack) {}
+
+ArtCache::Picture ArtCache::colour(const IndexedImage& img) const {
+  Picture out;
+  out.colours = image::Image(img.width, img.height);
+  const uint32_t* palette = art_.palette().data();
+  for (size_t p = 0; p < img.indices.size(); ++p) out.colours.pixels[p] = palette[img.indices[p]] & (img.opaque[p] ? ~0u : 0u);
+  out.indices = img.indices;
+  out.left = img.left_offset;
+  out.top = img.top_offset;
+  return out;
+}
+
+const ArtCache::Entry& ArtCache::texture(const std::string& name) {
+  auto [it, added] = textures_.try_emplace(name);
+  if (added)
+    if (const auto img = art_.texture(name, it->second.problems)) it->second.picture = colour(*img);
+  return it->second;
+}
+
+const ArtCache::Entry& ArtCache::flat(const std::string& name) {
+  auto [it, added] = flats_.try_emplace(name);
+  if (added)
+    if (const auto img = art_.flat(name, it->second.problems)) it->second.picture = colour(*img);
+  return it->second;
+}
+
+const ArtCache::Entry& ArtCache::sprite(const Lump& lump) {
+  auto [it, added] = sprites_.try_emplace(lump.name);
+  if (added) {
+    try {
+      it->second.picture = colour(decode_picture(lump.bytes, "sprite " + lump.name));
+    } catch (const Error& e) {
+      it->second.problems.push_back(e.what());
+    }
+  }
+  return it->second;
+}
+
+const std::vector<const Lump*>& ArtCache::sprite_lumps() {
+  if (!sprite_lumps_) {
+    sprite_lumps_.emplace();
+    for (const Lump* l : stack_.namespace_lumps({"S", "SS"})) sprite_lumps_->push_back(l);
+  }
+  return *sprite_lumps_;
+}
+
+const std::vector<uint32_t>& ArtCache::sprite_lumps_named(std::string_view sprite) {
+  if (sprite_lumps_by_name_.empty()) {
+    const std::vector<const Lump*>& lumps = sprite_lumps();
+    for (size_t k = 0; k < lumps.size(); ++k)
+      if (lumps[k]->name.size() >= 6) sprite_lumps_by_name_[lumps[k]->name.substr(0, 4)].push_back(uint32_t(k));
+  }
+  static const std::vector<uint32_t> kNone;
+  const auto it = sprite_lumps_by_name_.find(std::string(sprite));
+  return it == sprite_lumps_by_name_.end() ? kNone : it->second;
+}
+
+}  // namespace p3d::wad

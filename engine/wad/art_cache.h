@@ -1,0 +1,77 @@
+// The pictures a WAD level embeds, made once for every map of the same WADs
+// (pseudo3d-mapc --all compiles each map of a WAD with one cache): Doom's art
+// directory read once; each wall texture, flat and sprite lump decoded and coloured
+// once, with the problems found on the way (each map using the picture still warns
+// about them); the sprite lumps found by name; each texture's columns as Doom's
+// renderer reads them. Every map of a WAD shares most of its art with the others:
+// made per map, the art was three quarters of a whole WAD's compile.
+// One cache serves one Stack, on one thread at a time.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "engine/image/image.h"
+#include "engine/wad/art.h"
+#include "engine/wad/picture.h"
+#include "engine/wad/wad.h"
+
+namespace p3d::wad {
+
+class ArtCache {
+ public:
+  // Throws Error as Art does when the WADs hold no Doom art.
+  explicit ArtCache(const Stack& stack);
+
+  const Stack& stack() const { return stack_; }
+  const Art& art() const { return art_; }
+
+  // A picture in the level's colours: RGBA (alpha 0 where transparent) and palette
+  // indices, both a column after another.
+  struct Picture {
+    image::Image colours;
+    std::vector<uint8_t> indices;
+    int left = 0, top = 0;  // sprites: the origin's place (IndexedImage's offsets)
+  };
+  // A picture or why there is none: `problems` are warnings for every map that uses it
+  // (broken patches, a lump that does not decode).
+  struct Entry {
+    std::optional<Picture> picture;
+    std::vector<std::string> problems;
+  };
+
+  const Entry& texture(const std::string& name);  // a composite wall texture; none if unknown
+  const Entry& flat(const std::string& name);     // none if unknown or too small
+  const Entry& sprite(const Lump& lump);          // a sprite lump decoded; none if broken
+
+  // The sprite lumps between S_START and S_END (and SS_), in the WADs' order, and the
+  // positions among them of those whose names begin with `sprite` (4 letters).
+  const std::vector<const Lump*>& sprite_lumps();
+  const std::vector<uint32_t>& sprite_lumps_named(std::string_view sprite);
+
+  // A texture's columns as Doom's renderer reads them (wad/doom_segs.h), made by `make`
+  // the first time the name is asked for.
+  template <typename Make>
+  const std::vector<uint8_t>& doom_columns(const std::string& name, Make&& make) {
+    auto [it, added] = doom_columns_.try_emplace(name);
+    if (added) it->second = make();
+    return it->second;
+  }
+
+  Picture colour(const IndexedImage& img) const;
+
+ private:
+  const Stack& stack_;
+  Art art_;
+  std::unordered_map<std::string, Entry> textures_, flats_, sprites_;
+  std::optional<std::vector<const Lump*>> sprite_lumps_;
+  std::unordered_map<std::string, std::vector<uint32_t>> sprite_lumps_by_name_;
+  std::unordered_map<std::string, std::vector<uint8_t>> doom_columns_;
+};
+
+}  // namespace p3d::wad
