@@ -8,10 +8,11 @@
 #include "engine/util/bytes.h"
 #include "engine/util/checksum.h"
 #include "tests/fuzz/harness.h"
+#include "tests/fuzz/target.h"
 
 using namespace p3d;
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+P3D_FUZZ_TARGET(bsp) {
   using level::format::kHeaderSize;
   if (size < kHeaderSize) return 0;
   std::vector<uint8_t> bytes(data, data + size);

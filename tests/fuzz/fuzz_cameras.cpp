@@ -3,10 +3,11 @@
 #include "engine/map/source.h"
 #include "engine/render/camera_file.h"
 #include "tests/fuzz/harness.h"
+#include "tests/fuzz/target.h"
 
 using namespace p3d;
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+P3D_FUZZ_TARGET(cameras) {
   static const level::Level level = bsp::build(map::load_map(fuzz::maps_dir() / "outpost.map"), {});
   try {
     const auto cameras = render::parse_camera_list(std::string(reinterpret_cast<const char*>(data), size), "fuzz.cameras");

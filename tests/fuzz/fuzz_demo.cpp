@@ -7,10 +7,11 @@
 #include "engine/play/demo.h"
 #include "engine/util/bytes.h"
 #include "tests/fuzz/harness.h"
+#include "tests/fuzz/target.h"
 
 using namespace p3d;
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+P3D_FUZZ_TARGET(demo) {
   static const level::Level level = bsp::build(map::load_map(fuzz::maps_dir() / "outpost.map"), {});
   if (size < 8) return 0;
   std::vector<uint8_t> bytes(data, data + size);

@@ -2,11 +2,12 @@
 // few hundred samples from each side of the listener.
 #include "engine/play/sound.h"
 #include "engine/util/error.h"
+#include "tests/fuzz/target.h"
 #include "tests/fuzz/harness.h"
 
 using namespace p3d;
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+P3D_FUZZ_TARGET(dmx) {
   try {
     const play::SoundClip clip = play::decode_dmx(std::span(data, size), "DSFUZZ");
     uint64_t sum = 0;

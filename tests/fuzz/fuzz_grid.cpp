@@ -1,9 +1,10 @@
 // A .grid tile map: parsed, then compiled and drawn as fuzz::compile_and_draw says.
 #include "tests/fuzz/harness.h"
+#include "tests/fuzz/target.h"
 
 using namespace p3d;
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+P3D_FUZZ_TARGET(grid) {
   try {
     const std::string text(reinterpret_cast<const char*>(data), size);
     fuzz::compile_and_draw(map::parse_grid(text, fuzz::seeds_dir() / "fuzz.grid"));

@@ -7,10 +7,11 @@
 #include "engine/play/demo.h"
 #include "engine/play/doom_demo.h"
 #include "tests/fuzz/harness.h"
+#include "tests/fuzz/target.h"
 
 using namespace p3d;
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+P3D_FUZZ_TARGET(lmp) {
   static const level::Level level = bsp::build(map::load_map(fuzz::maps_dir() / "outpost.map"), {});
   try {
     const play::DoomDemo doom = play::decode_doom_demo(std::span(data, size), "fuzz.lmp");

@@ -2,13 +2,14 @@
 // messages, and read as a MIDI file as it is. What the converter writes is always a
 // MIDI file the reader accepts, with the score's notes: a broken promise traps.
 #include "engine/util/error.h"
+#include "tests/fuzz/target.h"
 #include "engine/wad/midi.h"
 #include "engine/wad/mus.h"
 #include "tests/fuzz/harness.h"
 
 using namespace p3d;
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+P3D_FUZZ_TARGET(mus) {
   const std::span<const uint8_t> lump(data, size);
   if (wad::is_mus(lump)) {
     std::vector<uint8_t> midi;

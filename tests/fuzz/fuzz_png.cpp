@@ -1,10 +1,11 @@
 // A texture file's bytes.
 #include "engine/image/image.h"
 #include "engine/util/error.h"
+#include "tests/fuzz/target.h"
 
 using namespace p3d;
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+P3D_FUZZ_TARGET(png) {
   try {
     image::decode_png(std::span(data, size), "fuzz.png");
   } catch (const Error&) {

@@ -6,11 +6,12 @@
 #include "engine/bsp/load.h"
 #include "engine/play/savegame.h"
 #include "tests/fuzz/harness.h"
+#include "tests/fuzz/target.h"
 #include "tests/fuzz/save_map.h"
 
 using namespace p3d;
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+P3D_FUZZ_TARGET(save) {
   static const wad::Stack wads = fuzz::save_map_wads();
   static const level::Level level = bsp::build_wad_map(wads, "MAP01", {}, nullptr);
   static const play::DoomNumbers numbers(wads, level);

@@ -3,11 +3,12 @@
 #include "engine/bsp/check.h"
 #include "engine/bsp/load.h"
 #include "tests/fuzz/harness.h"
+#include "tests/fuzz/target.h"
 #include "tests/support/wad_writer.h"
 
 using namespace p3d;
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+P3D_FUZZ_TARGET(wad) {
   static const std::vector<uint8_t> art = [] {
     test::WadWriter w(true);
     test::add_test_art(w);

@@ -11,6 +11,7 @@
 #include "engine/bsp/load.h"
 #include "engine/play/world.h"
 #include "engine/util/error.h"
+#include "tests/fuzz/target.h"
 #include "tests/support/wad_writer.h"
 
 using namespace p3d;
@@ -91,7 +92,7 @@ play::GameOptions options_from(FuzzedDataProvider& in) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+P3D_FUZZ_TARGET(world) {
   FuzzedDataProvider in(data, size);
   try {
     const wad::Stack wads = wads_from(in);
