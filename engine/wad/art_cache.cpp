@@ -1,37 +1,47 @@
 #include "engine/wad/art_cache.h"
 
+#include <stdexcept>
+#include <utility>
+
 #include "engine/util/error.h"
 
 namespace p3d::wad {
 
-ArtCache::ArtCache(const Stack& stack) : stack_(stack), art_(stack) {}
+ArtCache::ArtCache(const Stack& stack, bool shared) : stack_(stack), shared_(shared), art_(stack) {}
 
-ArtCache::Picture ArtCache::colour(const IndexedImage& img) const {
+ArtCache::Picture ArtCache::share(Entry& entry) const {
+  if (shared_) return *entry.picture;
+  if (entry.handed_over) throw std::logic_error("ArtCache: a picture of a cache that is not shared was asked for twice");
+  entry.handed_over = true;
+  return std::move(*entry.picture);
+}
+
+ArtCache::Picture ArtCache::colour(IndexedImage img) const {
   Picture out;
   out.colours = image::Image(img.width, img.height);
   const uint32_t* palette = art_.palette().data();
   for (size_t p = 0; p < img.indices.size(); ++p) out.colours.pixels[p] = palette[img.indices[p]] & (img.opaque[p] ? ~0u : 0u);
-  out.indices = img.indices;
+  out.indices = std::move(img.indices);
   out.left = img.left_offset;
   out.top = img.top_offset;
   return out;
 }
 
-const ArtCache::Entry& ArtCache::texture(const std::string& name) {
+ArtCache::Entry& ArtCache::texture(const std::string& name) {
   auto [it, added] = textures_.try_emplace(name);
   if (added)
-    if (const auto img = art_.texture(name, it->second.problems)) it->second.picture = colour(*img);
+    if (auto img = art_.texture(name, it->second.problems)) it->second.picture = colour(std::move(*img));
   return it->second;
 }
 
-const ArtCache::Entry& ArtCache::flat(const std::string& name) {
+ArtCache::Entry& ArtCache::flat(const std::string& name) {
   auto [it, added] = flats_.try_emplace(name);
   if (added)
-    if (const auto img = art_.flat(name, it->second.problems)) it->second.picture = colour(*img);
+    if (auto img = art_.flat(name, it->second.problems)) it->second.picture = colour(std::move(*img));
   return it->second;
 }
 
-const ArtCache::Entry& ArtCache::sprite(const Lump& lump) {
+ArtCache::Entry& ArtCache::sprite(const Lump& lump) {
   auto [it, added] = sprites_.try_emplace(lump.name);
   if (added) {
     try {

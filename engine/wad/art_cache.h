@@ -25,8 +25,9 @@ namespace p3d::wad {
 
 class ArtCache {
  public:
-  // Throws Error as Art does when the WADs hold no Doom art.
-  explicit ArtCache(const Stack& stack);
+  // Throws Error as Art does when the WADs hold no Doom art. A cache that serves one
+  // import alone (shared = false) hands its pictures over instead of copying them.
+  explicit ArtCache(const Stack& stack, bool shared = true);
 
   const Stack& stack() const { return stack_; }
   const Art& art() const { return art_; }
@@ -43,11 +44,15 @@ class ArtCache {
   struct Entry {
     std::optional<Picture> picture;
     std::vector<std::string> problems;
+    bool handed_over = false;  // share() moved the picture out
   };
 
-  const Entry& texture(const std::string& name);  // a composite wall texture; none if unknown
-  const Entry& flat(const std::string& name);     // none if unknown or too small
-  const Entry& sprite(const Lump& lump);          // a sprite lump decoded; none if broken
+  Entry& texture(const std::string& name);  // a composite wall texture; none if unknown
+  Entry& flat(const std::string& name);     // none if unknown or too small
+  Entry& sprite(const Lump& lump);          // a sprite lump decoded; none if broken
+  // An entry's picture for a level: a copy, or the picture itself from a cache that is
+  // not shared (each name is asked for once by one import).
+  Picture share(Entry& entry) const;
 
   // The sprite lumps between S_START and S_END (and SS_), in the WADs' order, and the
   // positions among them of those whose names begin with `sprite` (4 letters).
@@ -63,10 +68,11 @@ class ArtCache {
     return it->second;
   }
 
-  Picture colour(const IndexedImage& img) const;
+  Picture colour(IndexedImage img) const;
 
  private:
   const Stack& stack_;
+  const bool shared_;
   Art art_;
   std::unordered_map<std::string, Entry> textures_, flats_, sprites_;
   std::optional<std::vector<const Lump*>> sprite_lumps_;

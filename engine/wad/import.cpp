@@ -36,7 +36,7 @@ class Importer {
   Importer(const Stack& stack, const MapData& data, const ImportOptions& options)
       : data_(data),
         options_(options),
-        own_cache_(options.art_cache ? nullptr : std::make_unique<ArtCache>(stack)),
+        own_cache_(options.art_cache ? nullptr : std::make_unique<ArtCache>(stack, false)),
         cache_(options.art_cache ? *options.art_cache : *own_cache_),
         art_(cache_.art()) {
     if (&cache_.stack() != &stack) throw std::logic_error("ImportOptions::art_cache serves another Stack");
@@ -89,11 +89,11 @@ class Importer {
             art_.palette()[art_.colormap()[size_t(m) * kPaletteColors + i]];
   }
 
-  int add_texture(const std::string& name, const ArtCache::Picture& picture) {
+  int add_texture(const std::string& name, ArtCache::Picture picture) {
     map::Texture t;
     t.name = name;
-    t.image = picture.colours;
-    t.indices = picture.indices;
+    t.image = std::move(picture.colours);
+    t.indices = std::move(picture.indices);
     t.column_major = true;
     t.loc = FileLoc{data_.where, 0};
     src_.textures.push_back(std::move(t));
@@ -106,11 +106,11 @@ class Importer {
     if (name.empty() || name == "-") return map::kNone;
     const auto it = wall_textures_.find(name);
     if (it != wall_textures_.end()) return it->second;
-    const ArtCache::Entry* entry = must_exist || art_.has_texture(name) ? &cache_.texture(name) : nullptr;
+    ArtCache::Entry* entry = must_exist || art_.has_texture(name) ? &cache_.texture(name) : nullptr;
     const bool found = entry && entry->picture;
     if (entry)
       for (const std::string& p : entry->problems) warn("broken patches", record, p);
-    const int index = found ? add_texture(name, *entry->picture) : map::kNone;
+    const int index = found ? add_texture(name, cache_.share(*entry)) : map::kNone;
     if (!found && must_exist) warn("unknown textures", record, "texture " + printable(name) + " does not exist (drawn as missing)");
     wall_textures_[name] = index;
     if (const std::string pair = doom::switch_partner(name); found && !pair.empty()) wall_texture(pair, record, false);
@@ -122,11 +122,11 @@ class Importer {
   int flat(const std::string& name, const std::string& record) {
     const auto it = flats_.find(name);
     if (it != flats_.end()) return it->second;
-    const ArtCache::Entry& entry = cache_.flat(name);
+    ArtCache::Entry& entry = cache_.flat(name);
     for (const std::string& p : entry.problems) warn("broken flats", record, p);
     int index;
     if (entry.picture) {
-      index = add_texture(name, *entry.picture);
+      index = add_texture(name, cache_.share(entry));
     } else {
       warn("unknown flats", record, "flat " + printable(name) + " does not exist (drawn as a placeholder)");
       index = add_texture(name, cache_.colour(placeholder()));
@@ -532,16 +532,17 @@ class Importer {
   int sprite_image(const Lump& lump, const std::string& record) {
     if (const auto it = sprite_images_.find(lump.name); it != sprite_images_.end()) return it->second;
     int index = -1;
-    const ArtCache::Entry& entry = cache_.sprite(lump);
+    ArtCache::Entry& entry = cache_.sprite(lump);
     for (const std::string& p : entry.problems) warn("broken sprites", record, p + " (not drawn)");
     if (entry.picture) {
+      ArtCache::Picture picture = cache_.share(entry);
       map::SpriteImage out;
       out.name = lump.name;
-      out.image = entry.picture->colours;
-      out.indices = entry.picture->indices;
+      out.image = std::move(picture.colours);
+      out.indices = std::move(picture.indices);
       out.column_major = true;
-      out.left = entry.picture->left;
-      out.top = entry.picture->top;
+      out.left = picture.left;
+      out.top = picture.top;
       src_.sprite_images.push_back(std::move(out));
       index = int(src_.sprite_images.size()) - 1;
     }

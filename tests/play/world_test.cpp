@@ -167,7 +167,7 @@ TEST(Collision, RandomWalksNeverPassWallsOrClimbTooHigh) {
   cases.push_back({"dense soup", test::compile(test::random_soup(1500, 9))});
   cases.push_back({"rooms", test::compile(test::random_rooms(600, 4))});
   cases.push_back({"bunker (grid)", test::compile(map::load_grid(test::source_dir() / "maps/bunker.grid"))});
-  const int walks_per_level = test::kSanitized ? 50 : 250;
+  const int walks_per_level = test::kSanitized ? 25 : 250;
   size_t walks = 0;
   for (const Case& c : cases) {
     WalkStats s;
@@ -182,7 +182,7 @@ TEST(Collision, RandomWalksNeverPassWallsOrClimbTooHigh) {
       EXPECT_GT(s.climbed, 0u) << c.name;
     }
   }
-  EXPECT_GE(walks, test::kSanitized ? 250u : 1000u);
+  EXPECT_GE(walks, test::kSanitized ? 125u : 1000u);
 }
 
 // ---- Freedoom maps, with everything moving ----------------------------------------
@@ -274,7 +274,7 @@ TEST(Collision, FreedoomWalksWithSectorsMoving) {
     all.push_back({"freedoom2.wad", name});
   for (size_t k = 0; k < all.size(); ++k) {
 #ifdef P3D_SANITIZE
-    if (k % 3 != 0) continue;
+    if (k % 4 != 0) continue;  // a sample: E1M1, E4M4, MAP13, MAP31
 #endif
     const std::string what = all[k].iwad + ":" + all[k].name;
     Freedoom f(all[k]);
