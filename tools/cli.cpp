@@ -121,7 +121,7 @@ Validator existing_file() { return Validator(std::make_shared<CLI::Validator>(CL
 Validator existing_directory() { return Validator(std::make_shared<CLI::Validator>(CLI::ExistingDirectory)); }
 
 int run(App& app, int argc, char** argv, const std::function<int()>& body) {
-  CLI::App& cli = app.impl();
+  CLI::App& cli = *app.impl_;
   const char* name = app.get_name().c_str();
   cli.set_version_flag("--version", app.get_name() + " " + P3D_VERSION);
   try {

@@ -85,9 +85,9 @@ class App {
   Option* add_option(const std::string& name, T& value, const std::string& help);
   Option* add_flag(const std::string& name, bool& value, const std::string& help);
   const std::string& get_name() const { return name_; }
-  CLI::App& impl() { return *impl_; }
 
  private:
+  friend int run(App& app, int argc, char** argv, const std::function<int()>& body);
   std::unique_ptr<CLI::App> impl_;
   std::vector<std::unique_ptr<Option>> options_;
   std::string name_;

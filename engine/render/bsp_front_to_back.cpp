@@ -185,58 +185,71 @@ class BspFrontToBack final : public Renderer {
   }
 
   // Attaches each thing drawn to the deepest node whose cell holds its sprite's disc,
-  // or to a leaf; then the culling boxes grow from the nodes' boxes to cover the discs
-  // (see the file's head). Things in index order within each node and leaf.
+  // or to a leaf; then the culling boxes on its path from the root grow to cover the
+  // disc (see the file's head). Things in index order within each node and leaf. The
+  // work is the things' and their paths', not the tree's: what the last frame's things
+  // changed is put back, and the rest stays as the level's first frame left it.
   void attach_things(const level::Level& level, const level::State& state) {
-    const size_t nodes = level.nodes.size(), leaves = level.leaves.size();
-    node_things_.assign(nodes, {});
-    leaf_things_.assign(leaves, {});
+    if (level.generation == 0 || things_for_ != level.generation) start_level(level);
+    for (const int32_t c : touched_) {  // the last frame's things leave
+      range_of(c) = {};
+      cull_box_of(c) = base_box_of(c);
+    }
+    touched_.clear();
     owners_.clear();
     for (size_t i = 0; i < state.things.size(); ++i) {
       const level::ShownThing& t = state.things[i];
-      if (t.frame == level::kNone || leaves == 0) continue;
+      if (t.frame == level::kNone || level.leaves.empty()) continue;
       const double reach = level.sprite_frames[size_t(t.frame)].reach;
+      const geom::Vec2 low = t.pos - geom::Vec2(reach), high = t.pos + geom::Vec2(reach);
       int32_t c = level.root();
-      while (!level::is_leaf(c)) {
+      for (;;) {  // the disc grows every box on the way down, its owner's too
+        touched_.push_back(c);
+        cull_box_of(c).add(low);
+        cull_box_of(c).add(high);
+        if (level::is_leaf(c)) break;
         const level::Node& n = level.nodes[size_t(c)];
         const double side = level::splitter_side(n, t.pos) / glm::length(n.direction);  // signed distance, > 0 back
         if (std::fabs(side) <= reach) break;
         c = n.child[side > 0 ? 1 : 0];
       }
       owners_.push_back({c, uint32_t(i)});
-      ++range_of(c).count;
     }
-    // Ranges: nodes first, then leaves, in index order.
-    uint32_t next = 0;
-    for (ThingRange& r : node_things_) r.first = next, next += std::exchange(r.count, 0);
-    for (ThingRange& r : leaf_things_) r.first = next, next += std::exchange(r.count, 0);
-    attached_.resize(next);
-    for (const auto& [owner, thing] : owners_) {
-      ThingRange& r = range_of(owner);
-      attached_[r.first + r.count++] = thing;
+    // attached_ holds the things by owner, nodes before leaves, each in index order.
+    const auto order = [&](int32_t c) { return level::is_leaf(c) ? level.nodes.size() + size_t(level::leaf_index(c)) : size_t(c); };
+    std::stable_sort(owners_.begin(), owners_.end(), [&](const auto& a, const auto& b) { return order(a.first) < order(b.first); });
+    attached_.resize(owners_.size());
+    for (size_t k = 0; k < owners_.size(); ++k) {
+      ThingRange& r = range_of(owners_[k].first);
+      if (r.count == 0) r.first = uint32_t(k);
+      ++r.count;
+      attached_[k] = owners_[k].second;
     }
-    auto add_discs = [&](const ThingRange& r, geom::BBox& box) {
-      for (uint32_t k = r.first; k < r.first + r.count; ++k) {
-        const level::ShownThing& t = state.things[attached_[k]];
-        const double reach = level.sprite_frames[size_t(t.frame)].reach;
-        box.add(t.pos - geom::Vec2(reach));
-        box.add(t.pos + geom::Vec2(reach));
-      }
-    };
-    leaf_cull_boxes_.resize(leaves);
-    for (size_t i = 0; i < leaves; ++i) {
-      leaf_cull_boxes_[i] = level.leaves[i].bbox;
-      add_discs(leaf_things_[i], leaf_cull_boxes_[i]);
-    }
-    cull_boxes_.resize(nodes);
+  }
+  // A level's first frame: no thing attached anywhere, and each culling box its
+  // subtree's walls' (a node's box and its children's).
+  void start_level(const level::Level& level) {
+    const size_t nodes = level.nodes.size(), leaves = level.leaves.size();
+    node_things_.assign(nodes, {});
+    leaf_things_.assign(leaves, {});
+    base_leaf_boxes_.resize(leaves);
+    for (size_t i = 0; i < leaves; ++i) base_leaf_boxes_[i] = level.leaves[i].bbox;
+    base_boxes_.resize(nodes);
     for (size_t i = nodes; i-- > 0;) {  // children come after their parent
       const level::Node& n = level.nodes[i];
-      geom::BBox& box = cull_boxes_[i];
-      box = n.bbox;
-      add_discs(node_things_[i], box);
-      for (int32_t c : n.child)
-        box.add(level::is_leaf(c) ? leaf_cull_boxes_[size_t(level::leaf_index(c))] : cull_boxes_[size_t(c)]);
+      base_boxes_[i] = n.bbox;
+      for (int32_t c : n.child) base_boxes_[i].add(base_box_of(c));
     }
+    cull_boxes_ = base_boxes_;
+    leaf_cull_boxes_ = base_leaf_boxes_;
+    touched_.clear();
+    things_for_ = level.generation;
+  }
+  geom::BBox& cull_box_of(int32_t child) {
+    return level::is_leaf(child) ? leaf_cull_boxes_[size_t(level::leaf_index(child))] : cull_boxes_[size_t(child)];
+  }
+  const geom::BBox& base_box_of(int32_t child) const {
+    return level::is_leaf(child) ? base_leaf_boxes_[size_t(level::leaf_index(child))] : base_boxes_[size_t(child)];
   }
   const geom::BBox& cull_box(const level::Level& level, int32_t child, bool walls_only) const {
     if (level::is_leaf(child)) {
@@ -333,6 +346,11 @@ class BspFrontToBack final : public Renderer {
   std::vector<uint32_t> attached_;
   std::vector<Canvas::Sprite> projected_;  // Doom's rules: every thing's sprite, projected once a frame
   std::vector<geom::BBox> cull_boxes_, leaf_cull_boxes_;
+  // The boxes without things, the level's generation they are for, and what this
+  // frame's things changed (nodes and leaf_child values, to be put back).
+  std::vector<geom::BBox> base_boxes_, base_leaf_boxes_;
+  uint64_t things_for_ = 0;
+  std::vector<int32_t> touched_;
   std::vector<std::pair<int32_t, uint32_t>> owners_;  // attach_things' scratch: (node or leaf_child, thing)
   std::vector<uint32_t> fragments_, things_;  // merged_stats' scratch
 };
