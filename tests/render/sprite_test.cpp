@@ -419,6 +419,40 @@ TEST(Sprites, MovedThingsAgreeOnFreedoom) {
   EXPECT_GT(sprites, 30u);
 }
 
+// One BSP renderer drawing frame after frame, things moving between them and the level
+// changing now and then, draws what the reference draws in each: what a frame's things
+// did to the tree is undone before the next frame's.
+TEST(Sprites, OneRendererFollowsMovingThingsFrameAfterFrame) {
+  std::vector<level::Level> levels;
+  for (uint64_t seed : {31, 32}) {
+    map::Source src = seed % 2 ? test::random_rooms(300, seed) : test::random_soup(200, seed);
+    const int small = add_sprite(src, picture(24, 40, kRed, true));
+    const int wide = add_sprite(src, picture(160, 24, kBlue, true));
+    const level::Level bounds = test::compile(src);
+    Rng rng(seed);
+    for (int i = 0; i < 40; ++i)
+      add_thing(src, {rng.uniform(bounds.bounds.min.x, bounds.bounds.max.x), rng.uniform(bounds.bounds.min.y, bounds.bounds.max.y)},
+                i % 2 ? wide : small);
+    levels.push_back(test::compile(src));
+  }
+  const auto bsp = make_renderer("bsp", {.threads = 2});
+  Rng rng(33);
+  size_t sprites = 0;
+  for (int frame = 0; frame < 40; ++frame) {
+    const level::Level& level = levels[size_t(frame / 10 % 2)];  // ten frames of one, then the other
+    level::State state = level::start_state(level);
+    scatter_things(level, state, rng, 30);
+    const Camera camera = test::random_camera(level, rng);
+    Frame ours(64, 40), ref(64, 40);
+    const RenderStats rs = make_renderer("reference")->render(level, state, camera, ref);
+    const RenderStats s = bsp->render(level, state, camera, ours);
+    EXPECT_EQ(ours.pixels, ref.pixels) << "frame " << frame;
+    EXPECT_EQ(s.sprites_drawn, rs.sprites_drawn) << "frame " << frame;
+    sprites += rs.sprites_drawn;
+  }
+  EXPECT_GT(sprites, 40u);
+}
+
 // On grid maps the grid ray caster draws the same sprites as the BSP renderer.
 TEST(Sprites, TheGridRayCasterDrawsThemToo) {
   map::Source src = map::load_grid(test::source_dir() / "maps/bunker.grid");
