@@ -183,6 +183,21 @@ std::vector<uint8_t> reject_table(const wad::Lump* lump, size_t sectors) {
   return table;
 }
 
+// A WAD map's reject table as Doom reads it. Where the lump is shorter than the map
+// needs (node builders may leave it empty), Doom read on into the zone memory after it:
+// the header of the block P_GroupLines allocated next (its size, from the sectors' line
+// lists; its tag, PU_LEVEL; the zone's id), then, as Chocolate Doom has it, zeros.
+std::vector<uint8_t> doom_reject_table(const wad::Lump* lump, const Map& m) {
+  std::vector<uint8_t> table = reject_table(lump, m.sectors.size());
+  const size_t from = lump ? lump->bytes.size() : 0;
+  if (from >= table.size()) return table;
+  uint32_t line_refs = 0;  // Doom's totallines
+  for (const Line& ld : m.lines) line_refs += ld.back && ld.back != ld.front ? 2 : 1;
+  const uint32_t pad[4] = {((line_refs * 4 + 3) & ~3u) + 24, 0, 50, 0x1d4a11};
+  for (size_t i = 0; i < 16 && from + i < table.size(); ++i) table[from + i] = uint8_t(pad[i / 4] >> (8 * (i % 4)));
+  return table;
+}
+
 // The side of the node the cell's points are all on (0 or 1), or -1 when they differ or
 // might: Doom's side test is monotone in x and in y within a quadrant around the
 // node's origin, so a cell inside one quadrant has its sides' extremes at its corners.
@@ -375,7 +390,7 @@ Map map_from_wad(const wad::MapData& data, const wad::MapLumps* lumps, const lev
 
   std::optional<Blockmap> blockmap = lumps ? read_blockmap(lumps->find("BLOCKMAP"), m.lines.size()) : std::nullopt;
   m.blockmap = blockmap ? std::move(*blockmap) : build_blockmap(m.lines, m.vertices);
-  m.reject = reject_table(lumps ? lumps->find("REJECT") : nullptr, m.sectors.size());
+  m.reject = lumps && !data.udmf ? doom_reject_table(lumps->find("REJECT"), m) : reject_table(nullptr, m.sectors.size());
   if (!lumps || data.udmf || !read_nodes(*lumps, m)) leaves_as_subsectors(m, level);
   group_lines(m);
   m.index_cells();

@@ -60,5 +60,31 @@ TEST(HostileMap, AFloorAtTheTopAndACeilingAtTheBottomPlay) {
   EXPECT_GT(p.world.level_time(), 0);
 }
 
+// A REJECT lump shorter than the map needs (node builders may write it empty): Doom
+// read on past it into the zone's next block header, which Chocolate Doom writes
+// there: that block's size (four bytes a line in a sector's list, rounded up, plus 24),
+// 0, PU_LEVEL (50) and the zone's id, then zeros. Its bits reject sight between the
+// sectors they stand for; a lump of the whole size is read as it is.
+TEST(HostileMap, AShortRejectLumpReadsOnAsDoomDid) {
+  TestMap m;
+  for (int i = 0; i < 3; ++i) m.add_room({{256 * i, 0}, {256 * i, 256}, {256 * i + 256, 256}, {256 * i + 256, 0}}, {});
+  m.things.push_back({128, 128, 0, 1});
+  const wad::Stack wads = test::test_stack({{"MAP01", m}});
+  const level::Level level = bsp::build_wad_map(wads, "MAP01", {}, nullptr);
+  const Map map = map_from_wads(wads, "MAP01", level);
+  ASSERT_EQ(map.sectors.size(), 3u);
+  ASSERT_EQ(map.reject.size(), 2u);  // 9 bits
+  uint32_t line_refs = 0;
+  for (const Line& ld : map.lines) line_refs += ld.back && ld.back != ld.front ? 2 : 1;
+  EXPECT_EQ(line_refs, 12u) << "ten lines, two of them between two rooms";
+  const uint32_t block_size = ((line_refs * 4 + 3) & ~3u) + 24;  // 72: bits 3 and 6
+  EXPECT_EQ(map.reject[0], uint8_t(block_size));
+  EXPECT_EQ(map.reject[1], uint8_t(block_size >> 8));
+  EXPECT_TRUE(map.rejected(1, 0)) << "bit 3";
+  EXPECT_TRUE(map.rejected(2, 0)) << "bit 6";
+  EXPECT_FALSE(map.rejected(0, 1));
+  EXPECT_FALSE(map.rejected(0, 0));
+}
+
 }  // namespace
 }  // namespace p3d::play
