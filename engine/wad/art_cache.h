@@ -4,7 +4,8 @@
 // once, with the problems found on the way (each map using the picture still warns
 // about them); the sprite lumps found by name; each texture's columns as Doom's
 // renderer reads them. Every map of a WAD shares most of its art with the others:
-// made per map, the art was three quarters of a whole WAD's compile.
+// made per map, the art was more than half of a whole WAD's compile (freedoom2: 4.9
+// of 8.3 billion instructions).
 // One cache serves one Stack, on one thread at a time.
 #pragma once
 
