@@ -96,6 +96,8 @@ HeadlessResult replay_headless(Session& session, const play::Demo& demo, const H
     }
     session.tic(demo.tics[tic]);
     if (!o.thing_dump.empty()) things += play::dump_things(session.world(), tic);
+    if (result.beyond_chocolate.empty() && !session.world().beyond_chocolate().empty())
+      result.beyond_chocolate = "demo tic " + std::to_string(tic) + " (" + session.world().beyond_chocolate() + ")";
     for (const HeadlessOptions::SaveAt& s : o.saves)
       if (s.tic == tic) save_to(session, s.file);
     for (const HeadlessOptions::SaveAt& l : o.loads)

@@ -37,6 +37,9 @@ struct HeadlessResult {
   int frames = 0;     // rows written (PNG files too, unless frames is off)
   size_t tics = 0;    // tics replayed: all of them, or up to the exit
   play::ExitKind exit = play::ExitKind::kNone;
+  // Empty, or the demo's tic and what the game did there first that Chocolate Doom
+  // leaves undefined (play::World::beyond_chocolate).
+  std::string beyond_chocolate;
 };
 
 // Replays from the demo's start (its start, keys and cheats as recorded); stops at the

@@ -318,6 +318,9 @@ int main(int argc, char** argv) {
         std::printf("replayed %zu of %zu tics (exit: %s), wrote %d %s to %s\n", r.tics, demo->tics.size(),
                     game::exit_name(r.exit), r.frames, stats_only ? "rows of stats.csv" : "frames and stats.csv",
                     out_dir.c_str());
+        if (!r.beyond_chocolate.empty())
+          std::fprintf(stderr, "warning: beyond Chocolate Doom from %s: vanilla overran memory that Chocolate does not emulate, so its replay may part from here\n",
+                       r.beyond_chocolate.c_str());
         return 0;
       }
       session->start_recording(std::filesystem::path(record).extension() == ".lmp", long_tics);

@@ -219,13 +219,15 @@ void Map::index_cells() {
   cell_start.clear();
   if (!has_nodes()) return;
   const uint16_t root = uint16_t(nodes.size() - 1);
+  cell_origin_x = blockmap.origin_x;
+  cell_origin_y = blockmap.origin_y;
   cell_columns = blockmap.width << (kMapBlockShift - kCellShift);
   cell_rows = blockmap.height << (kMapBlockShift - kCellShift);
   cell_start.assign(size_t(cell_columns) * size_t(cell_rows), root);
   for (int by = 0; by < cell_rows; ++by)
     for (int bx = 0; bx < cell_columns; ++bx) {
-      const int64_t x0 = int64_t(blockmap.origin_x) + (int64_t(bx) << kCellShift);
-      const int64_t y0 = int64_t(blockmap.origin_y) + (int64_t(by) << kCellShift);
+      const int64_t x0 = int64_t(cell_origin_x) + (int64_t(bx) << kCellShift);
+      const int64_t y0 = int64_t(cell_origin_y) + (int64_t(by) << kCellShift);
       const int64_t x1 = x0 + (int64_t(1) << kCellShift) - 1, y1 = y0 + (int64_t(1) << kCellShift) - 1;
       if (x1 > INT32_MAX || y1 > INT32_MAX) continue;  // beyond Doom's coordinates: from the root
       uint16_t n = root;
@@ -245,7 +247,7 @@ Subsector* Map::point_in_subsector(Fixed x, Fixed y) {
   }
   if (nodes.empty()) return &subsectors[0];
   uint16_t n = uint16_t(nodes.size() - 1);
-  const int64_t bx = (int64_t(x) - blockmap.origin_x) >> kCellShift, by = (int64_t(y) - blockmap.origin_y) >> kCellShift;
+  const int64_t bx = (int64_t(x) - cell_origin_x) >> kCellShift, by = (int64_t(y) - cell_origin_y) >> kCellShift;
   if (bx >= 0 && by >= 0 && bx < cell_columns && by < cell_rows && !cell_start.empty())
     n = cell_start[size_t(by) * size_t(cell_columns) + size_t(bx)];
   while (!(n & Node::kSubsectorBit)) {

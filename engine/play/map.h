@@ -134,9 +134,9 @@ struct Blockmap {
   std::vector<uint32_t> offsets;  // per cell (x + y * width): where its list starts in `lists`
   std::vector<uint32_t> lists;
   static constexpr uint32_t kEnd = 0xFFFFFFFF;
-  // Cell (x, y)'s list. Every entry is a valid line number (read_blockmap checks,
-  // build_blockmap makes them so).
-  const uint32_t* list(int x, int y) const { return lists.data() + offsets[size_t(y) * size_t(width) + size_t(x)]; }
+  // Cell number `cell`'s list (x + y * width). Every entry is a valid line number
+  // (read_blockmap checks, build_blockmap makes them so).
+  const uint32_t* list(size_t cell) const { return lists.data() + offsets[cell]; }
 };
 
 struct Map {
@@ -165,7 +165,10 @@ struct Map {
   // reaches from the root, so starting there gives exactly the root's answer in fewer
   // steps. Built by index_cells.
   static constexpr int kCellShift = kFracBits + 5;
+  // The cells' own origin: the blockmap's may change as the level is played (an
+  // intercepts overrun, World::overrun_intercepts), the nodes' answers may not.
   std::vector<uint16_t> cell_start;
+  Fixed cell_origin_x = 0, cell_origin_y = 0;
   int cell_columns = 0, cell_rows = 0;
   void index_cells();
   // Doom's R_PointInSubsector.

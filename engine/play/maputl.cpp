@@ -97,9 +97,7 @@ void World::unset_thing_position(Mobj* thing) {
     if (thing->bprev) {
       thing->bprev->bnext = thing->bnext;
     } else {
-      const int bx = block_x(thing->x), by = block_y(thing->y);
-      if (bx >= 0 && bx < map_.blockmap.width && by >= 0 && by < map_.blockmap.height)
-        block_links_[size_t(by) * size_t(map_.blockmap.width) + size_t(bx)] = thing->bnext;
+      if (Mobj** link = block_link(block_x(thing->x), block_y(thing->y))) *link = thing->bnext;
     }
   }
 }
@@ -115,16 +113,83 @@ void World::set_thing_position(Mobj* thing) {
     sec->thing_list = thing;
   }
   if (!(thing->flags & kNoblockmap)) {
-    const int bx = block_x(thing->x), by = block_y(thing->y);
-    if (bx >= 0 && bx < map_.blockmap.width && by >= 0 && by < map_.blockmap.height) {
-      Mobj*& link = block_links_[size_t(by) * size_t(map_.blockmap.width) + size_t(bx)];
+    if (Mobj** link = block_link(block_x(thing->x), block_y(thing->y))) {
       thing->bprev = nullptr;
-      thing->bnext = link;
-      if (link) link->bprev = thing;
-      link = thing;
+      thing->bnext = *link;
+      if (*link) (*link)->bprev = thing;
+      *link = thing;
     } else {  // off the map
       thing->bnext = thing->bprev = nullptr;
     }
+  }
+}
+
+size_t World::block_cell(int bx, int by) const {
+  const Blockmap& bm = map_.blockmap;
+  if (bx < 0 || by < 0 || bx >= bm.width || by >= bm.height) return kOffTheMap;
+  return size_t(by) * size_t(bm.width) + size_t(bx);
+}
+
+Mobj** World::block_link(int bx, int by) {
+  const size_t cell = block_cell(bx, by);
+  if (cell == kOffTheMap) return nullptr;
+  if (cell >= block_links_.size()) {  // only once an intercepts overrun changed the blockmap's size
+    note_beyond_chocolate("things of blockmap cell " + std::to_string(cell) + ", past the blockmap");
+    return nullptr;
+  }
+  return &block_links_[cell];
+}
+
+void World::note_beyond_chocolate(const std::string& what) {
+  if (beyond_chocolate_.empty()) beyond_chocolate_ = "tic " + std::to_string(level_time_) + " of the level: " + what;
+}
+
+// Vanilla Doom held 128 intercepts, and a trace across more lines and things wrote the
+// rest over the globals that followed the array, 12 bytes each (the fraction, whether
+// it is a line, the pointer): the line opening, the bullet slope, the player starts, and
+// the blockmap's size and origin, for the rest of the level. Chocolate Doom writes the
+// fractions and flags where vanilla did, for 61 intercepts more; beyond those it writes
+// past its own array.
+void World::overrun_intercepts(size_t index) {
+  constexpr size_t kVanillaIntercepts = 128, kChocolateIntercepts = kVanillaIntercepts + 61;
+  if (index <= kVanillaIntercepts) return;
+  if (index >= kChocolateIntercepts) {
+    note_beyond_chocolate("a trace met more than " + std::to_string(kChocolateIntercepts) + " lines and things");
+    return;
+  }
+  const Intercept& in = intercepts_[index];
+  const int location = int(index - kVanillaIntercepts - 1) * 12;
+  overrun_write(location, in.frac);
+  overrun_write(location + 4, in.is_line);
+  // The pointer (location + 8) was a host address in Chocolate: opentop, swingx and the
+  // player starts' coordinates take values no other program can know. Opentop is set
+  // again before it is read, and the starts matter only to a netgame's rebirth.
+}
+
+// Vanilla's globals after the intercepts array, by byte offset from its end (as
+// Chocolate's p_maputl.c lays them out); those it does not emulate are left alone.
+void World::overrun_write(int location, int32_t value) {
+  auto& bm = map_.blockmap;
+  switch (location) {
+    case 12: opening_.low_floor = value; return;
+    case 16: opening_.bottom = value; return;
+    case 24: opening_.range = value; return;
+    case 160: bullet_slope_ = value; return;
+    case 220: bm.width = value; return;
+    case 228: bm.origin_x = value; return;
+    case 232: bm.origin_y = value; return;
+    case 240: bm.height = value; return;
+  }
+  constexpr int kStarts = 176, kStartsEnd = kStarts + 4 * 10;  // four mapthing_t of five shorts
+  if (location >= kStarts && location < kStartsEnd) {
+    const int field = (location - kStarts) / 2;
+    auto start_short = [&](int i) -> int16_t& {
+      MapThing& t = player_starts_[size_t(i / 5)];
+      int16_t* fields[] = {&t.x, &t.y, &t.angle, &t.type, &t.options};
+      return *fields[i % 5];
+    };
+    start_short(field) = int16_t(value & 0xFFFF);
+    if (field + 1 < 20) start_short(field + 1) = int16_t((value >> 16) & 0xFFFF);
   }
 }
 
@@ -154,6 +219,7 @@ bool World::path_traverse(Fixed x1, Fixed y1, Fixed x2, Fixed y2, int flags,
     if (frac < 0) return true;  // behind the source
     if (early_out && frac < kFracUnit && !ld->back) return false;  // a wall in reach ends it
     intercepts_.push_back({frac, true, nullptr, ld});
+    overrun_intercepts(intercepts_.size() - 1);
     return true;
   };
   auto add_thing = [&](Mobj* thing) {
@@ -166,6 +232,7 @@ bool World::path_traverse(Fixed x1, Fixed y1, Fixed x2, Fixed y2, int flags,
     const Fixed frac = intercept_vector(trace_, DivLine{xa, ya, wrap_sub(xb, xa), wrap_sub(yb, ya)});
     if (frac < 0) return true;
     intercepts_.push_back({frac, false, thing, nullptr});
+    overrun_intercepts(intercepts_.size() - 1);
     return true;
   };
 

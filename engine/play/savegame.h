@@ -47,7 +47,9 @@ namespace p3d::play {
 constexpr size_t kSaveDescriptionSize = 24;  // Doom's SAVESTRINGSIZE (the menu writes at most 23 characters)
 constexpr size_t kSaveVersionSize = 16;      // Doom's VERSIONSIZE
 constexpr uint8_t kSaveEndMarker = 0x1d;     // Doom's SAVEGAME_EOF
-constexpr uint32_t kSaveExtensionVersion = 1;
+// 2: the blockmap's header (which an intercepts overrun may change) before its cells.
+// Version 1 files load as well, with the map's own header.
+constexpr uint32_t kSaveExtensionVersion = 2;
 
 // The header: what a load menu shows and which game Doom starts before loading.
 struct SaveHeader {

@@ -136,7 +136,9 @@ std::vector<uint8_t> encode_extension(const World& w, const SaveExtras& x) {
     out.i32(refs.ref(m->target)), out.i32(refs.ref(m->tracer));
     out.u32(m->id), out.i32(m->spawn_point.placed);
   }
-  // the blockmap cells' thing lists in order
+  // the blockmap's header, then its cells' thing lists in order
+  const Blockmap& bm = w.map_.blockmap;
+  for (int32_t v : {bm.origin_x, bm.origin_y, bm.width, bm.height}) out.i32(v);
   std::vector<std::pair<uint32_t, std::vector<int32_t>>> cells;
   for (size_t c = 0; c < w.block_links_.size(); ++c) {
     if (!w.block_links_[c]) continue;
@@ -230,7 +232,7 @@ Extension read_extension(SaveReader& file, const DoomSave& doom, const World& w)
   if (std::memcmp(magic.data(), kExtensionMagic, sizeof magic) != 0)
     file.fail_at(start, "bytes after Doom's end marker that are not our extension (its magic is P3DSAVE)");
   const uint32_t version = file.u32();
-  if (version != kSaveExtensionVersion)
+  if (version != kSaveExtensionVersion && version != 1)
     file.fail_at(start + 8, "our extension's version " + std::to_string(version) + " is not " +
                                 std::to_string(kSaveExtensionVersion) + " (a newer game's save? load it as Doom would)");
   const uint32_t length = file.u32();
@@ -373,6 +375,7 @@ Extension read_extension(SaveReader& file, const DoomSave& doom, const World& w)
     m.target = in.i32(), m.tracer = in.i32(), m.id = in.u32(), m.placed = in.i32();
   }
   in.section("our extension's blockmap");
+  if (version >= 2) x.blockmap_header = std::array<int32_t, 4>{in.i32(), in.i32(), in.i32(), in.i32()};
   const uint32_t cells = in.count(8, "blockmap cells");
   for (uint32_t i = 0; i < cells; ++i) {
     auto& cell = x.cells.emplace_back();
@@ -547,31 +550,53 @@ void apply_extension(World& w, const DoomSave& doom, const Extension& x, SaveRea
     }
   };
   for (size_t i = 0; i < x.sectors.size(); ++i) link_sector(w.map_.sectors[i], x.sectors[i].things);
-  const Blockmap& bm = w.map_.blockmap;
+  Blockmap& bm = w.map_.blockmap;
+  // After an intercepts overrun the header is not the lump's, and the lists are as
+  // vanilla left them: heads of cells computed with the old header, lists that join
+  // (a thing has one successor, whatever list reaches it). They are put back as saved.
+  const bool overrun = x.blockmap_header && *x.blockmap_header != std::array{bm.origin_x, bm.origin_y, bm.width, bm.height};
+  if (overrun) {
+    const std::array<int32_t, 4>& h = *x.blockmap_header;
+    bm.origin_x = h[0], bm.origin_y = h[1], bm.width = h[2], bm.height = h[3];
+  }
   for (const auto& [cell, list] : x.cells) {
     if (cell >= w.block_links_.size()) in.fail_at(at, "blockmap cell " + std::to_string(cell) + " is not in the map");
-    Mobj* prev = nullptr;
-    for (int32_t r : list) {
+    for (int32_t r : list)
       if (r < 0 || size_t(r) >= live) in.fail_at(at, "a blockmap cell's list names thing " + std::to_string(r));
-      Mobj* m = mobjs[size_t(r)];
-      const int bx = w.block_x(m->x), by = w.block_y(m->y);
-      const bool there = bx >= 0 && by >= 0 && bx < bm.width && by < bm.height &&
-                         size_t(by) * size_t(bm.width) + size_t(bx) == cell;
-      if (++in_cell[size_t(r)] > 1 || (m->flags & kNoblockmap) || !there)
-        in.fail_at(at, "thing " + std::to_string(r) + " is listed in blockmap cell " + std::to_string(cell) + " where it is not");
-      m->bprev = prev;
-      m->bnext = nullptr;
-      (prev ? prev->bnext : w.block_links_[cell]) = m;
+    Mobj* prev = nullptr;
+    for (size_t i = 0; i < list.size(); ++i) {
+      Mobj* m = mobjs[size_t(list[i])];
+      const std::string where = "thing " + std::to_string(list[i]) + " is listed in blockmap cell " + std::to_string(cell);
+      if (m->flags & kNoblockmap) in.fail_at(at, where + ", which it stays out of");
+      if (!overrun) {
+        if (++in_cell[size_t(list[i])] > 1 || w.block_cell(w.block_x(m->x), w.block_y(m->y)) != cell)
+          in.fail_at(at, where + " where it is not");
+        m->bprev = prev;
+        m->bnext = nullptr;
+        (prev ? prev->bnext : w.block_links_[cell]) = m;
+        prev = m;
+        continue;
+      }
+      Mobj* next = i + 1 < list.size() ? mobjs[size_t(list[i + 1])] : nullptr;
+      if (in_cell[size_t(list[i])]++ == 0) {
+        m->bnext = next;
+        m->bprev = prev;
+      } else if (m->bnext != next) {
+        in.fail_at(at, where + ", followed there by another thing than in an earlier list");
+      } else if (prev) {
+        m->bprev = prev;  // a list's head may be stale; the thing before it in a list is not
+      }
+      if (!prev) w.block_links_[cell] = m;
       prev = m;
     }
   }
   for (size_t r = 0; r < live; ++r) {
     const Mobj& m = *mobjs[r];
     if (!(m.flags & kNosector) && !in_sector[r]) in.fail_at(at, "thing " + std::to_string(r) + " is in no sector's list");
-    const int bx = w.block_x(m.x), by = w.block_y(m.y);
-    const bool on_map = bx >= 0 && by >= 0 && bx < bm.width && by < bm.height;
-    if (!(m.flags & kNoblockmap) && on_map && !in_cell[r]) in.fail_at(at, "thing " + std::to_string(r) + " is in no blockmap cell's list");
-    if (!(m.flags & kNoblockmap) && !on_map) mobjs[r]->bnext = mobjs[r]->bprev = nullptr;
+    const bool on_map = w.block_cell(w.block_x(m.x), w.block_y(m.y)) != World::kOffTheMap;
+    if (!(m.flags & kNoblockmap) && on_map && !in_cell[r] && !overrun)
+      in.fail_at(at, "thing " + std::to_string(r) + " is in no blockmap cell's list");
+    if (!(m.flags & kNoblockmap) && !in_cell[r]) mobjs[r]->bnext = mobjs[r]->bprev = nullptr;
   }
 
   // The lists of lifts and crushers, each a lift or a crusher of the save.

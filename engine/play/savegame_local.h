@@ -8,6 +8,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -180,6 +181,7 @@ struct Extension {
     int32_t placed = -1;
   };
   std::vector<MobjExtra> live;
+  std::optional<std::array<int32_t, 4>> blockmap_header;  // origin x, y, width, height (version 2)
   std::vector<std::pair<uint32_t, std::vector<int32_t>>> cells;
   std::vector<int32_t> plats, ceilings;
   struct ButtonExtra {

@@ -321,6 +321,10 @@ class World {
   // The sounds started and the messages given during the last tic, in order.
   const std::vector<SoundEvent>& sounds() const { return sounds_; }
   const std::vector<std::string>& messages() const { return messages_; }
+  // Empty, or what this level did first that Chocolate Doom leaves undefined (vanilla
+  // overran its memory further than Chocolate emulates): a replay beside Chocolate may
+  // part from that tic on, and no port can say which is right.
+  const std::string& beyond_chocolate() const { return beyond_chocolate_; }
   // Puts the player at (x, y) facing `angle` (a start other than the map's), on the floor there.
   void place_player(Fixed x, Fixed y, Angle angle);
   // Our cheats (play/demo.h's DemoCheat bits): noclip, god mode, every weapon, ammo and key.
@@ -401,6 +405,16 @@ class World {
   bool path_traverse(Fixed x1, Fixed y1, Fixed x2, Fixed y2, int flags, const std::function<bool(Intercept&)>& trav);
   int block_x(Fixed x) const { return wrap_sub(x, map_.blockmap.origin_x) >> kMapBlockShift; }
   int block_y(Fixed y) const { return wrap_sub(y, map_.blockmap.origin_y) >> kMapBlockShift; }
+  // Cell (bx, by)'s number as Doom computes it (x + y * width), or kOffTheMap.
+  static constexpr size_t kOffTheMap = SIZE_MAX;
+  size_t block_cell(int bx, int by) const;
+  // The cell's list of things (Doom's blocklinks[cell]), or nullptr off the map.
+  Mobj** block_link(int bx, int by);
+  // Vanilla Doom's intercepts overrun, as Chocolate Doom emulates it: intercept `index`
+  // past the 128 that vanilla held, written over the globals that followed the array.
+  void overrun_intercepts(size_t index);
+  void overrun_write(int location, int32_t value);
+  void note_beyond_chocolate(const std::string& what);
 
   // ---- move.cpp (p_map.c)
   void start_position_check(Mobj* thing, Fixed x, Fixed y);
@@ -575,6 +589,7 @@ class World {
     Line* ceiling_line = nullptr;
     std::vector<Line*> special_hits;  // lines with specials touched (Doom's spechit)
   } tm_;
+  std::string beyond_chocolate_;  // what the first tic beyond Chocolate Doom's emulation did
   Opening opening_;  // the last line_opening (Doom's opentop, openbottom, openrange, lowfloor)
   // Hitscans (P_AimLineAttack, P_LineAttack)
   Mobj* line_target_ = nullptr;
@@ -640,9 +655,13 @@ class World {
 
 template <typename F>
 bool World::block_lines(int bx, int by, F&& f) {
-  const Blockmap& bm = map_.blockmap;
-  if (bx < 0 || by < 0 || bx >= bm.width || by >= bm.height) return true;
-  for (const uint32_t* at = bm.list(bx, by); *at != Blockmap::kEnd; ++at) {
+  const size_t cell = block_cell(bx, by);
+  if (cell == kOffTheMap) return true;
+  if (cell >= map_.blockmap.offsets.size()) {
+    note_beyond_chocolate("lines of blockmap cell " + std::to_string(cell) + ", past the blockmap's offsets");
+    return true;
+  }
+  for (const uint32_t* at = map_.blockmap.list(cell); *at != Blockmap::kEnd; ++at) {
     int& mark = map_.line_marks[*at];
     if (mark == valid_count_) continue;  // already checked in another cell
     mark = valid_count_;
@@ -653,9 +672,9 @@ bool World::block_lines(int bx, int by, F&& f) {
 
 template <typename F>
 bool World::block_things(int bx, int by, F&& f) {
-  const Blockmap& bm = map_.blockmap;
-  if (bx < 0 || by < 0 || bx >= bm.width || by >= bm.height) return true;
-  for (Mobj* mo = block_links_[size_t(by) * size_t(bm.width) + size_t(bx)]; mo; mo = mo->bnext)
+  Mobj** link = block_link(bx, by);
+  if (!link) return true;
+  for (Mobj* mo = *link; mo; mo = mo->bnext)
     if (!f(mo)) return false;
   return true;
 }

@@ -388,6 +388,21 @@ TEST(Saves, TheFuzzSeedIsASaveOfTheFuzzMap) {
   EXPECT_EQ(read_file_bytes(seed), bytes) << "P3D_WRITE_SEEDS=1 writes it anew";
 }
 
+// A save of our extension's first version (without the blockmap's header) loads with
+// the map's own header, as the same save in today's version does.
+TEST(Saves, AFirstVersionExtensionLoadsAsToday) {
+  const wad::Stack wads = fuzz::save_map_wads();
+  const level::Level level = bsp::build_wad_map(wads, "MAP01", {}, nullptr);
+  const DoomNumbers numbers(wads, level);
+  auto loaded = [&](const std::filesystem::path& file) {
+    World w(map_from_wads(wads, "MAP01", level), level, game_options_for(wads, "MAP01", 3), Random{});
+    EXPECT_TRUE(read_save(w, read_file_bytes(file), file.string(), numbers).extended) << file;
+    return write_save(w, numbers, "fuzz seed", {});
+  };
+  const std::vector<uint8_t> today = loaded(test::source_dir() / "tests/fuzz/seeds/room.dsg");
+  EXPECT_EQ(loaded(test::source_dir() / "tests/golden/saves/room_extension_v1.dsg"), today);
+}
+
 // ---- broken saves: refused with "<what>: byte N: ...", never a crash
 
 class BrokenSaves : public ::testing::Test {
@@ -484,7 +499,7 @@ TEST_F(BrokenSaves, WrongVersionMagicClassStateTypeAndSector) {
   b[d.end] = 'X';
   expect(b, "byte " + std::to_string(d.end) + ": bytes after Doom's end marker that are not our extension");
   expect(b, "", true);  // as Doom would: what follows the end marker is not read
-  expect(with_u32(*bytes_, d.end + 8, 2), "our extension's version 2");
+  expect(with_u32(*bytes_, d.end + 8, 3), "our extension's version 3");
   b = *bytes_;
   b.back() ^= 1;
   expect(b, "our extension's checksum does not match");

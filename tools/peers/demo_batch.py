@@ -8,7 +8,10 @@ the player's x, y, z, angle, momentum, health, view height and Doom's random ind
 compared exactly, tic by tic. Where a demo parts, both replay it again dumping every
 thing after every tic, and the first thing that differs (often tics before the player
 shows it) is printed with both states side by side; the demo and the files stay in
-OUT/parted/. Prints a markdown table, then a line per parted demo. Exits 1 if any parted.
+OUT/parted/. A demo that parts only after our game said it went beyond Chocolate Doom
+(vanilla overran memory further than Chocolate emulates, so Chocolate's own memory
+decides) is counted apart, compared up to there. Prints a markdown table, then a line
+per parted demo. Exits 1 if any parted.
 
 CHOCOLATE is a chocolate-doom (git 941dd35) built with a small patch that this project
 neither holds nor needs to build (tools/peer_saves.sh describes its P3D_TRACE); at the
@@ -27,6 +30,7 @@ import argparse
 import concurrent.futures
 import csv
 import os
+import re
 import shutil
 import struct
 import subprocess
@@ -64,9 +68,13 @@ def replay(args, demo, *options):
 
 
 def ours_trace(args, demo, work):
-    """Our replay's rows: tic k's values after k tics, as Chocolate's trace line k - 1."""
+    """Our replay's rows (tic k's values after k tics, as Chocolate's trace line k - 1),
+    and the demo tic from which Chocolate's memory is undefined (vanilla overran more
+    than it emulates), or None."""
     out = os.path.join(work, "ours")
-    replay(args, demo, "--raw-stats", "--capture-every", "1", "--out", out).check_returncode()
+    done = replay(args, demo, "--raw-stats", "--capture-every", "1", "--out", out)
+    done.check_returncode()
+    beyond = re.search(rb"beyond Chocolate Doom from demo tic (\d+)", done.stderr)
     rows = []
     with open(os.path.join(out, "stats.csv")) as f:
         for r in csv.DictReader(f):
@@ -74,7 +82,7 @@ def ours_trace(args, demo, work):
                 continue
             rows.append([int(r[k]) for k in ("x_raw", "y_raw", "z_raw", "angle_raw", "momx_raw", "momy_raw")] +
                         [int(r["health"]), int(r["random"]), int(r["viewz_raw"])])
-    return rows
+    return rows, int(beyond.group(1)) if beyond else None
 
 
 def chocolate_trace(args, demo, work, dump=None):
@@ -128,7 +136,7 @@ def run_one(args, job):
                     *flags, "--tics", str(args.tics), "--seed", str(seed), "-o", demo], check=True)
     result = {"name": name, "map": map_name, "skill": skill, "option": option, "tics": args.tics}
     try:
-        ours, theirs = ours_trace(args, demo, work), chocolate_trace(args, demo, work)
+        (ours, beyond), theirs = ours_trace(args, demo, work), chocolate_trace(args, demo, work)
     except (subprocess.CalledProcessError, subprocess.TimeoutExpired, OSError) as e:
         result["error"] = str(e)
         return result
@@ -136,7 +144,10 @@ def run_one(args, job):
     parted = next((t for t in range(compared) if ours[t] != theirs[t]), None)
     result["compared"] = compared
     result["parted"] = parted
-    if parted is None:
+    if parted is not None and beyond is not None and parted >= beyond:
+        # Chocolate's own memory decides from there: not a difference anyone can fix.
+        result["compared"], result["parted"], result["beyond"] = beyond, None, beyond
+    if result["parted"] is None:
         shutil.rmtree(work)
         return result
     differing = [f"{f} {o} / {c}" for f, o, c in zip(FIELDS, ours[parted], theirs[parted]) if o != c]
@@ -180,11 +191,17 @@ def main():
     failed = [r for r in results if "error" in r]
     parted = [r for r in results if r.get("parted") is not None]
     played = [r for r in results if "compared" in r]
-    print(f"| WADs | demos | maps | skills | options | tics compared | tics in sync | parted | failed to run |")
-    print(f"|---|---:|---:|---|---|---:|---:|---:|---:|")
+    beyond = [r for r in results if "beyond" in r]
+    print(f"| WADs | demos | maps | skills | options | tics compared | tics in sync | parted | "
+          f"parted beyond Chocolate | failed to run |")
+    print(f"|---|---:|---:|---|---|---:|---:|---:|---:|---:|")
     print(f"| {stack} | {len(results)} | {len(maps)} | {args.skills} | {args.options} | "
           f"{sum(r['compared'] for r in played)} | "
-          f"{sum(r['compared'] if r['parted'] is None else r['parted'] for r in played)} | {len(parted)} | {len(failed)} |")
+          f"{sum(r['compared'] if r['parted'] is None else r['parted'] for r in played)} | {len(parted)} | "
+          f"{len(beyond)} | {len(failed)} |")
+    for r in beyond:
+        print(f"\nbeyond Chocolate: {r['name']} from tic {r['beyond']}, where vanilla overran more memory than "
+              f"Chocolate emulates (compared up to there)")
     for r in parted:
         print(f"\nparted: {r['name']} at tic {r['parted']} of {r['compared']}: {r['fields']}\n  {r['things']}")
     for r in failed:
