@@ -544,6 +544,14 @@ void Session::load_game(std::span<const uint8_t> bytes, const std::string& what,
   o.fast = flags_.fast;
   o.respawn = flags_.respawn;
   o.no_monsters = flags_.no_monsters;
+  // The save's players (Doom's playeringame); the rest of the game (netgame, deathmatch,
+  // the console player) stays this one's, as Doom's load keeps its globals.
+  const play::GameOptions& now = world_->options();
+  o.in_game = header.in_game;
+  o.console_player = now.console_player, o.netgame = now.netgame;
+  o.deathmatch = now.deathmatch, o.time_limit = now.time_limit;
+  if (!o.in_game[size_t(o.console_player)])
+    throw Error(what + ": byte 43: the save has no player " + std::to_string(o.console_player + 1) + ", whose view this game shows");
   auto world = std::make_unique<play::World>(play::map_from_wads(wads, map_name, level), level, o, play::Random{}, nullptr);
   play::carry_over(*world, *world_, header);
   const play::FaceInput fresh_face = play::face_input(world->player());  // ST_Start sees the new player

@@ -221,16 +221,17 @@ Mobj* World::spawn_mobj(Fixed x, Fixed y, Fixed z, ThingType type) {
   return mobj;
 }
 
+void World::queue_item_respawn(const Mobj& mobj) {
+  if (!(mobj.flags & kSpecial) || (mobj.flags & kDropped) || mobj.type == ThingType::kInv || mobj.type == ThingType::kIns)
+    return;
+  item_queue_[item_queue_head_] = mobj.spawn_point;
+  item_queue_time_[item_queue_head_] = level_time_;
+  item_queue_head_ = (item_queue_head_ + 1) % kItemQueueSize;
+  if (item_queue_head_ == item_queue_tail_) item_queue_tail_ = (item_queue_tail_ + 1) % kItemQueueSize;
+}
+
 void World::remove_mobj(Mobj* mobj) {
-  // An item taken (not one a monster dropped, nor the invulnerability and invisibility
-  // spheres) queues its spot for altdeath's respawning; the 129th loses the oldest.
-  if ((mobj->flags & kSpecial) && !(mobj->flags & kDropped) && mobj->type != ThingType::kInv &&
-      mobj->type != ThingType::kIns) {
-    item_queue_[item_queue_head_] = mobj->spawn_point;
-    item_queue_time_[item_queue_head_] = level_time_;
-    item_queue_head_ = (item_queue_head_ + 1) % kItemQueueSize;
-    if (item_queue_head_ == item_queue_tail_) item_queue_tail_ = (item_queue_tail_ + 1) % kItemQueueSize;
-  }
+  queue_item_respawn(*mobj);
   unset_thing_position(mobj);
   stop_sound(mobj);
   remove_thinker(mobj);

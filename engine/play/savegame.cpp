@@ -196,7 +196,7 @@ ThinkerLists thinker_lists(const World& w) {
   return out;
 }
 
-DoomMobj doom_mobj_of(const Mobj& m) {
+DoomMobj doom_mobj_of(const World& w, const Mobj& m) {
   DoomMobj d;
   d.x = m.x, d.y = m.y, d.z = m.z;
   d.angle = int32_t(m.angle);
@@ -213,7 +213,7 @@ DoomMobj doom_mobj_of(const Mobj& m) {
   d.health = m.health;
   d.move_dir = m.move_dir, d.move_count = m.move_count;
   d.reaction_time = m.reaction_time, d.threshold = m.threshold;
-  d.player = m.player ? 1 : 0;
+  d.player = m.player ? int32_t(m.player - &w.player(0)) + 1 : 0;
   d.last_look = m.last_look;
   d.spawn_x = m.spawn_point.x, d.spawn_y = m.spawn_point.y, d.spawn_angle = m.spawn_point.angle;
   d.spawn_type = m.spawn_point.type, d.spawn_options = m.spawn_point.options;
@@ -310,7 +310,7 @@ void fill_mobj(World& w, Mobj& m, const DoomMobj& d) {
   m.move_dir = d.move_dir, m.move_count = d.move_count;
   m.target = m.tracer = nullptr;
   m.reaction_time = d.reaction_time, m.threshold = d.threshold;
-  m.player = d.player ? &w.player() : nullptr;
+  m.player = d.player ? &w.players_[size_t(d.player - 1)] : nullptr;
   m.last_look = d.last_look;
   m.spawn_point = spawn_point_of(w, d);
 }
@@ -380,6 +380,7 @@ DoomPlayer doom_player_of(const Player& p) {
   for (size_t i = 0; i < 2; ++i)
     d.psprites[i] = {int32_t(p.psprites[i].state), p.psprites[i].tics, p.psprites[i].sx, p.psprites[i].sy};
   d.did_secret = p.did_secret;
+  for (size_t i = 0; i < d.frags.size(); ++i) d.frags[i] = p.frags[i];
   return d;
 }
 
@@ -521,7 +522,10 @@ DoomSave doom_save_of(const World& w, const DoomNumbers& numbers, const std::str
   s.header.episode = w.options().commercial ? 1 : w.options().episode;  // Doom II's games stay in episode 1
   s.header.map = w.options().map;
   s.header.level_time = w.level_time();
-  s.player = doom_player_of(w.player());
+  for (int p = 0; p < kMaxPlayers; ++p) {
+    s.header.in_game[size_t(p)] = w.in_game(p);
+    if (w.in_game(p)) s.players[size_t(p)] = doom_player_of(w.player(p));
+  }
   for (const Sector& sec : w.map().sectors)
     s.sectors.push_back({whole_units(sec.floor_height), whole_units(sec.ceiling_height), numbering.flat(sec.floor_pic, level),
                          numbering.flat(sec.ceiling_pic, level), int16_t(sec.light), int16_t(sec.special), int16_t(sec.tag)});
@@ -536,7 +540,7 @@ DoomSave doom_save_of(const World& w, const DoomNumbers& numbers, const std::str
     }
   }
   const ThinkerLists lists = thinker_lists(w);
-  for (const Mobj* m : lists.mobjs) s.mobjs.push_back(doom_mobj_of(*m));
+  for (const Mobj* m : lists.mobjs) s.mobjs.push_back(doom_mobj_of(w, *m));
   for (const Thinker* t : lists.specials) s.specials.push_back(doom_special_of(t, numbering, level));
   return s;
 }
@@ -549,11 +553,14 @@ std::vector<uint8_t> encode_doom_save(const DoomSave& s) {
   w.u8(uint8_t(s.header.skill - 1));
   w.u8(uint8_t(s.header.episode));
   w.u8(uint8_t(s.header.map));
-  for (int p = 0; p < kMaxPlayers; ++p) w.u8(p == 0);
+  for (bool in : s.header.in_game) w.u8(in);
   w.u8(uint8_t(s.header.level_time >> 16)), w.u8(uint8_t(s.header.level_time >> 8)), w.u8(uint8_t(s.header.level_time));
   // players (P_ArchivePlayers)
-  w.pad();
-  write_player(w, s.player);
+  for (const std::optional<DoomPlayer>& player : s.players) {
+    if (!player) continue;
+    w.pad();
+    write_player(w, *player);
+  }
   // world (P_ArchiveWorld)
   for (const DoomSector& d : s.sectors)
     for (int16_t v : {d.floor_height, d.ceiling_height, d.floor_pic, d.ceiling_pic, d.light, d.special, d.tag}) w.i16(v);
@@ -605,10 +612,12 @@ SaveHeader read_header(SaveReader& in) {
   const size_t players_at = in.position();
   std::array<uint8_t, kMaxPlayers> in_game{};
   for (uint8_t& p : in_game) p = in.u8();
-  if (in_game[0] != 1 || in_game[1] || in_game[2] || in_game[3])
+  if (std::any_of(in_game.begin(), in_game.end(), [](uint8_t p) { return p > 1; }) ||
+      std::none_of(in_game.begin(), in_game.end(), [](uint8_t p) { return p == 1; }))
     in.fail_at(players_at, "players in the game " + std::to_string(in_game[0]) + " " + std::to_string(in_game[1]) + " " +
                                std::to_string(in_game[2]) + " " + std::to_string(in_game[3]) +
-                               ": only single-player saves (player 1 alone) are played");
+                               ": each is 0 or 1, and one at least is 1");
+  for (size_t p = 0; p < in_game.size(); ++p) h.in_game[p] = in_game[p] == 1;
   const int a = in.u8(), b = in.u8(), c = in.u8();
   h.level_time = (a << 16) + (b << 8) + c;
   return h;
@@ -687,7 +696,7 @@ DoomMobj read_mobj(SaveReader& in) {
   check_range(in, at + 88, d.type, 0, int(ThingType::kCount) - 1, "a thing's type");
   check_range(in, at + 100, d.state, 0, int(StateId::kCount) - 1, "a thing's state");
   check_range(in, at + 112, d.move_dir, 0, 8, "a thing's direction");
-  check_range(in, at + 132, d.player, 0, 1, "a thing's player (single player: 0 or 1)");
+  check_range(in, at + 132, d.player, 0, kMaxPlayers, "a thing's player (0: none, else 1..4)");
   check_range(in, at + 136, d.last_look, 0, kMaxPlayers - 1, "a thing's last player looked at");
   check_mobj_counters(in, d, {at + 64, at + 68, at + 72, at + 76, at + 80, at + 96, at + 108, at + 116, at + 124, at + 128,
                              at + 20, at + 56, at + 60});
@@ -791,10 +800,13 @@ DoomSave parse_doom_save(std::span<const uint8_t> bytes, const std::string& what
   SaveReader in(bytes, what);
   DoomSave s;
   s.header = read_header(in);
-  in.section("the player");
-  in.pad();
-  s.player_at = in.position();
-  s.player = read_player(in);
+  in.section("the players");
+  for (size_t p = 0; p < s.players.size(); ++p) {
+    if (!s.header.in_game[p]) continue;
+    in.pad();
+    if (!s.player_at) s.player_at = in.position();
+    s.players[p] = read_player(in);
+  }
   in.section("the sectors", kAnotherMap);
   s.world_at = in.position();
   for (size_t i = 0; i < map.sectors.size(); ++i) {
@@ -826,9 +838,13 @@ DoomSave parse_doom_save(std::span<const uint8_t> bytes, const std::string& what
     in.pad();
     s.mobj_at.push_back(in.position());
     s.mobjs.push_back(read_mobj(in));
+    if (const int p = s.mobjs.back().player; p && !s.header.in_game[size_t(p - 1)])
+      in.fail_at(s.mobj_at.back() + 132, "a thing of player " + std::to_string(p) + ", who is not in the game");
   }
-  if (std::none_of(s.mobjs.begin(), s.mobjs.end(), [](const DoomMobj& m) { return m.player == 1; }))
-    in.fail_at(s.thinkers_at, "no thing is player 1's");
+  for (int p = 1; p <= kMaxPlayers; ++p) {
+    const bool has_thing = std::any_of(s.mobjs.begin(), s.mobjs.end(), [p](const DoomMobj& m) { return m.player == p; });
+    if (s.header.in_game[size_t(p - 1)] && !has_thing) in.fail_at(s.thinkers_at, "no thing is player " + std::to_string(p) + "'s");
+  }
   in.section("the specials", kAnotherMap);
   s.specials_at = in.position();
   for (;;) {
@@ -870,6 +886,11 @@ struct Warnings {
 // Empties the World of thinkers as Doom's P_UnArchiveThinkers does (every thing out of
 // its lists, every thinker gone), and of every pointer into them.
 void clear_thinkers(World& w) {
+  // Doom removes the new level's things with P_RemoveMobj, which queues every item for
+  // altdeath's respawning at the save's level time (set before): 30 seconds after a
+  // load, the items of the map as it began come back where they stood.
+  for (const auto& owned : w.thinkers_)
+    if (owned->kind == Thinker::Kind::kMobj && !owned->removed) w.queue_item_respawn(*static_cast<const Mobj*>(owned.get()));
   for (Sector& s : w.map_.sectors) s.thing_list = nullptr, s.special_data = nullptr, s.sound_target = nullptr;
   std::fill(w.block_links_.begin(), w.block_links_.end(), nullptr);
   w.thinkers_.clear();
@@ -877,8 +898,9 @@ void clear_thinkers(World& w) {
   w.removed_since_pass_ = 0;
   w.active_plats_.clear();
   w.active_ceilings_.clear();
-  w.player().mo = nullptr;
-  w.player().attacker = nullptr;
+  for (Player& p : w.players_) p.mo = nullptr, p.attacker = nullptr;
+  w.body_queue_.clear();  // Doom's P_SetupLevel starts its queue again
+  w.body_queue_slot_ = 0;
   // Doom's globals pointing at things are all set before they are read, save the
   // boss brain's spots, which Doom keeps pointing at the old level's things.
   w.tm_ = {};
@@ -892,8 +914,7 @@ void clear_thinkers(World& w) {
   w.messages_.clear();
 }
 
-void apply_player(World& w, const DoomPlayer& d) {
-  Player& p = w.player();
+void apply_player(Player& p, const DoomPlayer& d) {
   p.state = PlayerState(d.state);
   p.cmd = TicCmd{d.forward, d.side, d.turn, d.buttons};
   p.view_z = d.view_z, p.view_height = d.view_height, p.delta_view_height = d.delta_view_height, p.bob = d.bob;
@@ -917,6 +938,7 @@ void apply_player(World& w, const DoomPlayer& d) {
   for (size_t i = 0; i < 2; ++i)
     p.psprites[i] = {StateId(d.psprites[i].state), d.psprites[i].tics, d.psprites[i].sx, d.psprites[i].sy};
   p.did_secret = d.did_secret != 0;
+  for (size_t i = 0; i < d.frags.size(); ++i) p.frags[i] = d.frags[i];
 }
 
 void apply_world(World& w, const DoomSave& s, const DoomNumbers& numbers, Warnings& warnings) {
@@ -979,7 +1001,7 @@ void apply_thinkers(World& w, const DoomSave& s, const DoomNumbers& numbers, War
     w.set_thing_position(m);
     m->floor_z = m->subsector->sector->floor_height;  // Doom's loader: the sector's, not the saved ones
     m->ceiling_z = m->subsector->sector->ceiling_height;
-    if (m->player) w.player().mo = m;
+    if (m->player) m->player->mo = m;
   }
   for (size_t i = 0; i < s.specials.size(); ++i) {
     std::visit(
@@ -1080,11 +1102,15 @@ LoadedSave read_save(World& world, std::span<const uint8_t> bytes, const std::st
   if (!doom_only && rest.remaining()) extension = read_extension(rest, doom, world);
 
   Warnings warnings{out.warnings, what};
+  for (int p = 0; p < kMaxPlayers; ++p)
+    if (world.in_game(p) != doom.header.in_game[size_t(p)])
+      throw Error(what + ": its players are not the game's: set the game up with the save's (SaveHeader::in_game)");
+  world.level_time_ = doom.header.level_time;  // Doom's P_ReadSaveGameHeader, before the rest
   clear_thinkers(world);
-  apply_player(world, doom.player);
+  for (int p = 0; p < kMaxPlayers; ++p)
+    if (doom.players[size_t(p)]) apply_player(world.players_[size_t(p)], *doom.players[size_t(p)]);
   apply_world(world, doom, numbers, warnings);
   apply_thinkers(world, doom, numbers, warnings);
-  world.level_time_ = doom.header.level_time;
   if (extension) {
     apply_extension(world, doom, *extension, rest, doom.end);
     out.extended = true;

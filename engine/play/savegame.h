@@ -5,7 +5,8 @@
 // Doom's part, in file order (little-endian; "pad" aligns to 4 bytes from the file's start):
 //   header    description[24], "version 109"[16], skill, episode, map, playeringame[4],
 //             leveltime (3 bytes, high first)
-//   players   pad, player_t (pointers written as 0; psprite states as state numbers)
+//   players   per player in the game: pad, player_t (pointers written as 0; psprite
+//             states as state numbers)
 //   world     per sector: floor, ceiling (whole units), floor flat, ceiling flat, light,
 //             special, tag (16 bits each); per line: flags, special, tag, then per side
 //             it has: x offset, y offset (whole units), top, bottom, middle texture
@@ -57,6 +58,7 @@ struct SaveHeader {
   int skill = 3;            // 1..5 (Doom's gameskill + 1)
   int episode = 1, map = 1;
   int level_time = 0;
+  std::array<bool, kMaxPlayers> in_game{true, false, false, false};  // Doom's playeringame: a load plays these
   // MAPxx for Doom II's games (commercial), else ExMy.
   std::string map_name(bool commercial) const;
 };
@@ -155,12 +157,12 @@ using DoomSpecial = std::variant<DoomCeiling, DoomDoor, DoomFloor, DoomPlat, Doo
 // A whole save as Doom reads it, and where each record began (for messages).
 struct DoomSave {
   SaveHeader header;
-  DoomPlayer player;
+  std::array<std::optional<DoomPlayer>, kMaxPlayers> players;  // those in the game
   std::vector<DoomSector> sectors;
   std::vector<DoomLine> lines;
   std::vector<DoomMobj> mobjs;
   std::vector<DoomSpecial> specials;
-  size_t player_at = 0, world_at = 0, thinkers_at = 0, specials_at = 0;
+  size_t player_at = 0, world_at = 0, thinkers_at = 0, specials_at = 0;  // player_at: the first player's record
   std::vector<size_t> mobj_at, special_at;
   size_t end = 0;  // the byte after Doom's end marker: our extension, if any, starts here
 };

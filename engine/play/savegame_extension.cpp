@@ -89,8 +89,8 @@ std::vector<uint8_t> encode_extension(const World& w, const SaveExtras& x) {
   out.u32(uint32_t(w.brain_target_on_));
   out.u32(uint32_t(w.brain_targets_.size()));
   for (const Mobj* m : w.brain_targets_) out.i32(refs.ref(m));
-  out.i32(refs.ref(w.player().attacker));
-  out.str(w.player().message.substr(0, kMaxMessage));
+  for (int p = 0; p < kMaxPlayers; ++p)
+    if (w.in_game(p)) out.i32(refs.ref(w.player(p).attacker)), out.str(w.player(p).message.substr(0, kMaxMessage));
   // the map in full precision, with the sectors' thing lists in order
   out.u32(uint32_t(w.map_.sectors.size()));
   for (const Sector& s : w.map_.sectors) {
@@ -139,6 +139,16 @@ std::vector<uint8_t> encode_extension(const World& w, const SaveExtras& x) {
   // the blockmap's header, then its cells' thing lists in order
   const Blockmap& bm = w.map_.blockmap;
   for (int32_t v : {bm.origin_x, bm.origin_y, bm.width, bm.height}) out.i32(v);
+  // a netgame's queues: the corpses kept, the items to come back
+  out.u32(uint32_t(w.body_queue_slot_));
+  out.u32(uint32_t(w.body_queue_.size()));
+  for (const Mobj* m : w.body_queue_) out.i32(refs.ref(m));
+  out.u32(uint32_t(w.item_queue_head_)), out.u32(uint32_t(w.item_queue_tail_));
+  for (size_t i = w.item_queue_tail_; i != w.item_queue_head_; i = (i + 1) % World::kItemQueueSize) {
+    const MapThing& t = w.item_queue_[i];
+    for (int16_t v : {t.x, t.y, t.angle, t.type, t.options}) out.u16(uint16_t(v));
+    out.i32(t.placed), out.i32(w.item_queue_time_[i]);
+  }
   std::vector<std::pair<uint32_t, std::vector<int32_t>>> cells;
   for (size_t c = 0; c < w.block_links_.size(); ++c) {
     if (!w.block_links_[c]) continue;
@@ -166,7 +176,7 @@ std::vector<uint8_t> encode_extension(const World& w, const SaveExtras& x) {
   ByteWriter ghosts;
   for (size_t g = 0; g < refs.ghosts.size(); ++g) {
     const Mobj* m = refs.ghosts[g];
-    put_mobj_full(ghosts, doom_mobj_of(*m));
+    put_mobj_full(ghosts, doom_mobj_of(w, *m));
     ghosts.i32(refs.ref(m->target)), ghosts.i32(refs.ref(m->tracer));
     ghosts.u32(m->id), ghosts.i32(m->spawn_point.placed);
   }
@@ -198,7 +208,7 @@ DoomMobj get_mobj_full(SaveReader& in) {
   check_range(in, at + 56, d.type, 0, int(ThingType::kCount) - 1, "a removed thing's type");
   check_range(in, at + 64, d.state, 0, int(StateId::kCount) - 1, "a removed thing's state");
   check_range(in, at + 76, d.move_dir, 0, 8, "a removed thing's direction");
-  check_range(in, at + 92, d.player, 0, 1, "a removed thing's player");
+  check_range(in, at + 92, d.player, 0, kMaxPlayers, "a removed thing's player");
   check_range(in, at + 96, d.last_look, 0, kMaxPlayers - 1, "a removed thing's last player looked at");
   check_mobj_counters(in, d, {at + 32, at + 36, at + 40, at + 44, at + 48, at + 60, at + 72, at + 80, at + 84, at + 88,
                              at + 8, at + 24, at + 28});
@@ -284,8 +294,8 @@ Extension read_extension(SaveReader& file, const DoomSave& doom, const World& w)
   for (uint32_t i = 0; i < brains; ++i) x.brain_targets.push_back(in.i32());
   if (x.brain_target_on != 0 && x.brain_target_on >= brains)
     in.fail_at(on_at, "the boss brain's next spot " + std::to_string(x.brain_target_on) + " of " + std::to_string(brains));
-  x.attacker = in.i32();
-  x.message = in.str(kMaxMessage);
+  for (size_t p = 0; p < kMaxPlayers; ++p)
+    if (doom.header.in_game[p]) x.attackers[p] = in.i32(), x.messages[p] = in.str(kMaxMessage);
 
   const Map& map = w.map_;
   const int64_t textures = int64_t(w.level_.textures.size());
@@ -375,7 +385,28 @@ Extension read_extension(SaveReader& file, const DoomSave& doom, const World& w)
     m.target = in.i32(), m.tracer = in.i32(), m.id = in.u32(), m.placed = in.i32();
   }
   in.section("our extension's blockmap");
-  if (version >= 2) x.blockmap_header = std::array<int32_t, 4>{in.i32(), in.i32(), in.i32(), in.i32()};
+  if (version >= 2) {
+    x.blockmap_header = std::array<int32_t, 4>{in.i32(), in.i32(), in.i32(), in.i32()};
+    Extension::Queues& q = x.queues.emplace();
+    q.body_slot = in.u32();
+    const size_t bodies_at = in.position();
+    const uint32_t bodies = in.count(4, "corpses kept");
+    if (bodies > World::kBodyQueueSize) in.fail_at(bodies_at, std::to_string(bodies) + " corpses kept, Doom's queue holds 32");
+    for (uint32_t i = 0; i < bodies; ++i) q.bodies.push_back(in.i32());
+    const size_t items_at = in.position();
+    q.item_head = in.u32(), q.item_tail = in.u32();
+    if (q.item_head >= World::kItemQueueSize || q.item_tail >= World::kItemQueueSize)
+      in.fail_at(items_at, "the item queue's ends " + std::to_string(q.item_head) + " and " + std::to_string(q.item_tail) +
+                               " (Doom's holds 128)");
+    for (uint32_t i = q.item_tail; i != q.item_head; i = (i + 1) % World::kItemQueueSize) {
+      const size_t at = in.position();
+      MapThing t;
+      for (int16_t* v : {&t.x, &t.y, &t.angle, &t.type, &t.options}) *v = in.i16();
+      t.placed = in.i32();
+      check_range(in, at + 10, t.placed, -1, int64_t(w.level_.things.size()) - 1, "an item's placed thing");
+      q.items.push_back({t, in.i32()});
+    }
+  }
   const uint32_t cells = in.count(8, "blockmap cells");
   for (uint32_t i = 0; i < cells; ++i) {
     auto& cell = x.cells.emplace_back();
@@ -424,7 +455,9 @@ Extension read_extension(SaveReader& file, const DoomSave& doom, const World& w)
     mobj_ref(r, "a boss brain spot");
     if (r < 0) in.fail_at(payload_at, "an empty boss brain spot");
   }
-  mobj_ref(x.attacker, "the player's attacker");
+  for (int32_t r : x.attackers) mobj_ref(r, "a player's attacker");
+  if (x.queues)
+    for (int32_t r : x.queues->bodies) mobj_ref(r, "a corpse kept");
   for (const auto& s : x.sectors) mobj_ref(s.sound_target, "a sector's sound target"), thinker_ref(s.special_data, "a sector's mover");
   for (const auto& m : x.live) mobj_ref(m.target, "a thing's target"), mobj_ref(m.tracer, "a thing's tracer");
   for (const auto& g : x.ghosts) mobj_ref(g.second.target, "a removed thing's target"), mobj_ref(g.second.tracer, "a removed thing's tracer");
@@ -631,8 +664,21 @@ void apply_extension(World& w, const DoomSave& doom, const Extension& x, SaveRea
   w.brain_targets_.clear();
   for (int32_t r : x.brain_targets) w.brain_targets_.push_back(mobj(r));
   w.brain_target_on_ = x.brain_target_on;
-  w.player().attacker = mobj(x.attacker);
-  w.player().message = x.message;
+  for (size_t p = 0; p < kMaxPlayers; ++p) {
+    w.players_[p].attacker = mobj(x.attackers[p]);
+    w.players_[p].message = x.messages[p];
+  }
+  if (x.queues) {
+    w.body_queue_slot_ = x.queues->body_slot;
+    w.body_queue_.clear();
+    for (int32_t r : x.queues->bodies) w.body_queue_.push_back(mobj(r));
+    w.item_queue_head_ = x.queues->item_head, w.item_queue_tail_ = x.queues->item_tail;
+    size_t i = w.item_queue_tail_;
+    for (const auto& [spot, time] : x.queues->items) {
+      w.item_queue_[i] = spot, w.item_queue_time_[i] = time;
+      i = (i + 1) % World::kItemQueueSize;
+    }
+  }
 }
 
 }  // namespace p3d::play::savegame_local

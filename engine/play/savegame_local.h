@@ -139,7 +139,7 @@ struct ThinkerLists {
 };
 ThinkerLists thinker_lists(const World& w);
 
-DoomMobj doom_mobj_of(const Mobj& m);
+DoomMobj doom_mobj_of(const World& w, const Mobj& m);
 DoomPlat doom_plat_of(const Plat& p);
 // A thing from Doom's record, with no target or tracer, its place among the map's
 // things found by its spawn point.
@@ -157,8 +157,17 @@ struct Extension {
   bool brain_easy = false;
   uint32_t brain_target_on = 0;
   std::vector<int32_t> brain_targets;
-  int32_t attacker = -1;
-  std::string message;
+  std::array<int32_t, kMaxPlayers> attackers{-1, -1, -1, -1};  // per player in the game
+  std::array<std::string, kMaxPlayers> messages;
+  // A netgame's queues (version 2): the corpses kept (Doom's bodyque) and the items
+  // waiting to come back (altdeath's itemrespawnque, tail to head).
+  struct Queues {
+    uint32_t body_slot = 0;
+    std::vector<int32_t> bodies;
+    uint32_t item_head = 0, item_tail = 0;
+    std::vector<std::pair<MapThing, int32_t>> items;  // the spot and the level time it was taken
+  };
+  std::optional<Queues> queues;
   struct SectorExtra {
     int32_t floor = 0, ceiling = 0, floor_pic = 0, ceiling_pic = 0, light = 0, special = 0, tag = 0;
     int32_t sound_target = -1, special_data = -1;

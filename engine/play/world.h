@@ -442,6 +442,9 @@ class World {
   void mobj_thinker(Mobj* mo);
   Mobj* spawn_mobj(Fixed x, Fixed y, Fixed z, ThingType type);
   void remove_mobj(Mobj* mo);
+  // An item taken (not one a monster dropped, nor the invulnerability and invisibility
+  // spheres) queues its spot for altdeath's respawning; the 129th loses the oldest.
+  void queue_item_respawn(const Mobj& mo);
   void spawn_player(const MapThing& start);
   // g_game.c's spawning of players in a netgame: G_CheckSpot, G_DeathMatchSpawnPlayer, G_DoReborn.
   bool check_spot(int player, const MapThing& spot);

@@ -138,56 +138,6 @@ TEST(DemoSync, GeneratedRandomDemosPlayInSyncToTheirLastTic) {
 
 // ---- netgames: every player after every tic
 
-// Chocolate Doom's trace of every player (tests/golden/netgame_demos, condensed by
-// tools/peers/netgame_trace.py): each tic's lines hashed, some tics in full.
-struct NetTrace {
-  std::vector<uint64_t> hashes;                  // per tic
-  std::map<size_t, std::vector<std::string>> full;  // tic -> its player lines
-};
-
-NetTrace read_net_trace(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  NetTrace out;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.size() < 2 || line[0] == '#') continue;
-    std::istringstream fields(line.substr(2));
-    size_t tic = 0;
-    fields >> tic;
-    if (line[0] == 'H') {
-      std::string hex;
-      fields >> hex;
-      out.hashes.resize(tic + 1);
-      out.hashes[tic] = std::stoull(hex, nullptr, 16);
-    } else if (line[0] == 'F') {
-      out.full[tic].push_back(line.substr(2));
-    }
-  }
-  return out;
-}
-
-// Our players after a tic, in the trace's words (p3d-multiplayer.patch's fprintf).
-std::vector<std::string> net_lines(const World& w, size_t tic) {
-  std::vector<std::string> out;
-  for (int n = 0; n < kMaxPlayers; ++n) {
-    const Player& p = w.player(n);
-    if (!w.in_game(n) || !p.mo) continue;
-    std::ostringstream o;
-    o << tic << " " << n << " " << p.mo->x << " " << p.mo->y << " " << p.mo->z << " " << uint32_t(p.mo->angle) << " "
-      << p.mo->mom_x << " " << p.mo->mom_y << " " << p.inv.health << " " << p.inv.armor;
-    for (int f : p.frags) o << " " << f;
-    o << " " << int(w.random().play_index()) << " " << p.view_z;
-    out.push_back(o.str());
-  }
-  return out;
-}
-
-std::string joined(const std::vector<std::string>& lines) {
-  std::string s;
-  for (size_t i = 0; i < lines.size(); ++i) s += (i ? "\n" : "") + lines[i];
-  return s;
-}
-
 // Plays DEMOn of a netgame WAD (every player's input) beside Chocolate Doom's trace of it.
 Sync net_sync_of(const std::string& wad_file, int demo_number,
                  const std::filesystem::path& golden = test::source_dir() / "tests/golden/netgame_demos") {
@@ -202,7 +152,7 @@ Sync net_sync_of(const std::string& wad_file, int demo_number,
   set_demo_game(options, demo);
   World world(map_from_wads(wads, map_name, level), level, options, Random{});
   const std::string stem = wad_file.substr(0, wad_file.find('.')) + "_demo" + std::to_string(demo_number);
-  const NetTrace trace = read_net_trace(golden / (stem + ".trace"));
+  const test::NetTrace trace = test::read_net_trace(golden / (stem + ".trace"));
   std::ofstream dump;
   if (const char* d = std::getenv("P3D_SYNC_DUMP")) dump.open(std::filesystem::path(d) / (stem + ".ours"));
   Sync s;
@@ -217,9 +167,8 @@ Sync net_sync_of(const std::string& wad_file, int demo_number,
       }
     world.tick_players(cmds);
     if (dump.is_open()) dump << dump_things(world, t);
-    const std::vector<std::string> ours = net_lines(world, t);
-    const std::string text = joined(ours);
-    if (fnv1a64({reinterpret_cast<const uint8_t*>(text.data()), text.size()}) != trace.hashes[t]) {
+    const std::vector<std::string> ours = test::net_lines(world, t);
+    if (test::net_hash(ours) != trace.hashes[t]) {
       std::printf("[ parted   ] %s %s at tic %zu:\n", wad_file.c_str(), lump.c_str(), t);
       for (const std::string& l : ours) std::printf("  ours  %s\n", l.c_str());
       if (const auto it = trace.full.find(t); it != trace.full.end())

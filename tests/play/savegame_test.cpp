@@ -41,9 +41,7 @@ std::unique_ptr<Game> open_game(const std::string& wad_file, std::span<const uin
   g->map_name = g->demo.map_name(g->wads.map("MAP01").has_value());
   g->level = std::make_unique<level::Level>(bsp::open_level(bsp::LevelSource{{}, {wad}, g->map_name}).level);
   g->options = game_options_for(g->wads, g->map_name, g->demo.skill);
-  g->options.fast = g->demo.fast;
-  g->options.respawn = g->demo.respawn;
-  g->options.no_monsters = g->demo.no_monsters;
+  set_demo_game(g->options, g->demo);  // its players, -fast, -respawn, -nomonsters
   g->numbers = std::make_unique<DoomNumbers>(g->wads, *g->level);
   return g;
 }
@@ -68,8 +66,13 @@ std::unique_ptr<World> new_world(const Game& g, int skill) {
 }
 
 void play_tic(World& w, const DoomDemo& demo, size_t t) {
-  const DoomTic d = demo.console_tic(t);
-  w.tick(TicCmd{d.forward, d.side, d.turn, d.buttons});
+  std::array<TicCmd, kMaxPlayers> cmds{};
+  for (int n = 0; n < kMaxPlayers; ++n)
+    if (demo.players[size_t(n)]) {
+      const DoomTic d = demo.player_tic(t, n);
+      cmds[size_t(n)] = TicCmd{d.forward, d.side, d.turn, d.buttons};
+    }
+  w.tick_players(cmds);
 }
 
 // G_DoLoadGame in the middle of a game.
@@ -107,11 +110,13 @@ struct GoldenSave {
   const char* wad;
   int demo;          // DEMOn, or 0 for the recorded demo
   size_t tic;        // saved after this tic
+  bool netgame = false;  // the trace is of every player (tests/support/player_trace.h's NetTrace)
 };
 constexpr GoldenSave kGoldenSaves[] = {
     {"freedoom1_demo3_600", "freedoom1.wad", 3, 600},
     {"freedoom2_demo3_1200", "freedoom2.wad", 3, 1200},
     {"recorded_freedoom2_map01_300", "freedoom2.wad", 0, 300},
+    {"freedm_demo3_1500", "freedm.wad", 3, 1500, true},  // three players, altdeath
 };
 
 std::filesystem::path golden(const std::string& name) { return test::source_dir() / "tests/golden/saves" / name; }
@@ -127,6 +132,7 @@ std::unique_ptr<World> played_to(const Game& g, size_t tic) {
 
 TEST(ChocolateSaves, LoadHereAndPlayTheDemosRestInSyncWithChocolateDoomLoadingThem) {
   for (const GoldenSave& s : kGoldenSaves) {
+    if (s.netgame) continue;  // the next test's
     const auto g = game_of(s);
     const auto before = played_to(*g, s.tic);
     const std::vector<uint8_t> bytes = read_file_bytes(golden(std::string(s.stem) + ".dsg"));
@@ -138,6 +144,29 @@ TEST(ChocolateSaves, LoadHereAndPlayTheDemosRestInSyncWithChocolateDoomLoadingTh
     const size_t synced = in_sync(*w, g->demo, s.tic + 1, trace);
     std::printf("[ sync     ] %s: %zu of %zu tics after the load in sync with Chocolate Doom\n", s.stem, synced, trace.size());
     EXPECT_EQ(synced, trace.size()) << s.stem;
+  }
+}
+
+// A netgame's save (FreeDM's DEMO3, three players): every player loaded, and every
+// player in sync with Chocolate Doom's play after it loaded the same file.
+TEST(ChocolateSaves, ANetgamesSaveLoadsEveryPlayerInSyncWithChocolateDoom) {
+  for (const GoldenSave& s : kGoldenSaves) {
+    if (!s.netgame) continue;
+    const auto g = game_of(s);
+    const auto before = played_to(*g, s.tic);
+    const auto w = load(*g, *before, read_file_bytes(golden(std::string(s.stem) + ".dsg")), false);
+    const test::NetTrace trace = test::read_net_trace(golden(std::string(s.stem) + ".trace"));
+    ASSERT_EQ(trace.hashes.size(), g->demo.tic_count()) << s.stem << ": the trace goes to the demo's end";
+    size_t synced = 0;
+    for (size_t t = s.tic + 1; t < g->demo.tic_count(); ++t, ++synced) {
+      play_tic(*w, g->demo, t);
+      const std::vector<std::string> ours = test::net_lines(*w, t);
+      if (test::net_hash(ours) == trace.hashes[t]) continue;
+      ADD_FAILURE() << s.stem << " parted at tic " << t << ":\n  ours " << ours.front();
+      break;
+    }
+    std::printf("[ sync     ] %s: %zu of %zu tics after the load in sync with Chocolate Doom, every player\n", s.stem,
+                synced, g->demo.tic_count() - s.tic - 1);
   }
 }
 
@@ -160,9 +189,14 @@ TEST(ChocolateSaves, OurSaveOfTheSameTicHoldsChocolateDoomsRecordsFieldByField) 
     EXPECT_EQ(ours.header.episode, doom.header.episode);
     EXPECT_EQ(ours.header.map, doom.header.map);
     EXPECT_EQ(ours.header.level_time, doom.header.level_time);
-    DoomPlayer player = doom.player;
-    player.consistancy = 0;
-    EXPECT_EQ(ours.player, player) << s.stem;
+    EXPECT_EQ(ours.header.in_game, doom.header.in_game) << s.stem;
+    for (size_t p = 0; p < kMaxPlayers; ++p) {
+      ASSERT_EQ(ours.players[p].has_value(), doom.players[p].has_value()) << s.stem << " player " << p + 1;
+      if (!doom.players[p]) continue;
+      DoomPlayer player = *doom.players[p];
+      player.consistancy = 0;
+      EXPECT_EQ(*ours.players[p], player) << s.stem << " player " << p + 1;
+    }
     ASSERT_EQ(ours.sectors.size(), doom.sectors.size());
     for (size_t i = 0; i < ours.sectors.size(); ++i) EXPECT_EQ(ours.sectors[i], doom.sectors[i]) << s.stem << " sector " << i;
     for (size_t i = 0; i < ours.lines.size(); ++i) EXPECT_EQ(ours.lines[i], doom.lines[i]) << s.stem << " line " << i;
@@ -193,7 +227,8 @@ TEST(Saves, DoomsPartRoundTripsByteForByte) {
 // was, to the demo's end; the save of the loaded game is the save it was loaded from.
 TEST(Saves, WithOurExtensionALoadedGameGoesOnExactly) {
   for (const auto& [wad, demo, tics] : {std::tuple{"freedoom1.wad", 3, std::vector<size_t>{0, 333, 900}},
-                                        std::tuple{"freedoom2.wad", 1, std::vector<size_t>{150, 777, 1300}}}) {
+                                        std::tuple{"freedoom2.wad", 1, std::vector<size_t>{150, 777, 1300}},
+                                        std::tuple{"freedm.wad", 3, std::vector<size_t>{700, 1500, 2200}}}) {  // 3 players
     const auto g = open_demo(wad, demo);
     const DoomNumbers numbers(g->wads, *g->level);
     auto plain = new_world(*g, g->demo.skill);
@@ -210,7 +245,7 @@ TEST(Saves, WithOurExtensionALoadedGameGoesOnExactly) {
     }
     EXPECT_EQ(write_save(*saved, numbers, "end", {}), write_save(*plain, numbers, "end", {}))
         << wad << " DEMO" << demo << ": everything equal at the demo's end";
-    EXPECT_TRUE(test::player_tic(*saved, 0) == test::player_tic(*plain, 0));
+    EXPECT_EQ(test::net_lines(*saved, 0), test::net_lines(*plain, 0)) << wad << " DEMO" << demo;
   }
 }
 
@@ -476,8 +511,14 @@ TEST_F(BrokenSaves, WrongVersionMagicClassStateTypeAndSector) {
   b[40] = 7;
   expect(b, "byte 40: skill 7");
   b = *bytes_;
-  b[44] = 1;
-  expect(b, "byte 43: players in the game 1 1 0 0");
+  b[44] = 2;
+  expect(b, "byte 43: players in the game 1 2 0 0");
+  b = *bytes_;
+  b[43] = 0;
+  expect(b, "byte 43: players in the game 0 0 0 0");
+  b = *bytes_;
+  b[44] = 1;  // a second player whose record is not there: the world's bytes read as one
+  expect(b, "the player's state");
   b = *bytes_;
   b[d.mobj_at[2] + 154] = 9;  // the class byte after a thing's record
   expect(b, "unknown thinker class 9");

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,5 +25,18 @@ std::vector<PlayerTic> read_player_trace(const std::filesystem::path& path);
 PlayerTic player_tic(const play::World& world, int64_t tic);
 
 std::string describe(const PlayerTic& t);
+
+// Chocolate Doom's trace of every player (P3D_TRACE_ALL, condensed by
+// tools/peers/netgame_trace.py): each tic's lines hashed, some tics in full.
+struct NetTrace {
+  std::vector<uint64_t> hashes;                     // per tic
+  std::map<size_t, std::vector<std::string>> full;  // tic -> its player lines
+};
+NetTrace read_net_trace(const std::filesystem::path& path);
+
+// Our players after tic `tic`, in the trace's words ("tic player x y z angle momx momy
+// health armor frags0..3 prndindex viewz"), and the hash of a tic's lines.
+std::vector<std::string> net_lines(const play::World& w, size_t tic);
+uint64_t net_hash(const std::vector<std::string>& lines);
 
 }  // namespace p3d::test
