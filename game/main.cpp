@@ -6,12 +6,14 @@
 
 #include "engine/bsp/load.h"
 #include "engine/play/doom_demo.h"
+#include "engine/play/thing_dump.h"
 #include "engine/render/camera_file.h"
 #include "engine/util/doom.h"
 #include "engine/util/file.h"
 #include "game/autopilot.h"
 #include "game/headless.h"
 #include "game/key_script.h"
+#include "game/netgame.h"
 #include "game/sdl_platform.h"
 #include "game/settings.h"
 #include "tools/cli.h"
@@ -66,6 +68,35 @@ void say_what_is_not_played(const play::DoomDemo& d, const std::string& what) {
 std::string warp_map(const bsp::LevelSource& source, const std::vector<int>& warp) {
   if (has_doom2_maps(source)) return doom::map_name(true, 1, warp[0]);
   return doom::map_name(false, warp[0], warp.size() > 1 ? warp[1] : 1);
+}
+
+// The console player's commands of a demo (ours or Doom's), tic by tic.
+std::vector<play::TicCmd> console_tics(const std::string& path, const bsp::LevelSource& source) {
+  const DemoBytes bytes = demo_bytes(path, source);
+  std::vector<play::TicCmd> out;
+  if (play::is_our_demo(bytes.bytes)) {
+    for (const play::DemoTic& t : play::decode_demo(bytes.bytes, bytes.what).tics) out.push_back(t.cmd);
+    return out;
+  }
+  const play::DoomDemo d = play::decode_doom_demo(bytes.bytes, bytes.what);
+  for (size_t t = 0; t < d.tic_count(); ++t) {
+    const play::DoomTic c = d.console_tic(t);
+    out.push_back({c.forward, c.side, c.turn, c.buttons});
+  }
+  return out;
+}
+
+// The game we would start as a netgame's controller: the map, the skill, the rules.
+net::GameSettings net_settings(const bsp::LevelSource& source, int skill, const game::GameFlags& flags) {
+  const wad::Stack wads = bsp::read_wads(source.wads);
+  const std::string map = bsp::resolve_map_name(wads, source.map);
+  const play::GameOptions o = play::game_options_for(wads, map, skill);
+  net::GameSettings s;
+  s.episode = o.commercial ? 1 : o.episode, s.map = o.map;
+  s.skill = skill - 1;
+  s.deathmatch = flags.deathmatch, s.time_limit = flags.time_limit;
+  s.no_monsters = flags.no_monsters, s.fast_monsters = flags.fast, s.respawn_monsters = flags.respawn;
+  return s;
 }
 
 // The settings from their file, each warning said once.
@@ -170,6 +201,16 @@ int main(int argc, char** argv) {
                  "mouse sensitivity)")
       ->check(cli::finite_range(0.0, 10000.0));
   app.add_option("--config", config, "the settings file (default: $XDG_CONFIG_HOME/pseudo3d/settings.cfg)");
+  std::string connect, net_input;
+  int nodes = 0;
+  app.add_option("--connect", connect,
+                 "join a netgame on this Chocolate Doom server (HOST[:PORT], port 2342 by default): chocolate-server, "
+                 "or chocolate-doom -server");
+  app.add_option("--nodes", nodes, "--connect: as the first to join, start the game when this many players have joined")
+      ->check(cli::Range(1, play::kMaxPlayers));
+  app.add_option("--net-input", net_input, "--connect --headless: our player's commands, tic by tic, from this demo "
+                 "(its console player's; then standing still)")
+      ->check(cli::existing_file());
   app.add_option("--quit-after-tics", quit_after, "quit after this many tics (0: never)")->capture_default_str();
   cli::add_skill_option(app, skill);
   render::RendererOptions renderer_options;
@@ -182,8 +223,8 @@ int main(int argc, char** argv) {
     if (json && (!headless || play.empty())) throw cli::ValidationError("--json", "needs --headless --play");
     if (!script.empty() && (!headless || !play.empty() || !autopilot.empty()))
       throw cli::ValidationError("--script", "needs --headless, without --play or --autopilot");
-    if (headless && play.empty() && autopilot.empty() && script.empty())
-      throw cli::ValidationError("--headless", "needs --play (to capture frames), --autopilot (to record) or --script");
+    if (headless && play.empty() && autopilot.empty() && script.empty() && connect.empty())
+      throw cli::ValidationError("--headless", "needs --play (to capture frames), --autopilot (to record), --script or --connect");
     if (headless && (!play.empty() || !script.empty()) && out_dir.empty())
       throw cli::ValidationError("--out", "--headless --play and --script need --out DIR");
     if (fullscreen && windowed) throw cli::ValidationError("--fullscreen", "use either --fullscreen or --windowed");
@@ -247,6 +288,30 @@ int main(int argc, char** argv) {
     std::optional<play::Demo> demo;
     std::optional<play::DoomDemo> doom_demo;
     if (stats_only && (!headless || play.empty())) throw cli::ValidationError("--stats-only", "needs --headless --play");
+    if (!connect.empty()) {
+      if (!headless) throw cli::ValidationError("--connect", "plays a netgame with no window in this version: add --headless");
+      if (!source.is_wad()) throw cli::ValidationError("--connect", "a netgame plays a WAD's maps: name the IWAD with --iwad");
+      if (!play.empty() || !autopilot.empty()) throw cli::ValidationError("--connect", "takes its input from --net-input");
+      game::NetGameOptions n;
+      n.connect = connect;
+      n.launch_at_players = nodes;
+      n.quit_after_tics = quit_after;
+      n.record = record;
+      n.long_tics = long_tics;
+      n.settings = net_settings(source, skill, flags);
+      const std::vector<play::TicCmd> input = net_input.empty() ? std::vector<play::TicCmd>{} : console_tics(net_input, source);
+      std::string things;
+      const uint64_t tics = game::play_netgame_headless(
+          source, n, [&](uint64_t t) { return t < input.size() ? input[t] : play::TicCmd{}; },
+          [&](const game::Session& s, uint64_t t) {
+            if (!dump_things.empty()) things += play::dump_things(s.world(), t);
+          });
+      if (!dump_things.empty()) write_file_atomically(dump_things, things);
+      std::printf("played %llu tics of a netgame on %s%s\n", (unsigned long long)tics, connect.c_str(),
+                  record.empty() ? "" : (", recorded to " + record).c_str());
+      return 0;
+    }
+    if (!net_input.empty() || nodes) throw cli::ValidationError("--net-input", "--net-input and --nodes need --connect");
     if ((!save_at.empty() || !load_at.empty() || raw_stats || !dump_things.empty()) && (!headless || play.empty()))
       throw cli::ValidationError("--save-at", "--save-at, --load-at, --raw-stats and --dump-things need --headless --play");
     if (load_doom_only && load_at.empty()) throw cli::ValidationError("--load-doom-only", "needs --load-at");

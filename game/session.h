@@ -121,6 +121,8 @@ class Session {
   // A netgame demo's other players: each tic() plays their next commands beside the
   // console player's.
   void play_other_players(const play::DoomDemo& demo);
+  // A netgame's other players: the next tic() plays these commands beside ours.
+  void queue_other_players(const std::array<play::TicCmd, play::kMaxPlayers>& cmds) { others_.push_back(cmds); }
   // The camera between the previous tic (alpha 0) and this one (alpha 1).
   render::Camera camera(double alpha) const;
 

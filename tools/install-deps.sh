@@ -2,7 +2,7 @@
 # Installs the Debian packages this project builds with, if any are missing.
 set -euo pipefail
 packages=(cmake ninja-build g++ pkg-config dpkg-dev help2man lintian file libsdl2-dev libglm-dev libstb-dev libcli11-dev libgtest-dev libdeflate-dev libmimalloc-dev libxxhash-dev freedoom
-          libfluidsynth-dev fluid-soundfont-gm freedm
+          libfluidsynth-dev fluid-soundfont-gm freedm chocolate-doom
           clang lld libfuzzer-14-dev libclang-rt-14-dev)
 missing=()
 for p in "${packages[@]}"; do dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p"); done

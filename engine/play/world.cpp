@@ -118,6 +118,10 @@ void World::tick_players(const std::array<TicCmd, kMaxPlayers>& cmds) {
     for (int n = 0; n < kMaxPlayers; ++n)
       if (in_game(n) && players_[size_t(n)].state == PlayerState::kReborn && players_[size_t(n)].mo)
         reborn_in_netgame(n);
+  for (int n = 0; n < kMaxPlayers; ++n) {  // G_Ticker's consistency check, before anyone moves
+    const Mobj* mo = players_[size_t(n)].mo;
+    tic_start_x_[size_t(n)] = in_game(n) && mo ? std::optional<Fixed>(mo->x) : std::nullopt;
+  }
   for (int n = 0; n < kMaxPlayers; ++n) {  // P_Ticker: each player thinks, in order
     if (!in_game(n)) continue;
     Player& p = players_[size_t(n)];

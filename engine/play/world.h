@@ -24,6 +24,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -325,6 +326,10 @@ class World {
   // overran its memory further than Chocolate emulates): a replay beside Chocolate may
   // part from that tic on, and no port can say which is right.
   const std::string& beyond_chocolate() const { return beyond_chocolate_; }
+  // Each player's x as the last tic began (after the dead came back, before anyone
+  // moved), or nullopt without a body: what a netgame's commands carry 128 tics later
+  // for G_Ticker's consistency check.
+  const std::array<std::optional<Fixed>, kMaxPlayers>& tic_start_x() const { return tic_start_x_; }
   // Puts the player at (x, y) facing `angle` (a start other than the map's), on the floor there.
   void place_player(Fixed x, Fixed y, Angle angle);
   // Our cheats (play/demo.h's DemoCheat bits): noclip, god mode, every weapon, ammo and key.
@@ -593,6 +598,7 @@ class World {
     std::vector<Line*> special_hits;  // lines with specials touched (Doom's spechit)
   } tm_;
   std::string beyond_chocolate_;  // what the first tic beyond Chocolate Doom's emulation did
+  std::array<std::optional<Fixed>, kMaxPlayers> tic_start_x_{};
   Opening opening_;  // the last line_opening (Doom's opentop, openbottom, openrange, lowfloor)
   // Hitscans (P_AimLineAttack, P_LineAttack)
   Mobj* line_target_ = nullptr;

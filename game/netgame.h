@@ -1,0 +1,69 @@
+// A netgame beside Chocolate Doom: our game as a client of a Chocolate Doom server
+// (chocolate-server, or chocolate-doom -server), over UDP, with net::Client speaking
+// the protocol. Doom's d_loop.c and G_Ticker around it: our commands built at 35 a
+// second (at most 8 tics ahead), each tic run once every player's command for it is
+// there, the consistency check of each command, a player who left the game dropped.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "engine/bsp/load.h"
+#include "engine/net/client.h"
+#include "engine/play/world.h"
+#include "game/session.h"
+
+namespace p3d::game {
+
+// A UDP socket bound to any local port, talking to one server. Throws Error.
+class UdpLink {
+ public:
+  explicit UdpLink(const std::string& host_port);  // "host", "host:port" (port 2342 by default)
+  ~UdpLink();
+  UdpLink(const UdpLink&) = delete;
+  UdpLink& operator=(const UdpLink&) = delete;
+  void send(std::span<const uint8_t> packet);
+  // The next packet from the server, waiting up to `wait_ms`; empty when none came.
+  std::vector<uint8_t> receive(int wait_ms);
+  const std::string& server() const { return name_; }
+
+ private:
+  int fd_ = -1;
+  std::string name_;
+  std::vector<uint8_t> address_;  // the server's sockaddr
+};
+
+struct NetGameOptions {
+  std::string connect;  // host[:port]
+  std::string player_name = "pseudo3d";
+  int launch_at_players = 0;  // as the controller: start when this many have joined (Chocolate's -nodes)
+  // The game we would start if we are the controller: the map, skill and rules.
+  net::GameSettings settings;
+  uint64_t quit_after_tics = 0;  // 0: play until the server ends the game
+  int wait_seconds = 60;         // for the game to start
+  std::filesystem::path record;  // every player's commands as a Doom demo (.lmp), if named
+  bool long_tics = false;        // the demo in v1.91's long tics (Chocolate's -longtics)
+};
+
+// The commands of our player, tic by tic (the caller's input, a demo's, or nothing).
+using TicSource = std::function<play::TicCmd(uint64_t tic)>;
+// Called after every tic run (the session stands after it).
+using AfterTic = std::function<void(const Session&, uint64_t tic)>;
+
+// Joins the server, waits for the game to start, then plays it with no window until
+// quit_after_tics or the server's end. The session is made for the settings the server
+// gave (its map of `source`'s WADs). Throws Error with the reason (refused, no answer,
+// lost, a consistency failure). Returns the tics played.
+uint64_t play_netgame_headless(const bsp::LevelSource& source, const NetGameOptions& options, const TicSource& input,
+                               const AfterTic& after_tic);
+
+// What Chocolate Doom says a client plays (its gamemode, gamemission, is_freedoom) for
+// these WADs, with our version and the WAD's checksum left zero (Chocolate warns, and
+// plays on).
+net::ConnectData connect_data_for(const wad::Stack& wads);
+
+}  // namespace p3d::game
