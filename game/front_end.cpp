@@ -76,7 +76,10 @@ void FrontEnd::start(const bsp::LevelSource& wads) {
 
 bool FrontEnd::playing() const { return state_ == State::kLevel && session_ && user_game_; }
 
-bool FrontEnd::waiting() const { return paused_ || (menu_active() && playing()); }
+// A netgame goes on under the menu, as Doom's (its pause would be every player's).
+bool FrontEnd::waiting() const { return paused_ || (menu_active() && playing() && !netgame()); }
+
+bool FrontEnd::netgame() const { return session_ && session_->world().options().netgame && !options_.watching; }
 
 front::MenuContext FrontEnd::menu_context() const {
   front::MenuContext c;
@@ -243,7 +246,7 @@ void FrontEnd::key_down(int key) {
     return;
   }
   if (key == front::kKeyPause) {
-    paused_ = !paused_;
+    if (!netgame()) paused_ = !paused_;
     return;
   }
   if (state_ == State::kLevel) game_key(key);

@@ -73,6 +73,9 @@ class FrontEnd {
   // The game waits (menu open in a game, or paused): the window stops its tic clock.
   bool waiting() const;
   bool paused() const { return paused_; }
+  bool netgame() const;  // several players: the game never waits for this one's menu
+  // The command the keys held make (what tic() plays), for a netgame to send first.
+  play::TicCmd command() { return command_from_keys().cmd; }
   bool quit_requested() const { return quit_ && quit_delay_ == 0; }
   bool screenshot_requested() { return std::exchange(screenshot_, false); }
   // The settings changed since the last call (the window applies and saves them).

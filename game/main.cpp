@@ -288,17 +288,19 @@ int main(int argc, char** argv) {
     std::optional<play::Demo> demo;
     std::optional<play::DoomDemo> doom_demo;
     if (stats_only && (!headless || play.empty())) throw cli::ValidationError("--stats-only", "needs --headless --play");
+    game::NetGameOptions n;
     if (!connect.empty()) {
-      if (!headless) throw cli::ValidationError("--connect", "plays a netgame with no window in this version: add --headless");
       if (!source.is_wad()) throw cli::ValidationError("--connect", "a netgame plays a WAD's maps: name the IWAD with --iwad");
-      if (!play.empty() || !autopilot.empty()) throw cli::ValidationError("--connect", "takes its input from --net-input");
-      game::NetGameOptions n;
+      if (!play.empty() || !autopilot.empty()) throw cli::ValidationError("--connect", "plays the keys' input, or --net-input's");
+      if (!net_input.empty() && !headless) throw cli::ValidationError("--net-input", "needs --headless");
       n.connect = connect;
       n.launch_at_players = nodes;
       n.quit_after_tics = quit_after;
       n.record = record;
       n.long_tics = long_tics;
       n.settings = net_settings(source, skill, flags);
+    }
+    if (!connect.empty() && headless) {
       const std::vector<play::TicCmd> input = net_input.empty() ? std::vector<play::TicCmd>{} : console_tics(net_input, source);
       std::string things;
       const uint64_t tics = game::play_netgame_headless(
@@ -350,6 +352,22 @@ int main(int argc, char** argv) {
     o.keep_settings = keep_settings;
     o.wad_changed = settings.last_wad != saved.last_wad;
     o.quit_after_tics = quit_after;
+    if (!connect.empty()) {  // a netgame in the window: joined and started first, here
+      game::NetPlay net(source, n);
+      std::printf("pseudo3d: joining the netgame on %s\n", connect.c_str());
+      net.wait_for_start([](const std::string& s) { std::printf("pseudo3d: %s\n", s.c_str()), std::fflush(stdout); });
+      auto session = std::make_unique<game::Session>(net.level_source(), net.skill(), net.flags());
+      session->fov = fov;
+      session->show_status_bar = !no_status_bar;
+      session->renderer_options = renderer_options;
+      if (!session->select_renderer(settings.renderer, false)) session->select_renderer("bsp", false);
+      game::FrontEnd front(std::move(session), settings, front_options);
+      o.netplay = &net;
+      o.quit_after_tics = quit_after;
+      const int status = game::run_window(front, settings, o);
+      net.leave();
+      return status;
+    }
     if (title) {
       std::printf("pseudo3d: %s: Doom's title screen\n", source.wads.back().c_str());
       std::fflush(stdout);

@@ -95,30 +95,6 @@ net::ConnectData connect_data_for(const wad::Stack& wads) {
 
 namespace {
 
-// Doom's d_loop.c and G_Ticker for one client: the tics we made, the consistency
-// bytes, and the run of each tic once the server has sent the others' commands.
-class NetLoop {
- public:
-  NetLoop(UdpLink& link, net::Client& client) : link_(link), client_(client) {}
-
-  // Sends what the client has, and hands it what came, for up to wait_ms.
-  void pump(int wait_ms) {
-    flush();
-    for (std::vector<uint8_t> p = link_.receive(wait_ms); !p.empty(); p = link_.receive(0)) client_.receive(p, now_ms());
-    client_.run(now_ms());
-    flush();
-    if (client_.state() == net::Client::State::kDisconnected) throw Error("netgame on " + link_.server() + ": " + client_.error());
-  }
-
-  void flush() {
-    for (const std::vector<uint8_t>& p : client_.take_outgoing()) link_.send(p);
-  }
-
- private:
-  UdpLink& link_;
-  net::Client& client_;
-};
-
 // G_BuildTiccmd's turn when a client records a vanilla demo: whole 256ths, the rest
 // carried to the next tic.
 int16_t low_res_turn(int16_t turn, int16_t& carry) {
@@ -128,11 +104,7 @@ int16_t low_res_turn(int16_t turn, int16_t& carry) {
   return sent;
 }
 
-}  // namespace
-
-uint64_t play_netgame_headless(const bsp::LevelSource& source, const NetGameOptions& o, const TicSource& input,
-                               const AfterTic& after_tic) {
-  const wad::Stack wads = bsp::read_wads(source.wads);
+net::Client::Options client_options(const wad::Stack& wads, const NetGameOptions& o) {
   const bool commercial = wads.map("MAP01").has_value();
   net::Client::Options co;
   co.connect = connect_data_for(wads);
@@ -140,79 +112,134 @@ uint64_t play_netgame_headless(const bsp::LevelSource& source, const NetGameOpti
   co.settings = o.settings;
   co.settings.game_version = commercial ? kDoom19 : kUltimate;
   co.launch_at_players = o.launch_at_players;
-  UdpLink link(o.connect);
-  net::Client client(co, now_ms());
-  NetLoop loop(link, client);
+  return co;
+}
 
-  // Joined, then launched and started.
-  const uint32_t waiting_since = now_ms();
-  while (client.state() != net::Client::State::kInGame) {
-    loop.pump(10);
-    if (now_ms() - waiting_since > uint32_t(o.wait_seconds) * 1000)
-      throw Error("netgame on " + o.connect + ": the game did not start in " + std::to_string(o.wait_seconds) + " s");
+}  // namespace
+
+NetPlay::NetPlay(const bsp::LevelSource& source, const NetGameOptions& o)
+    : options_(o),
+      level_source_(source),
+      commercial_(bsp::read_wads(source.wads).map("MAP01").has_value()),
+      link_(o.connect),
+      client_(client_options(bsp::read_wads(source.wads), o), now_ms()) {}
+
+NetPlay::~NetPlay() {
+  if (client_.state() != net::Client::State::kDisconnected) leave();
+}
+
+void NetPlay::flush() {
+  for (const std::vector<uint8_t>& p : client_.take_outgoing()) link_.send(p);
+}
+
+void NetPlay::pump(int wait_ms) {
+  flush();
+  for (std::vector<uint8_t> p = link_.receive(wait_ms); !p.empty(); p = link_.receive(0)) client_.receive(p, now_ms());
+  client_.run(now_ms());
+  flush();
+  if (client_.state() == net::Client::State::kDisconnected)
+    throw Error("netgame on " + link_.server() + ": " + client_.error());
+}
+
+void NetPlay::wait_for_start(const std::function<void(const std::string&)>& status) {
+  const uint32_t since = now_ms();
+  std::string said;
+  while (client_.state() != net::Client::State::kInGame) {
+    pump(10);
+    if (status && client_.wait_data()) {
+      const net::WaitData& w = *client_.wait_data();
+      const std::string now = std::to_string(w.num_players) + " of " + std::to_string(w.max_players) +
+                              " players have joined" + (w.is_controller ? " (we start the game: --nodes)" : "");
+      if (now != said) status(said = now);
+    }
+    if (now_ms() - since > uint32_t(options_.wait_seconds) * 1000)
+      throw Error("netgame on " + options_.connect + ": the game did not start in " + std::to_string(options_.wait_seconds) + " s");
   }
-  const net::GameSettings& s = client.settings();
+  const net::GameSettings& s = client_.settings();
   if (s.num_players > play::kMaxPlayers)
-    throw Error("netgame on " + o.connect + ": " + std::to_string(s.num_players) + " players, Doom plays 4 at most");
-  bsp::LevelSource level_source = source;
-  level_source.map = map_of(s, commercial);
-  if (!wads.map(level_source.map)) throw Error("netgame on " + o.connect + ": the game is on " + level_source.map + ", which these WADs lack");
+    throw Error("netgame on " + options_.connect + ": " + std::to_string(s.num_players) + " players, Doom plays 4 at most");
+  level_source_.map = map_of(s, commercial_);
+  if (!bsp::read_wads(level_source_.wads).map(level_source_.map))
+    throw Error("netgame on " + options_.connect + ": the game is on " + level_source_.map + ", which these WADs lack");
+  started_at_ = now_ms();
+}
+
+GameFlags NetPlay::flags() const {
+  const net::GameSettings& s = client_.settings();
   GameFlags flags;
   flags.fast = s.fast_monsters, flags.respawn = s.respawn_monsters, flags.no_monsters = s.no_monsters;
   flags.deathmatch = s.deathmatch, flags.time_limit = s.time_limit;
   for (int i = 0; i < play::kMaxPlayers; ++i) flags.players[size_t(i)] = i < s.num_players;
   flags.console_player = s.console_player;
-  Session session(level_source, s.skill + 1, flags);
-  if (!o.record.empty()) session.start_recording(true, o.long_tics);
+  return flags;
+}
 
-  // The lockstep (d_loop.c's TryRunTics with new_sync, ticdup 1).
-  constexpr uint64_t kMostAhead = 8;  // BuildNewTic's limit
-  std::array<std::array<uint8_t, net::kBackupTics>, play::kMaxPlayers> consistency{};  // G_Ticker's consistancy[][]
-  std::array<play::TicCmd, net::kBackupTics> ours{};
-  int16_t carry = 0;
+uint64_t NetPlay::step(Session& session, const std::function<play::TicCmd()>& input,
+                       const std::function<void(const play::TicCmd&)>& run) {
+  constexpr uint64_t kMostAhead = 8;  // d_loop.c's BuildNewTic with new_sync
+  const net::GameSettings& s = client_.settings();
   const int me = s.console_player;
-  uint64_t make_tic = 0, game_tic = 0;
-  const uint32_t start = now_ms();
-  while (o.quit_after_tics == 0 || game_tic < o.quit_after_tics) {
-    loop.pump(1);
-    const uint64_t due = uint64_t(now_ms() - start) * kTicRate / 1000 + 1;
-    while (make_tic < due && make_tic - game_tic < kMostAhead && (o.quit_after_tics == 0 || make_tic < o.quit_after_tics)) {
-      play::TicCmd cmd = input(make_tic);
-      if (s.low_res_turn) cmd.turn = low_res_turn(cmd.turn, carry);
-      ours[make_tic % net::kBackupTics] = cmd;
-      client.send_tic({cmd.forward, cmd.side, cmd.turn, cmd.buttons, consistency[size_t(me)][make_tic % net::kBackupTics], 0},
-                      now_ms());
-      ++make_tic;
-    }
-    loop.flush();
-    while (game_tic < make_tic) {
-      const std::optional<net::Client::ServerTic> tic = client.next_server_tic();
-      if (!tic) break;
-      std::array<play::TicCmd, play::kMaxPlayers> others{};
-      const size_t slot = game_tic % net::kBackupTics;
-      for (int i = 0; i < s.num_players && i < play::kMaxPlayers; ++i) {
-        if (i == me || !tic->in_game[size_t(i)]) continue;
-        const net::TicCmd& c = tic->cmds[size_t(i)];
-        if (game_tic > net::kBackupTics && c.consistancy != consistency[size_t(i)][slot])
-          throw Error("netgame on " + o.connect + ": consistency failure at tic " + std::to_string(game_tic) + " (player " +
-                      std::to_string(i + 1) + " sent " + std::to_string(c.consistancy) + ", here " +
-                      std::to_string(consistency[size_t(i)][slot]) + "): the games have parted");
-        others[size_t(i)] = {c.forward, c.side, c.turn, c.buttons};
-      }
-      session.queue_other_players(others);
-      session.tic(ours[slot]);
-      for (int i = 0; i < s.num_players && i < play::kMaxPlayers; ++i) {
-        const std::optional<play::Fixed> x = session.world().tic_start_x()[size_t(i)];
-        consistency[size_t(i)][slot] = uint8_t(x ? *x : session.screen_random().other_index());  // Doom's rndindex
-      }
-      if (after_tic) after_tic(session, game_tic);
-      ++game_tic;
-    }
+  const uint64_t quit = options_.quit_after_tics;
+  pump(0);
+  const uint64_t due = uint64_t(now_ms() - started_at_) * kTicRate / 1000 + 1;
+  while (make_tic_ < due && make_tic_ - game_tic_ < kMostAhead && (quit == 0 || make_tic_ < quit)) {
+    play::TicCmd cmd = input();
+    if (s.low_res_turn) cmd.turn = low_res_turn(cmd.turn, turn_carry_);
+    ours_[make_tic_ % net::kBackupTics] = cmd;
+    const uint8_t check = consistency_[size_t(me)][make_tic_ % net::kBackupTics];
+    client_.send_tic({cmd.forward, cmd.side, cmd.turn, cmd.buttons, check, 0}, now_ms());
+    ++make_tic_;
   }
-  client.leave(now_ms());
-  loop.flush();
+  flush();
+  while (game_tic_ < make_tic_) {
+    const std::optional<net::Client::ServerTic> tic = client_.next_server_tic();
+    if (!tic) break;
+    std::array<play::TicCmd, play::kMaxPlayers> others{};
+    const size_t slot = game_tic_ % net::kBackupTics;
+    for (int i = 0; i < s.num_players && i < play::kMaxPlayers; ++i) {
+      if (i == me || !tic->in_game[size_t(i)]) continue;
+      const net::TicCmd& c = tic->cmds[size_t(i)];
+      if (game_tic_ > net::kBackupTics && c.consistancy != consistency_[size_t(i)][slot])
+        throw Error("netgame on " + options_.connect + ": consistency failure at tic " + std::to_string(game_tic_) +
+                    " (player " + std::to_string(i + 1) + " sent " + std::to_string(c.consistancy) + ", here " +
+                    std::to_string(consistency_[size_t(i)][slot]) + "): the games have parted");
+      others[size_t(i)] = {c.forward, c.side, c.turn, c.buttons};
+    }
+    session.queue_other_players(others);
+    run(ours_[slot]);
+    for (int i = 0; i < s.num_players && i < play::kMaxPlayers; ++i) {
+      const std::optional<play::Fixed> x = session.world().tic_start_x()[size_t(i)];
+      consistency_[size_t(i)][slot] = uint8_t(x ? *x : session.screen_random().other_index());  // Doom's rndindex
+    }
+    ++game_tic_;
+  }
+  return game_tic_;
+}
+
+void NetPlay::leave() {
+  client_.leave(now_ms());
+  flush();
+}
+
+uint64_t play_netgame_headless(const bsp::LevelSource& source, const NetGameOptions& o, const TicSource& input,
+                               const AfterTic& after_tic) {
+  NetPlay net(source, o);
+  net.wait_for_start({});
+  Session session(net.level_source(), net.skill(), net.flags());
+  if (!o.record.empty()) session.start_recording(true, o.long_tics);
+  uint64_t played = 0;
+  while (o.quit_after_tics == 0 || played < o.quit_after_tics) {
+    played = net.step(
+        session, [&] { return input(net.tics_made()); },
+        [&](const play::TicCmd& ours) {
+          session.tic(ours);
+          if (after_tic) after_tic(session, session.tics() - 1);
+        });
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  net.leave();
   if (!o.record.empty()) write_file_atomically(o.record, session.encode_recording(o.record));
-  return game_tic;
+  return played;
 }
 
 }  // namespace p3d::game

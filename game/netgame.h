@@ -54,6 +54,45 @@ using TicSource = std::function<play::TicCmd(uint64_t tic)>;
 // Called after every tic run (the session stands after it).
 using AfterTic = std::function<void(const Session&, uint64_t tic)>;
 
+// One netgame as a client: joined, waited for, then played tic by tic, the caller
+// running each tic (the window through its front end, or a headless loop).
+class NetPlay {
+ public:
+  // Joins (throws Error: the server cannot be named or reached).
+  NetPlay(const bsp::LevelSource& source, const NetGameOptions& options);
+  ~NetPlay();
+  // Waits for the game to start, saying who has joined on `status` (throws Error:
+  // refused, lost, not started in wait_seconds).
+  void wait_for_start(const std::function<void(const std::string&)>& status);
+  // The game the server started: its map of the WADs, skill and rules.
+  const bsp::LevelSource& level_source() const { return level_source_; }
+  int skill() const { return client_.settings().skill + 1; }
+  GameFlags flags() const;
+  // Sends the tics due by now (our command from `input`, once per tic), then runs every
+  // tic all commands are there for: the others' queued into the session, ours given to
+  // `run` (which ticks the session). Throws Error: lost, or a consistency failure.
+  // Returns the tics run so far.
+  uint64_t step(Session& session, const std::function<play::TicCmd()>& input,
+                const std::function<void(const play::TicCmd&)>& run);
+  uint64_t tics_made() const { return make_tic_; }
+  void leave();
+
+ private:
+  void pump(int wait_ms);
+  void flush();
+
+  NetGameOptions options_;
+  bsp::LevelSource level_source_;
+  bool commercial_ = true;
+  UdpLink link_;
+  net::Client client_;
+  std::array<std::array<uint8_t, net::kBackupTics>, play::kMaxPlayers> consistency_{};  // G_Ticker's consistancy[][]
+  std::array<play::TicCmd, net::kBackupTics> ours_{};
+  int16_t turn_carry_ = 0;
+  uint64_t make_tic_ = 0, game_tic_ = 0;
+  uint32_t started_at_ = 0;
+};
+
 // Joins the server, waits for the game to start, then plays it with no window until
 // quit_after_tics or the server's end. The session is made for the settings the server
 // gave (its map of `source`'s WADs). Throws Error with the reason (refused, no answer,

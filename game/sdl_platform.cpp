@@ -141,6 +141,10 @@ class Window {
       if (o_.timedemo) accumulator = kTicSeconds;              // exactly one tic per frame
       summed_.frame_ms += (t0 - last) * 1000;
       last = t0;
+      if (o_.netplay && front_.in_level()) {  // the lockstep keeps its own clock
+        net_tics();
+        accumulator = 0;
+      }
       while (accumulator >= kTicSeconds && running_) {
         run_tic();
         accumulator -= kTicSeconds;
@@ -379,6 +383,13 @@ class Window {
   void follow_mouse() {
     const bool want = front_.playing() && !front_.waiting() && !o_.play && !autopilot_;
     if (want != bool(SDL_GetRelativeMouseMode())) SDL_SetRelativeMouseMode(want ? SDL_TRUE : SDL_FALSE);
+  }
+
+  // A netgame's tics: ours sent as they fall due, each run once the server sent the others'.
+  void net_tics() {
+    const uint64_t run = o_.netplay->step(
+        *front_.session(), [&] { return front_.command(); }, [&](const play::TicCmd& ours) { front_.tic({ours, 0}); });
+    if (o_.quit_after_tics && run >= o_.quit_after_tics) running_ = false;
   }
 
   void run_tic() {

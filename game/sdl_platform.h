@@ -11,6 +11,7 @@
 
 #include "game/autopilot.h"
 #include "game/front_end.h"
+#include "game/netgame.h"
 #include "game/settings.h"
 
 namespace p3d::game {
@@ -28,6 +29,7 @@ struct WindowOptions {
   bool timedemo = false;                    // replay one tic per frame, as fast as possible (Doom's -timedemo)
   std::optional<std::vector<Waypoint>> autopilot;  // walk these waypoints, then quit
   uint64_t quit_after_tics = 0;             // 0: play until the window closes
+  NetPlay* netplay = nullptr;               // a netgame: its tics run as the server sends them
   // Keeps the settings as the menus and the window left them (main writes the file,
   // leaving out what the command line changed for this run only).
   std::function<void(const Settings&)> keep_settings;
