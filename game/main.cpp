@@ -313,7 +313,8 @@ int main(int argc, char** argv) {
                   record.empty() ? "" : (", recorded to " + record).c_str());
       return 0;
     }
-    if (!net_input.empty() || nodes) throw cli::ValidationError("--net-input", "--net-input and --nodes need --connect");
+    if ((!net_input.empty() || nodes) && connect.empty())
+      throw cli::ValidationError("--net-input", "--net-input and --nodes need --connect");
     if ((!save_at.empty() || !load_at.empty() || raw_stats || !dump_things.empty()) && (!headless || play.empty()))
       throw cli::ValidationError("--save-at", "--save-at, --load-at, --raw-stats and --dump-things need --headless --play");
     if (load_doom_only && load_at.empty()) throw cli::ValidationError("--load-doom-only", "needs --load-at");
