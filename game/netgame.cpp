@@ -205,6 +205,8 @@ uint64_t NetPlay::step(Session& session, const std::function<play::TicCmd()>& in
                     std::to_string(consistency_[size_t(i)][slot]) + "): the games have parted");
       others[size_t(i)] = {c.forward, c.side, c.turn, c.buttons};
     }
+    for (int i = 0; i < s.num_players && i < play::kMaxPlayers; ++i)
+      if (i != me && !tic->in_game[size_t(i)] && session.world().in_game(i)) session.player_left(i);  // RunTic
     session.queue_other_players(others);
     run(ours_[slot]);
     for (int i = 0; i < s.num_players && i < play::kMaxPlayers; ++i) {
@@ -235,6 +237,11 @@ uint64_t play_netgame_headless(const bsp::LevelSource& source, const NetGameOpti
           session.tic(ours);
           if (after_tic) after_tic(session, session.tics() - 1);
         });
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  // A second more of answering: the server may still ask for our last tics again.
+  for (const uint32_t until = now_ms() + 1000; int32_t(until - now_ms()) > 0;) {
+    net.step(session, [&] { return input(net.tics_made()); }, [&](const play::TicCmd& ours) { session.tic(ours); });
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   net.leave();

@@ -148,6 +148,13 @@ void Session::play_other_players(const play::DoomDemo& demo) {
   others_at_ = 0;
 }
 
+void Session::player_left(int player) {
+  if (!world_->in_game(player)) return;
+  world_->player_left(player);
+  if (show_messages) say(world_->player().message);
+  recording_on_ = false;  // Doom's G_CheckDemoStatus
+}
+
 void Session::tic(const play::DemoTic& tic) {
   if (world_->exit() != play::ExitKind::kNone) return;  // the level is over: waiting for the next one
   const bool netgame = world_->options().netgame;

@@ -123,6 +123,8 @@ class Session {
   void play_other_players(const play::DoomDemo& demo);
   // A netgame's other players: the next tic() plays these commands beside ours.
   void queue_other_players(const std::array<play::TicCmd, play::kMaxPlayers>& cmds) { others_.push_back(cmds); }
+  // A netgame's player left (Doom's PlayerQuitGame, before the tic): a recording ends there.
+  void player_left(int player);
   // The camera between the previous tic (alpha 0) and this one (alpha 1).
   render::Camera camera(double alpha) const;
 

@@ -387,7 +387,8 @@ Extension read_extension(SaveReader& file, const DoomSave& doom, const World& w)
   in.section("our extension's blockmap");
   if (version >= 2) {
     x.blockmap_header = std::array<int32_t, 4>{in.i32(), in.i32(), in.i32(), in.i32()};
-    Extension::Queues& q = x.queues.emplace();
+    x.queues = Extension::Queues{};
+    Extension::Queues& q = *x.queues;
     q.body_slot = in.u32();
     const size_t bodies_at = in.position();
     const uint32_t bodies = in.count(4, "corpses kept");

@@ -203,6 +203,15 @@ void World::say(Player& player, std::string message) {
   if (is_console(player)) messages_.push_back(std::move(message));
 }
 
+void World::player_left(int n) {
+  if (n < 0 || n >= kMaxPlayers || !in_game(n)) return;
+  options_.in_game[size_t(n)] = false;  // its body stays where it stood, thinking no more
+  std::string message = "Player 1 left the game";
+  if (const auto it = options_.texts.find(message); it != options_.texts.end()) message = it->second;
+  if (message.size() > 7) message[7] = char(message[7] + n);  // Doom's exitmsg[7] += player_num
+  player().message = std::move(message);
+}
+
 void World::exit_level(bool secret) { exit_ = secret ? ExitKind::kSecret : ExitKind::kNormal; }
 
 // ---- what the renderers see ------------------------------------------------------

@@ -330,6 +330,9 @@ class World {
   // moved), or nullopt without a body: what a netgame's commands carry 128 tics later
   // for G_Ticker's consistency check.
   const std::array<std::optional<Fixed>, kMaxPlayers>& tic_start_x() const { return tic_start_x_; }
+  // A netgame's player n left (Doom's PlayerQuitGame): no longer in the game, its body
+  // left standing, "Player N left the game" said to the console player.
+  void player_left(int n);
   // Puts the player at (x, y) facing `angle` (a start other than the map's), on the floor there.
   void place_player(Fixed x, Fixed y, Angle angle);
   // Our cheats (play/demo.h's DemoCheat bits): noclip, god mode, every weapon, ammo and key.

@@ -30,10 +30,11 @@ seed dmx tests/fuzz/seeds/beep.dmx
 seed mus tests/fuzz/seeds/tune.mus tests/fuzz/seeds/tune.mid
 seed save tests/fuzz/seeds/room.dsg tests/golden/saves/*.dsg
 seed world tests/fuzz/seeds/world.bin
+seed net tests/fuzz/seeds/game.net
 mkdir -p "$work/bsp"
 $build/tools/pseudo3d-mapc tests/fuzz/seeds/room.map -o "$work/bsp/room.bsp" >/dev/null
 $build/tools/pseudo3d-mapc tests/fuzz/seeds/room.grid -o "$work/bsp/grid.bsp" >/dev/null
-targets=(map grid bsp demo cameras png wad udmf lmp dmx mus save world)
+targets=(map grid bsp demo cameras png wad udmf lmp dmx mus save world net)
 fuzz() {  # fuzz TARGET: runs it, leaves its table row in $build/fuzz_TARGET.row
   local target=$1 log="$build/fuzz_$1.log" crashes=0
   rm -rf "$build/crashes/$target" && mkdir -p "$build/crashes/$target"

@@ -322,5 +322,28 @@ TEST(Multiplayer, OtherPlayersShowInTheirColours) {
   FAIL() << "no PLAY sprite in the level";
 }
 
+// A player who leaves a netgame (Doom's PlayerQuitGame): out of the game, its body left
+// standing where it was, its commands no longer played, the others told.
+TEST(Multiplayer, APlayerWhoLeavesStaysStandingAndIsToldOf) {
+  Netgame g(3, Deathmatch::kNone);
+  Mobj* body = g.player(2).mo;
+  ASSERT_NE(body, nullptr);
+  g.world->player_left(2);
+  EXPECT_FALSE(g.world->in_game(2));
+  EXPECT_TRUE(g.world->in_game(1));
+  EXPECT_EQ(g.player(0).message, "Player 3 left the game");
+  const Fixed x = body->x, y = body->y;
+  std::array<TicCmd, kMaxPlayers> cmds{};
+  cmds[2] = {50, 0, 0, 0};  // no longer read
+  cmds[1] = {50, 0, 0, 0};
+  const Fixed x1 = g.player(1).mo->x, y1 = g.player(1).mo->y;
+  for (int t = 0; t < 10; ++t) g.world->tick_players(cmds);
+  EXPECT_EQ(body->x, x);
+  EXPECT_EQ(body->y, y);
+  EXPECT_TRUE(g.player(1).mo->x != x1 || g.player(1).mo->y != y1) << "the others play on";
+  const auto things = g.world->things();
+  EXPECT_NE(std::find(things.begin(), things.end(), body), things.end()) << "its body stays";
+}
+
 }  // namespace
 }  // namespace p3d::play

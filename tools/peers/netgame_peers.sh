@@ -42,7 +42,7 @@ game=$(realpath "$game")
 [ "$players" -ge 2 ] && [ "$players" -le 4 ] || { echo "$0: --players is 2 to 4" >&2; exit 2; }
 work=$(mktemp -d /tmp/netgame-peers.XXXXXX)
 pids=()
-cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; wait 2>/dev/null || true; rm -rf "$work"; }
+cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; wait 2>/dev/null || true; [ -n "${KEEP:-}" ] || rm -rf "$work"; }
 trap cleanup EXIT
 
 # Free ports: the server's, then one a relay.
