@@ -5,7 +5,6 @@ namespace p3d::net {
 namespace {
 
 constexpr uint32_t kSynEvery = 1000, kConnectTimeout = 5000;  // ms, as net_client.c
-constexpr uint32_t kResendEvery = 1000, kKeepaliveEvery = 1000, kTimeout = 30000;  // net_common.c
 constexpr uint32_t kAskAgainAfter = 300, kAckAfter = 200, kDeadlockAfter = 1000;
 constexpr uint32_t kRejectionGrace = 1500;  // more than the server's resending of its answer
 
@@ -13,28 +12,9 @@ bool later(uint32_t now, uint32_t then, uint32_t ms) { return now - then > ms; }
 
 }  // namespace
 
-Client::Client(Options options, uint32_t now_ms)
-    : options_(std::move(options)), started_at_(now_ms), last_send_at_(now_ms), last_receive_at_(now_ms) {}
+Client::Client(Options options, uint32_t now_ms) : options_(std::move(options)), connection_(now_ms), started_at_(now_ms) {}
 
-std::vector<std::vector<uint8_t>> Client::take_outgoing() { return std::exchange(outgoing_, {}); }
-
-void Client::send(std::vector<uint8_t> bytes, uint32_t now_ms) {
-  outgoing_.push_back(std::move(bytes));
-  last_send_at_ = now_ms;
-}
-
-PacketWriter Client::new_reliable(PacketType type) {
-  PacketWriter p(type, true);
-  p.u8(reliable_send_seq_++);
-  return p;
-}
-
-void Client::queue_reliable(PacketWriter packet) {
-  Reliable r;
-  r.bytes = std::move(packet.bytes());
-  r.seq = r.bytes[2];  // after the type: new_reliable's sequence number
-  reliable_out_.push_back(std::move(r));
-}
+std::vector<std::vector<uint8_t>> Client::take_outgoing() { return connection_.take_outgoing(); }
 
 void Client::leave(uint32_t now_ms) {
   // Three times, not waiting for the answer: a lost word leaves the server to its timeout.
@@ -64,7 +44,7 @@ void Client::disconnect(const std::string& why) {
 void Client::launch() {
   if (launched_ || state_ != State::kWaitingLaunch) return;
   launched_ = true;
-  queue_reliable(new_reliable(PacketType::kLaunch));
+  connection_.queue_reliable(connection_.new_reliable(PacketType::kLaunch));
 }
 
 void Client::run(uint32_t now_ms) {
@@ -77,12 +57,8 @@ void Client::run(uint32_t now_ms) {
       return;
     default: break;
   }
-  if (later(now_ms, last_receive_at_, kTimeout)) return disconnect("the server stopped answering (30 s)");
-  if (later(now_ms, last_send_at_, kKeepaliveEvery)) send(PacketWriter(PacketType::kKeepalive).bytes(), now_ms);
-  if (!reliable_out_.empty() && (reliable_out_.front().sent_at < 0 || later(now_ms, uint32_t(reliable_out_.front().sent_at), kResendEvery))) {
-    reliable_out_.front().sent_at = now_ms;
-    send(reliable_out_.front().bytes, now_ms);
-  }
+  if (connection_.timed_out(now_ms)) return disconnect("the server stopped answering (30 s)");
+  connection_.run(now_ms);
   if (state_ == State::kWaitingLaunch && wait_data_ && wait_data_->is_controller && options_.launch_at_players > 0 &&
       wait_data_->num_players + wait_data_->num_drones >= options_.launch_at_players)
     launch();
@@ -95,21 +71,7 @@ void Client::run(uint32_t now_ms) {
 void Client::receive(std::span<const uint8_t> bytes, uint32_t now_ms) {
   if (state_ == State::kDisconnected) return;
   PacketReader in(bytes);
-  auto type = in.u16();
-  if (!type) return;
-  last_receive_at_ = now_ms;
-  if (*type & kReliable) {  // in order, once: anything else is acknowledged and dropped
-    const auto seq = in.u8();
-    if (!seq) return;
-    const bool expected = *seq == reliable_recv_seq_;
-    if (expected) ++reliable_recv_seq_;
-    PacketWriter ack(PacketType::kReliableAck);
-    ack.u8(reliable_recv_seq_);
-    send(std::move(ack.bytes()), now_ms);
-    if (!expected) return;
-    *type &= ~uint32_t(kReliable);
-  }
-  parse(in, *type, now_ms);
+  if (const auto type = connection_.receive(in, now_ms)) parse(in, *type, now_ms);
 }
 
 void Client::parse(PacketReader& in, uint32_t type, uint32_t now_ms) {
@@ -129,14 +91,6 @@ void Client::parse(PacketReader& in, uint32_t type, uint32_t now_ms) {
       send(PacketWriter(PacketType::kDisconnectAck).bytes(), now_ms);
       return disconnect("the server ended the game");
     }
-    case PacketType::kReliableAck: {
-      const auto seq = in.u8();
-      if (seq && !reliable_out_.empty() && *seq == uint8_t(reliable_out_.front().seq + 1)) {
-        reliable_out_.pop_front();
-        if (!reliable_out_.empty()) reliable_out_.front().sent_at = -1;  // the next goes at once
-      }
-      return;
-    }
     case PacketType::kWaitingData: {
       auto w = in.wait_data();
       if (!w || w->num_players > w->max_players || w->ready_players > w->num_players || w->max_players > kMaxPlayers ||
@@ -148,9 +102,9 @@ void Client::parse(PacketReader& in, uint32_t type, uint32_t now_ms) {
     case PacketType::kLaunch: {
       if (state_ != State::kWaitingLaunch || !in.u8()) return;
       state_ = State::kWaitingStart;
-      PacketWriter start = new_reliable(PacketType::kGameStart);  // D_StartNetGame: our settings
+      PacketWriter start = connection_.new_reliable(PacketType::kGameStart);  // D_StartNetGame: our settings
       start.settings(options_.settings);
-      queue_reliable(std::move(start));
+      connection_.queue_reliable(std::move(start));
       return;
     }
     case PacketType::kGameStart: {

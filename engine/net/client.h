@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/net/connection.h"
 #include "engine/net/protocol.h"
 
 namespace p3d::net {
@@ -63,11 +64,6 @@ class Client {
   std::optional<ServerTic> next_server_tic();
 
  private:
-  struct Reliable {
-    std::vector<uint8_t> bytes;
-    int64_t sent_at = -1;
-    uint8_t seq = 0;
-  };
   struct SentTic {
     bool active = false;
     uint32_t seq = 0;
@@ -79,9 +75,7 @@ class Client {
     FullTic tic;
   };
 
-  void send(std::vector<uint8_t> bytes, uint32_t now_ms);
-  PacketWriter new_reliable(PacketType type);  // with its sequence number: fill it, then queue_reliable
-  void queue_reliable(PacketWriter packet);
+  void send(std::vector<uint8_t> bytes, uint32_t now_ms) { connection_.send(std::move(bytes), now_ms); }
   void send_syn(uint32_t now_ms);
   void disconnect(const std::string& why);
   void parse(PacketReader& in, uint32_t type, uint32_t now_ms);
@@ -95,11 +89,8 @@ class Client {
   Options options_;
   State state_ = State::kConnecting;
   std::string error_;
-  std::vector<std::vector<uint8_t>> outgoing_;
-  // the connection (net_common.c)
-  std::deque<Reliable> reliable_out_;  // the first is sent (again every second) until acknowledged
-  uint8_t reliable_send_seq_ = 0, reliable_recv_seq_ = 0;
-  uint32_t started_at_ = 0, last_syn_at_ = 0, last_send_at_ = 0, last_receive_at_ = 0;
+  Connection connection_;
+  uint32_t started_at_ = 0, last_syn_at_ = 0;
   bool syn_sent_ = false, launched_ = false;
   std::optional<std::string> rejection_;  // the server's refusal while connecting
   uint32_t rejected_at_ = 0;
