@@ -202,7 +202,11 @@ int main(int argc, char** argv) {
       ->check(cli::finite_range(0.0, 10000.0));
   app.add_option("--config", config, "the settings file (default: $XDG_CONFIG_HOME/pseudo3d/settings.cfg)");
   std::string connect, net_input;
-  int nodes = 0;
+  int nodes = 0, port = 0;
+  bool serve = false;
+  app.add_flag("--server", serve, "serve a netgame on this machine and join it (Chocolate Doom's -server): its "
+               "players join with --connect or Chocolate Doom's -connect");
+  app.add_option("--port", port, "--server: the UDP port (default 2342)")->check(cli::Range(1, 65535));
   app.add_option("--connect", connect,
                  "join a netgame on this Chocolate Doom server (HOST[:PORT], port 2342 by default): chocolate-server, "
                  "or chocolate-doom -server");
@@ -223,8 +227,8 @@ int main(int argc, char** argv) {
     if (json && (!headless || play.empty())) throw cli::ValidationError("--json", "needs --headless --play");
     if (!script.empty() && (!headless || !play.empty() || !autopilot.empty()))
       throw cli::ValidationError("--script", "needs --headless, without --play or --autopilot");
-    if (headless && play.empty() && autopilot.empty() && script.empty() && connect.empty())
-      throw cli::ValidationError("--headless", "needs --play (to capture frames), --autopilot (to record), --script or --connect");
+    if (headless && play.empty() && autopilot.empty() && script.empty() && connect.empty() && !serve)
+      throw cli::ValidationError("--headless", "needs --play (to capture frames), --autopilot (to record), --script, --connect or --server");
     if (headless && (!play.empty() || !script.empty()) && out_dir.empty())
       throw cli::ValidationError("--out", "--headless --play and --script need --out DIR");
     if (fullscreen && windowed) throw cli::ValidationError("--fullscreen", "use either --fullscreen or --windowed");
@@ -288,7 +292,11 @@ int main(int argc, char** argv) {
     std::optional<play::Demo> demo;
     std::optional<play::DoomDemo> doom_demo;
     if (stats_only && (!headless || play.empty())) throw cli::ValidationError("--stats-only", "needs --headless --play");
+    if (serve && !connect.empty()) throw cli::ValidationError("--server", "use either --server or --connect");
+    if (port && !serve) throw cli::ValidationError("--port", "needs --server");
+    if (serve) connect = "127.0.0.1:" + std::to_string(port ? port : net::kDefaultPort);
     game::NetGameOptions n;
+    n.host_port = serve ? (port ? port : net::kDefaultPort) : 0;
     if (!connect.empty()) {
       if (!source.is_wad()) throw cli::ValidationError("--connect", "a netgame plays a WAD's maps: name the IWAD with --iwad");
       if (!play.empty() || !autopilot.empty()) throw cli::ValidationError("--connect", "plays the keys' input, or --net-input's");

@@ -1,10 +1,13 @@
 #include "game/netgame.h"
 
+#include <arpa/inet.h>
 #include <netdb.h>
+#include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <thread>
@@ -81,6 +84,37 @@ std::vector<uint8_t> UdpLink::receive(int wait_ms) {
   return packet;
 }
 
+UdpHost::UdpHost(int port) {
+  fd_ = socket(AF_INET, SOCK_DGRAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(uint16_t(port));
+  address.sin_addr.s_addr = htonl(INADDR_ANY);
+  if (fd_ < 0 || bind(fd_, reinterpret_cast<const sockaddr*>(&address), sizeof address) != 0) {
+    const std::string why = std::strerror(errno);
+    if (fd_ >= 0) close(fd_);
+    throw Error("--server: cannot serve on UDP port " + std::to_string(port) + ": " + why);
+  }
+}
+
+UdpHost::~UdpHost() { close(fd_); }
+
+void UdpHost::pump(uint32_t now_ms) {
+  std::vector<uint8_t> packet(1500);
+  for (;;) {
+    pollfd p{fd_, POLLIN, 0};
+    if (poll(&p, 1, 0) <= 0) break;
+    sockaddr_storage from{};
+    socklen_t size = sizeof from;
+    const ssize_t n = recvfrom(fd_, packet.data(), packet.size(), 0, reinterpret_cast<sockaddr*>(&from), &size);
+    if (n <= 0) break;
+    server_.receive(std::string(reinterpret_cast<const char*>(&from), size), std::span(packet).first(size_t(n)), now_ms);
+  }
+  server_.run(now_ms);
+  for (const auto& [peer, bytes] : server_.take_outgoing())
+    (void)sendto(fd_, bytes.data(), bytes.size(), 0, reinterpret_cast<const sockaddr*>(peer.data()), socklen_t(peer.size()));
+}
+
 net::ConnectData connect_data_for(const wad::Stack& wads) {
   net::ConnectData d;
   const bool commercial = wads.map("MAP01").has_value();
@@ -108,6 +142,8 @@ net::Client::Options client_options(const wad::Stack& wads, const NetGameOptions
   const bool commercial = wads.map("MAP01").has_value();
   net::Client::Options co;
   co.connect = connect_data_for(wads);
+  // Recording a vanilla demo, whose turns are whole 256ths: every client turns so (Chocolate's -record).
+  co.connect.low_res_turn = !o.record.empty() && o.record.extension() == ".lmp" && !o.long_tics;
   co.player_name = o.player_name;
   co.settings = o.settings;
   co.settings.game_version = commercial ? kDoom19 : kUltimate;
@@ -119,10 +155,13 @@ net::Client::Options client_options(const wad::Stack& wads, const NetGameOptions
 
 NetPlay::NetPlay(const bsp::LevelSource& source, const NetGameOptions& o)
     : options_(o),
+      host_(o.host_port ? std::make_unique<UdpHost>(o.host_port) : nullptr),
       level_source_(source),
       commercial_(bsp::read_wads(source.wads).map("MAP01").has_value()),
-      link_(o.connect),
-      client_(client_options(bsp::read_wads(source.wads), o), now_ms()) {}
+      link_(o.host_port ? "127.0.0.1:" + std::to_string(o.host_port) : o.connect),
+      client_(client_options(bsp::read_wads(source.wads), o), now_ms()) {
+  if (o.host_port) options_.connect = link_.server();
+}
 
 NetPlay::~NetPlay() {
   if (client_.state() != net::Client::State::kDisconnected) leave();
@@ -133,6 +172,7 @@ void NetPlay::flush() {
 }
 
 void NetPlay::pump(int wait_ms) {
+  if (host_) host_->pump(now_ms()), wait_ms = std::min(wait_ms, 1);  // the server runs here too
   flush();
   for (std::vector<uint8_t> p = link_.receive(wait_ms); !p.empty(); p = link_.receive(0)) client_.receive(p, now_ms());
   client_.run(now_ms());
@@ -221,6 +261,7 @@ uint64_t NetPlay::step(Session& session, const std::function<play::TicCmd()>& in
 void NetPlay::leave() {
   client_.leave(now_ms());
   flush();
+  if (host_) host_->shut_down(now_ms());  // the game was ours: it is over for everyone
 }
 
 uint64_t play_netgame_headless(const bsp::LevelSource& source, const NetGameOptions& o, const TicSource& input,

@@ -14,6 +14,7 @@
 
 #include "engine/bsp/load.h"
 #include "engine/net/client.h"
+#include "engine/net/server.h"
 #include "engine/play/world.h"
 #include "game/session.h"
 
@@ -37,8 +38,30 @@ class UdpLink {
   std::vector<uint8_t> address_;  // the server's sockaddr
 };
 
+// A server of ours for a netgame (net::Server) on a UDP port of this machine: Chocolate
+// Doom's clients and ours join it as they join chocolate-server.
+class UdpHost {
+ public:
+  explicit UdpHost(int port);  // throws Error (the port taken)
+  ~UdpHost();
+  UdpHost(const UdpHost&) = delete;
+  UdpHost& operator=(const UdpHost&) = delete;
+  // Hands the server what came, runs it, sends what it has.
+  void pump(uint32_t now_ms);
+  void shut_down(uint32_t now_ms) {
+    server_.shut_down();
+    pump(now_ms);
+  }
+  const net::Server& server() const { return server_; }
+
+ private:
+  int fd_ = -1;
+  net::Server server_;
+};
+
 struct NetGameOptions {
   std::string connect;  // host[:port]
+  int host_port = 0;    // also serve the game on this port (our client joins it there)
   std::string player_name = "pseudo3d";
   int launch_at_players = 0;  // as the controller: start when this many have joined (Chocolate's -nodes)
   // The game we would start if we are the controller: the map, skill and rules.
@@ -82,6 +105,7 @@ class NetPlay {
   void flush();
 
   NetGameOptions options_;
+  std::unique_ptr<UdpHost> host_;  // first: our client joins it
   bsp::LevelSource level_source_;
   bool commercial_ = true;
   UdpLink link_;

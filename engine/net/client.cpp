@@ -5,10 +5,8 @@ namespace p3d::net {
 namespace {
 
 constexpr uint32_t kSynEvery = 1000, kConnectTimeout = 5000;  // ms, as net_client.c
-constexpr uint32_t kAskAgainAfter = 300, kAckAfter = 200, kDeadlockAfter = 1000;
+constexpr uint32_t kAckAfter = 200;
 constexpr uint32_t kRejectionGrace = 1500;  // more than the server's resending of its answer
-
-bool later(uint32_t now, uint32_t then, uint32_t ms) { return now - then > ms; }
 
 }  // namespace
 

@@ -8,8 +8,6 @@ namespace {
 
 constexpr uint32_t kResendEvery = 1000, kKeepaliveEvery = 1000, kTimeout = 30000;  // ms, as net_common.c
 
-bool later(uint32_t now, uint32_t then, uint32_t ms) { return now - then > ms; }
-
 }  // namespace
 
 void Connection::send(std::vector<uint8_t> bytes, uint32_t now_ms) {

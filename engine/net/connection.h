@@ -16,6 +16,12 @@
 
 namespace p3d::net {
 
+// Whether more than `ms` milliseconds went by from `then` to `now` (the clock may wrap).
+inline bool later(uint32_t now, uint32_t then, uint32_t ms) { return now - then > ms; }
+// A tic still missing this long after it was asked for is asked for again; a peer that
+// has sent no tic for this long is asked for its next ones (net_client.c, net_server.c).
+constexpr uint32_t kAskAgainAfter = 300, kDeadlockAfter = 1000;
+
 class Connection {
  public:
   explicit Connection(uint32_t now_ms) : last_send_at_(now_ms), last_receive_at_(now_ms) {}

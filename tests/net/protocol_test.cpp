@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/net/client.h"
+#include "engine/net/server.h"
 #include "engine/net/protocol.h"
 
 namespace p3d::net {
@@ -267,6 +268,61 @@ TEST(NetClient, SaysWhyItStopped) {
   lost.sent(30001);
   EXPECT_EQ(lost.client.state(), Client::State::kDisconnected);
   EXPECT_EQ(lost.client.error(), "the server stopped answering (30 s)");
+}
+
+// Our server and two of our clients, their packets carried in memory (each a few
+// milliseconds later, one in ten lost on the way): the first to join leads and starts
+// the game at two players, each is told its number, and each plays the other's
+// commands in order; a third to come is refused once the game is on.
+TEST(NetServer, TwoClientsPlayEachOthersCommandsThroughALossyLink) {
+  Server server;
+  Client::Options lead = Harness::options(), other = Harness::options();
+  lead.launch_at_players = 2;
+  lead.settings.map = 7;
+  other.settings.map = 3;  // not the leader's: ignored
+  std::array<Client, 2> clients{Client(lead, 0), Client(other, 0)};
+  const std::array<std::string, 2> names = {"a", "b"};
+  uint32_t dropped = 0, now = 0, lose = 0;
+  std::array<std::vector<int8_t>, 2> got;
+  auto carry = [&] {
+    for (int k = 0; k < 2; ++k)
+      for (const auto& p : clients[size_t(k)].take_outgoing())
+        if (++lose % 10 != 3) server.receive(names[size_t(k)], p, now); else ++dropped;
+    server.run(now);
+    for (const auto& [to, p] : server.take_outgoing())
+      if (++lose % 10 != 7) clients[to == "a" ? 0 : 1].receive(p, now); else ++dropped;
+  };
+  for (int step = 0; step < 400; ++step, now += 15) {
+    for (int k = 0; k < 2; ++k) {
+      if (k == 1 && now < 200) continue;  // the second joins later
+      clients[size_t(k)].run(now);
+    }
+    carry();
+    for (int k = 0; k < 2; ++k) {
+      Client& c = clients[size_t(k)];
+      if (c.state() != Client::State::kInGame || step % 2) continue;
+      c.send_tic({int8_t(10 * (k + 1)), 0, 0, 0, 0, 0}, now);
+      while (auto t = c.next_server_tic()) got[size_t(k)].push_back(t->cmds[size_t(1 - k)].forward);
+    }
+  }
+  ASSERT_EQ(clients[0].state(), Client::State::kInGame) << clients[0].error();
+  ASSERT_EQ(clients[1].state(), Client::State::kInGame) << clients[1].error();
+  EXPECT_EQ(clients[0].settings().console_player, 0);
+  EXPECT_EQ(clients[1].settings().console_player, 1);
+  EXPECT_EQ(clients[1].settings().map, 7) << "the leader's game";
+  EXPECT_GT(dropped, 10u);
+  EXPECT_GT(got[0].size(), 50u);
+  EXPECT_GT(got[1].size(), 50u);
+  EXPECT_TRUE(std::all_of(got[0].begin(), got[0].end(), [](int8_t f) { return f == 20; })) << "b's commands, each tic";
+  EXPECT_TRUE(std::all_of(got[1].begin(), got[1].end(), [](int8_t f) { return f == 10; }));
+
+  Client late(Harness::options(), now);
+  late.run(now);
+  for (const auto& p : late.take_outgoing()) server.receive("c", p, now);
+  for (const auto& [to, p] : server.take_outgoing())
+    if (to == "c") late.receive(p, now);
+  late.run(now + 2000);
+  EXPECT_EQ(late.error(), "the server refused: Server is not currently accepting connections");
 }
 
 }  // namespace
