@@ -307,6 +307,7 @@ int main(int argc, char** argv) {
       n.record = record;
       n.long_tics = long_tics;
       n.settings = net_settings(source, skill, flags);
+      n.wait_seconds = headless ? 60 : 0;  // a script waits a minute for the others; a player as long as it takes
     }
     if (!connect.empty() && headless) {
       const std::vector<play::TicCmd> input = net_input.empty() ? std::vector<play::TicCmd>{} : console_tics(net_input, source);

@@ -188,11 +188,14 @@ void NetPlay::wait_for_start(const std::function<void(const std::string&)>& stat
     pump(10);
     if (status && client_.wait_data()) {
       const net::WaitData& w = *client_.wait_data();
-      const std::string now = std::to_string(w.num_players) + " of " + std::to_string(w.max_players) +
-                              " players have joined" + (w.is_controller ? " (we start the game: --nodes)" : "");
+      const char* lead = !w.is_controller               ? ""
+                         : options_.launch_at_players > 0 ? " (we lead: the game starts at --nodes players)"
+                                                          : " (we lead: --nodes N starts the game at N players)";
+      const std::string now =
+          std::to_string(w.num_players) + " of " + std::to_string(w.max_players) + " players have joined" + lead;
       if (now != said) status(said = now);
     }
-    if (now_ms() - since > uint32_t(options_.wait_seconds) * 1000)
+    if (options_.wait_seconds > 0 && now_ms() - since > uint32_t(options_.wait_seconds) * 1000)
       throw Error("netgame on " + options_.connect + ": the game did not start in " + std::to_string(options_.wait_seconds) + " s");
   }
   const net::GameSettings& s = client_.settings();

@@ -67,7 +67,7 @@ struct NetGameOptions {
   // The game we would start if we are the controller: the map, skill and rules.
   net::GameSettings settings;
   uint64_t quit_after_tics = 0;  // 0: play until the server ends the game
-  int wait_seconds = 60;         // for the game to start
+  int wait_seconds = 0;          // for the game to start (0: as long as the server is there)
   std::filesystem::path record;  // every player's commands as a Doom demo (.lmp), if named
   bool long_tics = false;        // the demo in v1.91's long tics (Chocolate's -longtics)
 };
