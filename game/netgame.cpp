@@ -273,19 +273,20 @@ uint64_t play_netgame_headless(const bsp::LevelSource& source, const NetGameOpti
   net.wait_for_start({});
   Session session(net.level_source(), net.skill(), net.flags());
   if (!o.record.empty()) session.start_recording(true, o.long_tics);
+  const auto ours = [&] { return input(net.tics_made()); };
+  const auto run = [&](const play::TicCmd& cmd) {
+    session.tic(cmd);
+    if (after_tic) after_tic(session, session.tics() - 1);
+  };
   uint64_t played = 0;
   while (o.quit_after_tics == 0 || played < o.quit_after_tics) {
-    played = net.step(
-        session, [&] { return input(net.tics_made()); },
-        [&](const play::TicCmd& ours) {
-          session.tic(ours);
-          if (after_tic) after_tic(session, session.tics() - 1);
-        });
+    played = net.step(session, ours, run);
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
-  // A second more of answering: the server may still ask for our last tics again.
+  // A second more of answering (no tic is made or run past quit_after_tics): the
+  // server may still ask for our last tics again.
   for (const uint32_t until = now_ms() + 1000; int32_t(until - now_ms()) > 0;) {
-    net.step(session, [&] { return input(net.tics_made()); }, [&](const play::TicCmd& ours) { session.tic(ours); });
+    net.step(session, ours, run);
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   net.leave();

@@ -138,13 +138,8 @@ GameFlags flags_of(const play::DoomDemo& d) {
 }
 
 void Session::play_other_players(const play::DoomDemo& demo) {
-  others_.assign(demo.tic_count(), {});
-  for (size_t t = 0; t < demo.tic_count(); ++t)
-    for (int p = 0; p < play::kMaxPlayers; ++p)
-      if (demo.players[size_t(p)] && p != demo.console_player) {
-        const play::DoomTic d = demo.player_tic(t, p);
-        others_[t][size_t(p)] = {d.forward, d.side, d.turn, d.buttons};
-      }
+  others_.clear();  // the console player's entry is replaced by tic()'s command
+  for (size_t t = 0; t < demo.tic_count(); ++t) others_.push_back(play::players_tic(demo, t));
   others_at_ = 0;
 }
 

@@ -108,6 +108,16 @@ bool is_our_demo(std::span<const uint8_t> bytes) {
   return bytes.size() >= 8 && std::memcmp(bytes.data(), kDemoMagic, 8) == 0;
 }
 
+std::array<TicCmd, kMaxPlayers> players_tic(const DoomDemo& doom, size_t tic) {
+  std::array<TicCmd, kMaxPlayers> cmds{};
+  for (int n = 0; n < kMaxPlayers; ++n)
+    if (doom.players[size_t(n)]) {
+      const DoomTic d = doom.player_tic(tic, n);
+      cmds[size_t(n)] = TicCmd{d.forward, d.side, d.turn, d.buttons};
+    }
+  return cmds;
+}
+
 Demo demo_from_doom(const DoomDemo& doom, const level::Level& level) {
   Demo d;
   d.level_fingerprint = fingerprint(level);

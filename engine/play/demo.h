@@ -3,6 +3,7 @@
 // same game at every tic. Doom's own .lmp demos are play/doom_demo.h; both convert.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -49,6 +50,8 @@ bool is_our_demo(std::span<const uint8_t> bytes);
 // Throws Error("<what>: message") for a truncated, corrupted, outdated or foreign file.
 Demo decode_demo(std::span<const uint8_t> bytes, const std::string& what);
 
+// Every player's command of a Doom demo's tic (zero for players not in the game).
+std::array<TicCmd, kMaxPlayers> players_tic(const DoomDemo& doom, size_t tic);
 // A Doom demo's console player as our demo (Doom's pause and save requests dropped).
 Demo demo_from_doom(const DoomDemo& doom, const level::Level& level);
 // Our demo as Doom v1.9 records it, for map `episode`, `map` (turns rounded to Doom's

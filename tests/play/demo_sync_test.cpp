@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "engine/bsp/load.h"
+#include "engine/play/demo.h"
 #include "engine/play/doom_demo.h"
 #include "engine/play/thing_dump.h"
 #include "engine/play/world.h"
@@ -159,13 +160,7 @@ Sync net_sync_of(const std::string& wad_file, int demo_number,
   s.traced = trace.hashes.size();
   s.demo_tics = demo.tic_count();
   for (size_t t = 0; t < trace.hashes.size() && t < demo.tic_count(); ++t) {
-    std::array<TicCmd, kMaxPlayers> cmds{};
-    for (int n = 0; n < kMaxPlayers; ++n)
-      if (demo.players[size_t(n)]) {
-        const DoomTic d = demo.player_tic(t, n);
-        cmds[size_t(n)] = TicCmd{d.forward, d.side, d.turn, d.buttons};
-      }
-    world.tick_players(cmds);
+    world.tick_players(players_tic(demo, t));
     if (dump.is_open()) dump << dump_things(world, t);
     const std::vector<std::string> ours = test::net_lines(world, t);
     if (test::net_hash(ours) != trace.hashes[t]) {

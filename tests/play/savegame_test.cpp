@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "engine/bsp/load.h"
+#include "engine/play/demo.h"
 #include "engine/play/doom_demo.h"
 #include "engine/play/savegame.h"
 #include "engine/util/bytes.h"
@@ -65,15 +66,7 @@ std::unique_ptr<World> new_world(const Game& g, int skill) {
   return std::make_unique<World>(map_from_wads(g.wads, g.map_name, *g.level), *g.level, o, Random{});
 }
 
-void play_tic(World& w, const DoomDemo& demo, size_t t) {
-  std::array<TicCmd, kMaxPlayers> cmds{};
-  for (int n = 0; n < kMaxPlayers; ++n)
-    if (demo.players[size_t(n)]) {
-      const DoomTic d = demo.player_tic(t, n);
-      cmds[size_t(n)] = TicCmd{d.forward, d.side, d.turn, d.buttons};
-    }
-  w.tick_players(cmds);
-}
+void play_tic(World& w, const DoomDemo& demo, size_t t) { w.tick_players(players_tic(demo, t)); }
 
 // G_DoLoadGame in the middle of a game.
 std::unique_ptr<World> load(const Game& g, const World& before, std::span<const uint8_t> bytes, bool doom_only,
