@@ -149,11 +149,15 @@ void Client::parse_resend_request(PacketReader& in, uint32_t now_ms) {
   const auto start = in.u32();
   const auto count = start ? in.u8() : std::nullopt;
   if (!count || *count == 0) return;
-  uint32_t first = *start, last = *start + *count - 1;
-  auto have = [&](uint32_t t) { return send_queue_[t % kBackupTics].active && send_queue_[t % kBackupTics].seq == t; };
+  // In 64 bits: a request near 2^32 must not wrap into four billion steps.
+  int64_t first = *start, last = int64_t(*start) + *count - 1;
+  auto have = [&](int64_t t) {
+    const SentTic& s = send_queue_[size_t(t % kBackupTics)];
+    return s.active && s.seq == t;
+  };
   while (first <= last && !have(first)) ++first;
   while (first <= last && !have(last)) --last;
-  if (first <= last) send_tics(first, last, now_ms);
+  if (first <= last) send_tics(uint32_t(first), uint32_t(last), now_ms);
 }
 
 void Client::parse_game_data(PacketReader& in, uint32_t now_ms) {

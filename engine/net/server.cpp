@@ -167,9 +167,10 @@ void Server::parse(Peer& peer, PacketReader& in, uint32_t type, uint32_t now_ms)
       const auto start = in.u32();
       const auto count = start ? in.u8() : std::nullopt;
       if (!count || *count == 0) return;
-      for (uint32_t t = *start; t < *start + *count; ++t)
-        if (peer.send_queue[t % kBackupTics].first != int64_t(t)) return;  // no longer kept: cannot resend
-      return send_tics(peer, *start, *start + *count - 1, now_ms);
+      const int64_t first = *start, last = first + *count - 1;  // 64 bits: no wrap near 2^32
+      for (int64_t t = first; t <= last; ++t)
+        if (peer.send_queue[size_t(t % kBackupTics)].first != t) return;  // no longer kept: cannot resend
+      return send_tics(peer, uint32_t(first), uint32_t(last), now_ms);
     }
     default: return;
   }

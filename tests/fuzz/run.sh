@@ -12,10 +12,10 @@ tests/build-sanitize.sh
 build=build-sanitize
 work=$build/corpus
 rm -rf "$work" && mkdir -p "$work"
-seed() {  # seed TARGET FILES...
+seed() {  # seed TARGET FILES...: those and the target's regressions
   local target=$1; shift
   mkdir -p "$work/$target"
-  for f in "$@"; do [ -f "$f" ] && cp "$f" "$work/$target/"; done
+  for f in "$@" tests/fuzz/regressions/"$target"/*; do [ -f "$f" ] && cp "$f" "$work/$target/"; done
   return 0
 }
 seed map tests/fuzz/seeds/room.map tests/bad/*.map
@@ -23,14 +23,14 @@ seed grid tests/fuzz/seeds/room.grid tests/bad/*.grid
 seed demo tests/fuzz/seeds/walk.demo maps/*.demo
 seed cameras maps/*.cameras maps/*.path maps/*.route
 seed png maps/textures/lantern.png maps/textures/lamp.png maps/textures/hazard.png tests/bad/fake.png
-seed wad tests/fuzz/seeds/map01.wad tests/fuzz/regressions/wad/*
+seed wad tests/fuzz/seeds/map01.wad
 seed udmf tests/fuzz/seeds/textmap.udmf
 seed lmp tests/fuzz/seeds/walk.lmp tests/fuzz/seeds/old.lmp
 seed dmx tests/fuzz/seeds/beep.dmx
 seed mus tests/fuzz/seeds/tune.mus tests/fuzz/seeds/tune.mid
 seed save tests/fuzz/seeds/room.dsg tests/golden/saves/*.dsg
 seed world tests/fuzz/seeds/world.bin
-seed net tests/fuzz/seeds/game.net
+seed net tests/fuzz/seeds/game.net tests/fuzz/seeds/server.net
 mkdir -p "$work/bsp"
 $build/tools/pseudo3d-mapc tests/fuzz/seeds/room.map -o "$work/bsp/room.bsp" >/dev/null
 $build/tools/pseudo3d-mapc tests/fuzz/seeds/room.grid -o "$work/bsp/grid.bsp" >/dev/null
