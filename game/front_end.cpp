@@ -383,9 +383,10 @@ void FrontEnd::tic() { tic(command_from_keys()); }
 void FrontEnd::tic(const play::DemoTic& player) {
   if (melt_ && !melt_->done()) {  // the world waits while the screen melts
     melt_->tic();
-    return;
+    if (!netgame()) return;  // a netgame's tic is every player's: it runs under the melt
+  } else {
+    melt_.reset();
   }
-  melt_.reset();
   ++game_tic_;
   if (menu_) menu_->tic();
   if (quit_ && quit_delay_ > 0) --quit_delay_;
@@ -412,16 +413,14 @@ void FrontEnd::tic(const play::DemoTic& player) {
 }
 
 // Doom's G_Ticker for the player's game: the world waits while paused or while the
-// menu is open; the tally waits for use or fire; an exit leads to the tally, then
-// the next map, or back to the title after the last.
+// menu is open; an exit leads to the tally, counted until the players hurry it on,
+// then the next map, or back to the title after the last.
 void FrontEnd::level_tic(const play::DemoTic& player) {
   if (!session_) return;
   Session& s = *session_;
-  const bool pressed = player.cmd.buttons & (play::kBtUse | play::kBtAttack);
-  const bool newly = pressed && !use_held_;
-  use_held_ = pressed;
-  if (s.in_intermission()) {
-    if (newly) next_map();
+  if (s.in_intermission()) {  // WI_Ticker: any player's press hurries it on
+    s.tic(player);
+    if (s.intermission_over()) next_map();
     return;
   }
   if (waiting()) {
@@ -444,8 +443,8 @@ void FrontEnd::level_tic(const play::DemoTic& player) {
 // map; after the last, the title.
 void FrontEnd::next_map() {
   if (mode_ == front::GameMode::kCommercial && start_finale()) return;
-  if (loop_ && session_->next_map_name().empty()) {
-    start_title();  // the end of the episode or the game
+  if (loop_ && session_->next_map_name().empty() && !netgame()) {
+    start_title();  // the end of the episode or the game (a netgame's players play on: the map again)
     return;
   }
   change_screen([&] { session_->enter_next_map(); });
@@ -471,13 +470,17 @@ bool FrontEnd::start_finale() {
 // F_Ticker: Doom II's text gives way at a button (to the next map, or after MAP30 the
 // end); Doom's turns into its episode's last picture.
 void FrontEnd::finale_tic(const play::DemoTic& player) {
-  const front::Finale::Next next = finale_->tic(player.cmd.buttons != 0);
+  session_->tic(player);  // the level is over: this takes every player's command
+  bool pressed = false;   // by any player in the game
+  for (int i = 0; i < play::kMaxPlayers; ++i)
+    pressed |= session_->world().in_game(i) && session_->last_commands()[size_t(i)].buttons;
+  const front::Finale::Next next = finale_->tic(pressed);
   for (play::Sound s : finale_->take_sounds()) menu_sounds_.push_back({s, 0, std::nullopt});
   if (finale_->screen_changed()) change_screen([] {});
   play_music(finale_->music());
   if (next == front::Finale::Next::kStay) return;
   finale_.reset();
-  if (next == front::Finale::Next::kEnd || session_->next_map_name().empty()) {
+  if ((next == front::Finale::Next::kEnd || session_->next_map_name().empty()) && !netgame()) {
     start_title();
     return;
   }

@@ -149,7 +149,6 @@ class FrontEnd {
   int page_tics_ = 0;
   std::vector<play::DemoTic> demo_;  // the title loop's demo being shown
   size_t demo_tic_ = 0;
-  bool use_held_ = false;
   std::set<int> held_;  // keys down now
   int mouse_dx_ = 0, turn_held_ = 0, weapon_key_ = 0;
   bool mouse_fire_ = false;

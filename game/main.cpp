@@ -311,12 +311,26 @@ int main(int argc, char** argv) {
     }
     if (!connect.empty() && headless) {
       const std::vector<play::TicCmd> input = net_input.empty() ? std::vector<play::TicCmd>{} : console_tics(net_input, source);
+      // The things after each tic played in a level (not the tally's), numbered on
+      // across levels as Chocolate's P3D_DUMP numbers them; written even when the game
+      // parts, to show where.
       std::string things;
-      const uint64_t tics = game::play_netgame_headless(
-          source, n, [&](uint64_t t) { return t < input.size() ? input[t] : play::TicCmd{}; },
-          [&](const game::Session& s, uint64_t t) {
-            if (!dump_things.empty()) things += play::dump_things(s.world(), t);
-          });
+      uint64_t level_tics = 0;
+      std::pair<const play::World*, int> last_dumped{nullptr, -1};
+      auto dump = [&](const game::Session& s, uint64_t) {
+        const std::pair<const play::World*, int> now{&s.world(), s.world().level_time()};
+        if (dump_things.empty() || now == last_dumped || now.second == 0) return;  // 0: a level set up, not played
+        things += play::dump_things(s.world(), level_tics++);
+        last_dumped = now;
+      };
+      uint64_t tics = 0;
+      try {
+        tics = game::play_netgame_headless(
+            source, n, [&](uint64_t t) { return t < input.size() ? input[t] : play::TicCmd{}; }, dump);
+      } catch (const std::exception&) {
+        if (!dump_things.empty()) write_file_atomically(dump_things, things);
+        throw;
+      }
       if (!dump_things.empty()) write_file_atomically(dump_things, things);
       std::printf("played %llu tics of a netgame on %s%s\n", (unsigned long long)tics, connect.c_str(),
                   record.empty() ? "" : (", recorded to " + record).c_str());
@@ -338,7 +352,9 @@ int main(int argc, char** argv) {
         if (!source.is_wad()) throw Error(bytes.what + ": a Doom demo plays a WAD's map: name the IWAD with --iwad");
         if (level_args.map.empty() && warp.empty()) source.map = doom_demo->map_name(has_doom2_maps(source));
         skill = doom_demo->skill;
+        const int time_limit = flags.time_limit;  // a demo holds no timer: Doom's -timer plays it too
         flags = game::flags_of(*doom_demo);
+        flags.time_limit = time_limit;
         say_what_is_not_played(*doom_demo, bytes.what);
       }
     }

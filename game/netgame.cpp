@@ -14,6 +14,8 @@
 
 #include "engine/util/error.h"
 #include "engine/util/file.h"
+#include "game/front_end.h"
+#include "game/settings.h"
 
 namespace p3d::game {
 
@@ -251,9 +253,19 @@ uint64_t NetPlay::step(Session& session, const std::function<play::TicCmd()>& in
     for (int i = 0; i < s.num_players && i < play::kMaxPlayers; ++i)
       if (i != me && !tic->in_game[size_t(i)] && session.world().in_game(i)) session.player_left(i);  // RunTic
     session.queue_other_players(others);
+    // G_Ticker keeps each player's x as the tic starts (after a respawn or a level
+    // loaded at its start), or Doom's rndindex where there is no body. In a tic the
+    // level plays, the World kept it; in the tally's tics (even the last, after which
+    // we load the next level) it is the x the level left.
+    const play::World* before = &session.world();
+    const int level_time = before->level_time();
+    std::array<std::optional<play::Fixed>, play::kMaxPlayers> standing{};
+    for (int i = 0; i < play::kMaxPlayers; ++i)
+      if (const play::Mobj* mo = before->player(i).mo) standing[size_t(i)] = mo->x;
     run(ours_[slot]);
+    const bool played = &session.world() == before && session.world().level_time() != level_time;
     for (int i = 0; i < s.num_players && i < play::kMaxPlayers; ++i) {
-      const std::optional<play::Fixed> x = session.world().tic_start_x()[size_t(i)];
+      const std::optional<play::Fixed> x = played ? session.world().tic_start_x()[size_t(i)] : standing[size_t(i)];
       consistency_[size_t(i)][slot] = uint8_t(x ? *x : session.screen_random().other_index());  // Doom's rndindex
     }
     ++game_tic_;
@@ -271,11 +283,15 @@ uint64_t play_netgame_headless(const bsp::LevelSource& source, const NetGameOpti
                                const AfterTic& after_tic) {
   NetPlay net(source, o);
   net.wait_for_start({});
-  Session session(net.level_source(), net.skill(), net.flags());
+  // Doom's front end runs the tics, as in the window: the level, the tally between
+  // levels (which every player's press hurries on) and the finales.
+  Settings settings;
+  FrontEnd front(std::make_unique<Session>(net.level_source(), net.skill(), net.flags()), settings, {});
+  Session& session = *front.session();
   if (!o.record.empty()) session.start_recording(true, o.long_tics);
   const auto ours = [&] { return input(net.tics_made()); };
   const auto run = [&](const play::TicCmd& cmd) {
-    session.tic(cmd);
+    front.tic(play::DemoTic{cmd, 0});
     if (after_tic) after_tic(session, session.tics() - 1);
   };
   uint64_t played = 0;

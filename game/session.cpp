@@ -47,7 +47,7 @@ Session::Session(const bsp::LevelSource& source, int skill, GameFlags flags)
   select_renderer("bsp", false);
 }
 
-void Session::load(const play::Inventory* carried) {
+void Session::load(const std::array<play::Player, play::kMaxPlayers>* carried) {
   bsp::OpenedLevel opened = bsp::open_level(source_);
   name_ = opened.name;
   level_ = std::make_unique<level::Level>(std::move(opened.level));
@@ -70,7 +70,7 @@ void Session::load(const play::Inventory* carried) {
 
 // Doom's G_DoLoadLevel: the World on the level, Doom's options for its map, the play
 // stream going on from the last level.
-void Session::start_world(const play::Inventory* carried) {
+void Session::start_world(const std::array<play::Player, play::kMaxPlayers>* carried) {
   play::GameOptions o;
   o.skill = skill_;
   o.map = 0;  // a hand-made level is no boss's map
@@ -150,29 +150,45 @@ void Session::player_left(int player) {
   recording_on_ = false;  // Doom's G_CheckDemoStatus
 }
 
+std::array<play::TicCmd, play::kMaxPlayers> Session::take_commands(const play::TicCmd& console) {
+  std::array<play::TicCmd, play::kMaxPlayers> cmds{};
+  if (others_at_ < others_.size()) cmds = others_[others_at_++];
+  cmds[size_t(world_->options().console_player)] = console;
+  return cmds;
+}
+
 void Session::tic(const play::DemoTic& tic) {
-  if (world_->exit() != play::ExitKind::kNone) return;  // the level is over: waiting for the next one
   const bool netgame = world_->options().netgame;
+  play::DemoTic played = tic;
+  if (recording_on_ && doom_turns_) played.cmd.turn = play::doom_demo_turn(tic.cmd.turn);
+  const bool several = netgame || !others_.empty();
+  last_commands_ = take_commands(played.cmd);
+  if (recording_on_) {  // Doom's G_WriteDemoTiccmd: every tic, whatever the screen
+    if (several) recorded_others_.push_back(last_commands_);
+    recording_.tics.push_back(played);
+  }
+  if (tally_count_) return tally_tic(last_commands_);
+  if (world_->exit() != play::ExitKind::kNone) return;  // the level is over: waiting for the next one
   if (!netgame && player().state == play::PlayerState::kReborn) {  // Doom's G_DoReborn: the level from its start
     random_ = world_->random();
     start_world(nullptr);
   }
   previous_ = pose_;
-  play::DemoTic played = tic;
-  if (recording_on_ && doom_turns_) played.cmd.turn = play::doom_demo_turn(tic.cmd.turn);
   if (played.cheats) world_->apply_cheats(played.cheats);
-  if (netgame || !others_.empty()) {
-    std::array<play::TicCmd, play::kMaxPlayers> cmds{};
-    if (others_at_ < others_.size()) cmds = others_[others_at_++];
-    if (recording_on_) recorded_others_.push_back(cmds);
-    cmds[size_t(world_->options().console_player)] = played.cmd;
-    world_->tick_players(cmds);
-  } else {
+  if (several)
+    world_->tick_players(last_commands_);
+  else
     world_->tick(played.cmd);
-  }
   ++tics_;
-  if (recording_on_) recording_.tics.push_back(played);
   after_tic();
+}
+
+// Doom's WI_Ticker: the count goes on (no other ticker runs), its sounds heard.
+void Session::tally_tic(const std::array<play::TicCmd, play::kMaxPlayers>& cmds) {
+  tally_count_->tic(*world_, cmds);
+  for (const play::Sound s : tally_count_->take_sounds())
+    if (listening_) sounds_.push_back({s, 0, std::nullopt});
+  ++tics_;
 }
 
 // What Doom's tickers do after the play: the messages, the face, sounds, the view.
@@ -184,7 +200,9 @@ void Session::after_tic() {
   if (listening_) keep_sounds();
   pose_ = pose_now();
   if (world_->exit() != play::ExitKind::kNone) {
-    recording_on_ = false;  // a demo holds one level: it ends at its exit
+    // Our own demo holds one level: it ends at its exit. A Doom demo goes on through
+    // the tally into the next level, as Doom's.
+    if (!doom_demo_) recording_on_ = false;
     say(world_->exit() == play::ExitKind::kSecret ? "secret exit" : "exit");
   }
 }
@@ -214,17 +232,12 @@ bool Session::enter_next_map() {
   const std::string next = next_map_name(&why);
   if (!next.empty()) source_.map = next;
   intermission_.reset();
+  tally_count_.reset();
   // Doom's G_PlayerFinishLevel: health, armor, ammo and weapons go on to the next
-  // map; keys, powers and the flashes stay behind.
-  play::Inventory carried = player().inv;
-  carried.powers = {};
-  carried.bonus_count = carried.damage_count = 0;
-  carried.items = 0;
+  // map, and the cheats; keys, powers and the flashes stay behind.
+  const std::array<play::Player, play::kMaxPlayers> carried = world_->players_for_next_level();
   random_ = world_->random();
-  const bool dead = player().state != play::PlayerState::kLive;
-  const int cheats = player().cheats;  // god mode and noclip go on, as Doom's player_t keeps them
-  load(dead ? nullptr : &carried);
-  if (!dead) world_->player().cheats = cheats;
+  load(&carried);
   if (!select_renderer(renderer_name_, false)) select_renderer("bsp", false);
   say(next.empty() ? why + ": starting it again" : "entered " + next);
   return !next.empty();
@@ -259,7 +272,7 @@ bool Session::select_renderer(const std::string& name, bool announce) {
 
 const render::RenderStats& Session::render(render::Frame& frame, double alpha) {
   if (intermission_) {  // the tally in place of the view
-    intermission_->draw(tally(), frame, palettes_.front());
+    intermission_->draw(final_tally_, tally_count_->shown(), frame, palettes_.front());
     stats_ = {};
     return stats_;
   }
@@ -416,8 +429,8 @@ bool Session::doom_map_numbers(int& episode, int& number) const {
 
 std::vector<uint8_t> Session::encode_recording(const std::filesystem::path& path) const {
   if (path.extension() != ".lmp") return play::encode_demo(recording_);
-  int episode = 0, number = 0;
-  if (!doom_map_numbers(episode, number))
+  const auto [episode, number] = recording_map_;  // where it started: a Doom demo goes on across levels
+  if (number == 0)
     throw Error(path.string() + ": a Doom demo (.lmp) records a WAD's MAPxx or ExMy map, not " + name_);
   play::DoomDemo demo = play::doom_from_demo(recording_, std::max(episode, 1), number, long_tics_);
   demo.deathmatch = flags_.deathmatch;  // a game of one (-deathmatch alone) plays as deathmatch in Doom too
@@ -442,8 +455,13 @@ std::vector<uint8_t> Session::encode_recording(const std::filesystem::path& path
 bool Session::start_intermission() {
   int episode = 0, number = 0;
   if (!doom_map_numbers(episode, number) || palettes_.empty()) return false;
-  intermission_ = play::IntermissionArt::load(bsp::read_wads(source_.wads), episode, number);
-  return intermission_.has_value();
+  final_tally_ = tally();
+  const play::Tally& t = final_tally_;
+  intermission_ = play::IntermissionArt::load(bsp::read_wads(source_.wads), episode, number, t.next_map);
+  if (!intermission_) return false;
+  tally_count_.emplace(t, episode == 0, netgame_tally_frags_);
+  if (t.netgame && !t.deathmatch) netgame_tally_frags_ = tally_count_->shown().show_frags;
+  return true;
 }
 
 play::Tally Session::tally() const {
@@ -467,11 +485,24 @@ play::Tally Session::tally() const {
     t.player_secrets[size_t(i)] = world_->player(i).secret_count;
   }
   t.netgame = o.netgame;
+  int episode = 0;
+  if (doom_map_numbers(episode, t.map)) {
+    t.par = play::par_seconds(episode, t.map);
+    t.show_par = episode != 4;
+    t.did_secret = p.did_secret || (episode != 0 && t.map == 9);  // G_DoCompleted: leaving ExM9 counts
+    const std::string next = world_->exit() != play::ExitKind::kNone ? next_map_name() : std::string();
+    int next_episode = 0;
+    if (!next.empty() && std::sscanf(next.c_str(), "MAP%d", &t.next_map) != 1)
+      std::sscanf(next.c_str(), "E%dM%d", &next_episode, &t.next_map);
+  }
   return t;
 }
 
 void Session::start_recording(bool doom_turns, bool long_tics) {
   recording_on_ = true;
+  recording_map_ = {0, 0};
+  doom_map_numbers(recording_map_.first, recording_map_.second);
+  doom_demo_ = doom_turns || long_tics;
   doom_turns_ = doom_turns && !long_tics;
   long_tics_ = long_tics;
   recording_ = {};
@@ -571,6 +602,7 @@ void Session::load_game(std::span<const uint8_t> bytes, const std::string& what,
   }
   skill_ = header.skill;
   intermission_.reset();
+  tally_count_.reset();
   recording_on_ = false;  // a demo holds one level from its start
   pose_ = pose_now();
   if (loaded.extended) {
@@ -594,7 +626,8 @@ void Session::load_game(std::span<const uint8_t> bytes, const std::string& what,
 bool Session::reload() {
   const Pose keep = pose_;
   const uint8_t cards = player().cards;
-  const play::Inventory carried = player().inv;
+  std::array<play::Player, play::kMaxPlayers> carried = world_->players_for_next_level();
+  carried[size_t(world_->options().console_player)].inv = player().inv;  // all of it: the powers too
   const std::string file_name = std::filesystem::path(name_).filename().string();
   std::unique_ptr<level::Level> old_level = std::move(level_);
   std::unique_ptr<play::World> old_world = std::move(world_);

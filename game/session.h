@@ -21,6 +21,7 @@
 #include "engine/play/demo.h"
 #include "engine/play/hud_font.h"
 #include "engine/play/intermission.h"
+#include "engine/play/tally_count.h"
 #include "engine/play/music.h"
 #include "engine/play/sound.h"
 #include "engine/play/status_bar.h"
@@ -97,11 +98,14 @@ class Session {
   bool enter_next_map();
   // The map an exit leads to in Doom's order, or empty (with the reason in `why`).
   std::string next_map_name(std::string* why = nullptr) const;
-  // Doom's intermission after an exit: the tally of the level just finished, drawn by
-  // render() in place of the view until enter_next_map. False (nothing shown) where
-  // the WADs have no intermission art.
+  // Doom's intermission after an exit: the tally of the level just finished, counted
+  // up by the tics that follow (engine/play/tally_count.h: every player's presses
+  // hurry it) and drawn by render() in place of the view, until intermission_over()
+  // says the next map is due. False (nothing shown) where the WADs have no
+  // intermission art.
   bool start_intermission();
-  bool in_intermission() const { return intermission_.has_value(); }
+  bool in_intermission() const { return tally_count_.has_value(); }
+  bool intermission_over() const { return tally_count_ && tally_count_->over(); }
   // Kills, items and secrets of the level so far, and its time.
   play::Tally tally() const;
   // Every key at every start (--all-keys).
@@ -123,6 +127,10 @@ class Session {
   void play_other_players(const play::DoomDemo& demo);
   // A netgame's other players: the next tic() plays these commands beside ours.
   void queue_other_players(const std::array<play::TicCmd, play::kMaxPlayers>& cmds) { others_.push_back(cmds); }
+  // The last tic's command of every player: tic() takes each tic's whatever the screen
+  // (the level, the tally, a finale waiting), the console player's given and the others'
+  // queued, as Doom's G_Ticker reads every player's every tic.
+  const std::array<play::TicCmd, play::kMaxPlayers>& last_commands() const { return last_commands_; }
   // A netgame's player left (Doom's PlayerQuitGame, before the tic): a recording ends there.
   void player_left(int player);
   // The camera between the previous tic (alpha 0) and this one (alpha 1).
@@ -153,7 +161,7 @@ class Session {
   // ---- music (the window's MusicPlayer plays it)
   // What Doom plays now (engine/play/music.h): the map's track, or the intermission's
   // during the tally; kNone for a level that is no Doom map.
-  play::Track music() const { return intermission_ ? tally_music_ : map_music_; }
+  play::Track music() const { return in_intermission() ? tally_music_ : map_music_; }
 
   // ---- rendering
   // Switches renderer; false (with a message) if it cannot draw this level. `announce`:
@@ -216,11 +224,13 @@ class Session {
   bool reload_if_saved(double now_seconds) { return watch_ && watch_->changed(now_seconds) && reload(); }
 
  private:
-  // Opens the level and starts a World on it: `carried` is what the player brings from
-  // the last map (nullptr: a new player).
-  void load(const play::Inventory* carried = nullptr);
-  void start_world(const play::Inventory* carried);
+  // Opens the level and starts a World on it: `carried` is the players as they come
+  // from the last map (World::players_for_next_level; nullptr: new players).
+  void load(const std::array<play::Player, play::kMaxPlayers>* carried = nullptr);
+  void start_world(const std::array<play::Player, play::kMaxPlayers>* carried);
   void after_tic();
+  void tally_tic(const std::array<play::TicCmd, play::kMaxPlayers>& cmds);
+  std::array<play::TicCmd, play::kMaxPlayers> take_commands(const play::TicCmd& console);
   void keep_sounds();  // the tic's, placed
   void choose_music(const std::string& map_name);  // "" for a level that is no Doom map
   bool doom_map_numbers(int& episode, int& number) const;
@@ -247,6 +257,9 @@ class Session {
   std::optional<play::StatusBarArt> status_art_;
   std::optional<play::HudFont> hud_font_;
   std::optional<play::IntermissionArt> intermission_;
+  std::optional<play::TallyCount> tally_count_;
+  play::Tally final_tally_;           // the level's, as it ended
+  bool netgame_tally_frags_ = false;  // Doom's dofrags, which its next netgame tally starts from
   std::unique_ptr<play::WeaponArt> weapon_art_;
   std::vector<std::vector<uint32_t>> palettes_;  // PLAYPAL's, for the flashes
   play::Face face_;
@@ -258,10 +271,13 @@ class Session {
   std::unique_ptr<SoundBank> sound_bank_;
   play::Track map_music_, tally_music_;  // the map's (S_Start) and its intermission's (WI_Ticker)
   bool recording_on_ = false, doom_turns_ = false, long_tics_ = false;
+  bool doom_demo_ = false;  // recording a Doom demo (.lmp), which goes on across levels
+  std::pair<int, int> recording_map_{0, 0};  // the (episode, map) it started on; map 0: none of a WAD's
   play::Demo recording_;
   std::optional<FileWatch> watch_;
   std::vector<std::array<play::TicCmd, play::kMaxPlayers>> others_;  // play_other_players'
   size_t others_at_ = 0;
+  std::array<play::TicCmd, play::kMaxPlayers> last_commands_{};
   std::vector<std::array<play::TicCmd, play::kMaxPlayers>> recorded_others_;  // while recording a netgame
 };
 

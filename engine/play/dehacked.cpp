@@ -308,28 +308,4 @@ std::map<std::string, std::string> dehacked_texts(const wad::Stack& wads) {
   return parse_dehacked_texts(iwad_dehacked(wads));
 }
 
-std::map<std::pair<int, int>, int> parse_dehacked_pars(std::string_view text) {
-  std::map<std::pair<int, int>, int> pars;
-  bool in_pars = false;
-  for (size_t pos = 0; pos < text.size();) {
-    size_t end = text.find('\n', pos);
-    if (end == std::string_view::npos) end = text.size();
-    const std::string line(trim(text.substr(pos, end - pos)));
-    pos = end + 1;
-    if (line.empty() || line[0] == '#') continue;
-    if (line[0] == '[') {
-      in_pars = line.compare(0, 6, "[PARS]") == 0;
-      continue;
-    }
-    int a = 0, b = 0, c = 0;
-    if (!in_pars) continue;
-    const int n = std::sscanf(line.c_str(), "par %d %d %d", &a, &b, &c);
-    if (n == 3 && a >= 1 && b >= 1 && c >= 0) pars[{a, b}] = c;
-    else if (n == 2 && a >= 1 && b >= 0) pars[{0, a}] = b;
-  }
-  return pars;
-}
-
-std::map<std::pair<int, int>, int> dehacked_pars(const wad::Stack& wads) { return parse_dehacked_pars(iwad_dehacked(wads)); }
-
 }  // namespace p3d::play

@@ -22,9 +22,4 @@ std::map<std::string, std::string> parse_dehacked_texts(std::string_view text);
 // dehacked_texts' map; the mnemonic itself if Doom has no such text.
 std::string english_text(std::string_view mnemonic);
 
-// The par times the WAD's DEHACKED sets (BEX [PARS]: `par E M seconds` for Doom's
-// ExMy, `par M seconds` for Doom II's MAPxx), by (episode, map), episode 0 for MAPxx.
-std::map<std::pair<int, int>, int> dehacked_pars(const wad::Stack& wads);
-std::map<std::pair<int, int>, int> parse_dehacked_pars(std::string_view text);
-
 }  // namespace p3d::play

@@ -52,7 +52,8 @@ void set_demo_game(GameOptions& o, const DoomDemo& d) {
   o.deathmatch = d.deathmatch == 0 ? Deathmatch::kNone : d.deathmatch == 2 ? Deathmatch::kAltdeath : Deathmatch::kDeathmatch;
 }
 
-World::World(Map map, const level::Level& level, const GameOptions& options, Random random, const Inventory* carried)
+World::World(Map map, const level::Level& level, const GameOptions& options, Random random,
+             const std::array<Player, kMaxPlayers>* carried)
     : map_(std::move(map)), level_(level), options_(options), random_(random), game_tic_at_start_(options.game_tic) {
   states_.assign(std::begin(kStates), std::end(kStates));
   thing_info_.assign(std::begin(kThingTypes), std::end(kThingTypes));
@@ -66,10 +67,9 @@ World::World(Map map, const level::Level& level, const GameOptions& options, Ran
   index_walls();
   index_sprite_frames();
   index_static_things();
-  for (int n = 0; n < kMaxPlayers; ++n) players_[size_t(n)].number = n;
-  if (carried) {
-    player().inv = *carried;
-    player().state = PlayerState::kLive;
+  for (int n = 0; n < kMaxPlayers; ++n) {
+    if (carried && in_game(n)) players_[size_t(n)] = (*carried)[size_t(n)];
+    players_[size_t(n)].number = n;
   }
   player().view_z = 1;
   for (const MapThing& mt : map_.things) {
@@ -91,6 +91,21 @@ World::World(Map map, const level::Level& level, const GameOptions& options, Ran
 }
 
 World::~World() = default;
+
+std::array<Player, kMaxPlayers> World::players_for_next_level() const {
+  std::array<Player, kMaxPlayers> next = players_;
+  for (Player& p : next) {
+    p.mo = p.attacker = nullptr;
+    if (p.state == PlayerState::kDead) p.state = PlayerState::kReborn;
+    p.inv.powers = {};
+    p.cards = 0;
+    p.extra_light = p.fixed_colormap = 0;
+    p.inv.damage_count = p.inv.bonus_count = 0;
+    p.frags = {};
+    p.kill_count = p.secret_count = p.inv.items = 0;
+  }
+  return next;
+}
 
 Fixed World::eye_z() const {
   const Player& p = player();

@@ -272,10 +272,10 @@ class World {
  public:
   // The level at its start (Doom's P_SetupLevel): things spawned in THINGS order,
   // then the sector specials, drawing from `random` as Doom does (the stream goes on
-  // from level to level). `carried` is what the player brings from the last level
-  // (nullptr: a new player, as Doom's G_PlayerReborn makes one).
+  // from level to level). `carried`: the players as they come from the last level
+  // (players_for_next_level); nullptr: new players, as Doom's G_PlayerReborn makes them.
   World(Map map, const level::Level& level, const GameOptions& options, Random random,
-        const Inventory* carried = nullptr);
+        const std::array<Player, kMaxPlayers>* carried = nullptr);
   ~World();
   World(const World&) = delete;
   World& operator=(const World&) = delete;
@@ -298,6 +298,12 @@ class World {
   const Player& player() const { return players_[size_t(options_.console_player)]; }
   Player& player() { return players_[size_t(options_.console_player)]; }
   const Player& player(int n) const { return players_[size_t(n)]; }
+  Player& player(int n) { return players_[size_t(n)]; }
+  // Every player as Doom's next level takes them: G_PlayerFinishLevel (powers, keys and
+  // flashes left behind), G_DoLoadLevel (frags cleared, the dead to be reborn) and
+  // P_SetupLevel (counts cleared); health, armor, weapons, ammo, the buttons held and
+  // the cheats go on. None of this level's things.
+  std::array<Player, kMaxPlayers> players_for_next_level() const;
   bool in_game(int n) const { return options_.in_game[size_t(n)]; }
   // The deathmatch starts Doom keeps (the first ten of the map's: vanilla's array).
   const std::vector<MapThing>& deathmatch_starts() const { return deathmatch_starts_; }

@@ -97,8 +97,8 @@ TEST(FrontEnd, EndGameGoesBackToTheTitleAndQuitWaitsForItsSound) {
   EXPECT_EQ(tics, 53) << "Doom's 105 VBLs";
 }
 
-// Doom II's MAP06: the tally, then C1TEXT typed over its flat with D_READ_M, then at a
-// button MAP07; Doom's E1M8: the text at once (no tally), then the episode's picture.
+// Doom II's MAP06: the tally until two presses, then C1TEXT typed over its flat with
+// D_READ_M, then at a button MAP07; Doom's E1M8: the text at once (no tally), then the episode's picture.
 TEST(FrontEnd, FinalesBetweenClustersAndAfterEpisodes) {
   Settings settings;
   FrontEnd f(freedoom2(), settings, {});
@@ -108,7 +108,13 @@ TEST(FrontEnd, FinalesBetweenClustersAndAfterEpisodes) {
   f.tic();
   ASSERT_TRUE(f.session()->in_intermission());
   EXPECT_EQ(f.music().music, play::Music::kDm2int);
-  f.tic(play::DemoTic{play::TicCmd{0, 0, 0, play::kBtUse}, 0});
+  const play::DemoTic use{play::TicCmd{0, 0, 0, play::kBtUse}, 0};
+  f.tic(use);  // the counts at once
+  f.tic();
+  f.tic(use);  // on: Doom's ten tics to the next screen
+  for (int t = 0; t < 9; ++t) f.tic();
+  EXPECT_TRUE(f.session()->in_intermission());
+  f.tic();
   EXPECT_FALSE(f.in_level()) << "the finale's text";
   EXPECT_EQ(f.music(), (play::Track{play::Music::kReadM, true}));
   render::Frame frame(320, 200);

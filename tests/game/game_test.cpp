@@ -530,7 +530,17 @@ TEST(Session, TheIntermissionTalliesTheLevel) {
   EXPECT_EQ(frame.at(160, 120), palette[back.indices[back.at(160, 120)]]) << "the picture behind the tally";
   EXPECT_EQ(play::par_seconds(0, 1), 30) << "Doom II's MAP01 par";
   EXPECT_EQ(play::par_seconds(1, 1), 30) << "E1M1's";
-  EXPECT_EQ(play::par_seconds(4, 1), -1) << "no par in episode 4";
+  EXPECT_EQ(play::par_seconds(4, 1), 90) << "episode 4 reads Doom II's table one map on, as Chocolate Doom";
+  // Doom's WI_Ticker: a press shows the counts at once, the next leaves in ten tics.
+  const play::TicCmd fire{0, 0, 0, play::kBtAttack};
+  s.tic(fire);
+  s.tic(play::TicCmd{});
+  s.tic(fire);
+  for (int t = 0; t < 9; ++t) s.tic(fire);
+  EXPECT_FALSE(s.intermission_over()) << "the held button is no new press";
+  s.tic(play::TicCmd{});
+  EXPECT_TRUE(s.intermission_over());
+  EXPECT_TRUE(s.player().attack_down == false) << "the last tic's buttons stay in the player";
   s.enter_next_map();
   EXPECT_FALSE(s.in_intermission());
   EXPECT_FALSE(Session(test::source_dir() / "maps/outpost.map").start_intermission()) << "our own levels have none";

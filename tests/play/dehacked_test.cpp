@@ -27,15 +27,5 @@ TEST(Dehacked, FreedoomsIwadRewordsAsChocolateDoomShowsIt) {
   EXPECT_EQ(texts.at("You got the chaingun!"), "You got the minigun!");
 }
 
-TEST(Dehacked, BexParsSetTheTallysParTimes) {
-  const auto pars = parse_dehacked_pars("[PARS]\npar 1 1 30  # E1M1\npar 2 9 360\npar 7 180\n# par 8 60\n[STRINGS]\npar 9 1\n");
-  EXPECT_EQ(pars.at({1, 1}), 30);
-  EXPECT_EQ(pars.at({2, 9}), 360);
-  EXPECT_EQ(pars.at({0, 7}), 180) << "two numbers: Doom II's MAP07";
-  EXPECT_EQ(pars.size(), 3u) << "comments and other sections are not pars";
-  const auto freedoom = dehacked_pars(bsp::read_wads({test::freedoom_path("freedoom1.wad")}));
-  EXPECT_EQ(freedoom.at({1, 2}), 120) << "Freedoom's own par for E1M2 (Doom's is 75)";
-}
-
 }  // namespace
 }  // namespace p3d::play

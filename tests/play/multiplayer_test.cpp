@@ -10,6 +10,7 @@
 
 #include "engine/bsp/load.h"
 #include "engine/play/intermission.h"
+#include "engine/play/tally_count.h"
 #include "engine/play/world.h"
 #include "engine/wad/art.h"
 #include "engine/wad/picture.h"
@@ -223,12 +224,26 @@ TEST(Multiplayer, TheTimerEndsADeathmatchLevel) {
   EXPECT_EQ(coop.world->time_left(), 0);
 }
 
-// The intermission after a deathmatch level: Doom's frag table (WI_drawDeathmatchStats).
-TEST(Multiplayer, TheDeathmatchIntermissionShowsTheFragTable) {
+// Tics of Doom's intermission; `press_by` presses fire in the first of them.
+std::vector<Sound> count_tally(TallyCount& count, World& world, int tics, int press_by = -1) {
+  std::vector<Sound> heard;
+  for (int t = 0; t < tics; ++t) {
+    std::array<TicCmd, kMaxPlayers> cmds{};
+    if (t == 0 && press_by >= 0) cmds[size_t(press_by)].buttons = kBtAttack;
+    count.tic(world, cmds);
+    for (Sound s : count.take_sounds()) heard.push_back(s);
+  }
+  return heard;
+}
+
+// The intermission after a deathmatch level: Doom's frag table (WI_drawDeathmatchStats),
+// counted a frag a tic after a second's pause, then waiting for any player's press.
+TEST(Multiplayer, TheDeathmatchIntermissionCountsTheFragTable) {
   const wad::Stack wads = bsp::read_wads({test::freedoom_path("freedm.wad")});
   const std::vector<uint32_t> palette = wad::Art(wads).palette();
-  const auto art = IntermissionArt::load(wads, 0, 1);
+  const auto art = IntermissionArt::load(wads, 0, 1, 2);
   ASSERT_TRUE(art.has_value());
+  Netgame g(4, Deathmatch::kDeathmatch);
   Tally t;
   t.deathmatch = true;
   t.in_game = {true, true, false, true};
@@ -236,13 +251,34 @@ TEST(Multiplayer, TheDeathmatchIntermissionShowsTheFragTable) {
   t.frags[0] = {0, 3, 0, 1};
   t.frags[1] = {2, 1, 0, 0};  // one death by its own hand
   t.frags[3] = {0, 0, 0, 0};
-  EXPECT_EQ(frag_sum(t, 0), 4);
-  EXPECT_EQ(frag_sum(t, 1), 1);
-  EXPECT_EQ(frag_sum(t, 3), 0);
   t.frags[2] = {50, 50, 0, 50};  // a player not in the game counts for no one
-  EXPECT_EQ(frag_sum(t, 0), 4);
+  TallyCount count(t, true);
+  EXPECT_TRUE(count_tally(count, *g.world, 35).empty()) << "a second's pause";
+  EXPECT_EQ(count.shown().deathmatch_frags[0][1], 0);
+  count_tally(count, *g.world, 1);
+  EXPECT_EQ(count.shown().deathmatch_frags[0][1], 1) << "a frag a tic";
+  EXPECT_EQ(count.shown().deathmatch_totals[0], 4) << "the totals at once";
+  const std::vector<Sound> rest = count_tally(count, *g.world, 2);
+  EXPECT_EQ(count.shown().deathmatch_frags[0][1], 3);
+  EXPECT_EQ(std::count(rest.begin(), rest.end(), Sound::kBarexp), 0) << "still counting at its last step";
+  EXPECT_EQ(count_tally(count, *g.world, 1), std::vector<Sound>{Sound::kBarexp}) << "the tic after: done";
+  count_tally(count, *g.world, 35 + 200);
+  EXPECT_EQ(count.stage(), TallyCount::Stage::kCounting) << "it waits for a press";
+  EXPECT_EQ(count_tally(count, *g.world, 1, 2), std::vector<Sound>{}) << "player 3 is not in this game";
+  EXPECT_EQ(count_tally(count, *g.world, 1, 3), std::vector<Sound>{Sound::kSlop}) << "player 4's press: on";
+  EXPECT_TRUE(g.player(3).attack_down) << "Doom keeps the button down in the player";
+  EXPECT_EQ(count.stage(), TallyCount::Stage::kLeaving) << "Doom II: no episode map";
+  count_tally(count, *g.world, 9);
+  EXPECT_FALSE(count.over());
+  count_tally(count, *g.world, 1);
+  EXPECT_TRUE(count.over()) << "ten tics later";
+  EXPECT_FALSE(g.player(3).attack_down);
+
+  TallyCount hurried(t, true);
+  count_tally(hurried, *g.world, 3);
+  EXPECT_EQ(count_tally(hurried, *g.world, 1, 0), std::vector<Sound>{Sound::kBarexp}) << "a press in the pause: all at once";
   image::Image frame(320, 200);
-  art->draw(t, frame, palette);
+  art->draw(t, hurried.shown(), frame, palette);
   auto shows = [&](const std::string& lump, int x, int y) { return test::shows_picture(frame, wads, palette, lump, x, y); };
   auto width = [&](const std::string& lump) { return test::picture_width(wads, lump); };
   EXPECT_TRUE(shows("WIKILRS", 10, 100));
@@ -255,26 +291,47 @@ TEST(Multiplayer, TheDeathmatchIntermissionShowsTheFragTable) {
   const int digit = width("WINUM0");
   EXPECT_TRUE(shows("WINUM3", 42 + 2 * 40 + digit - digit, 68 + 10)) << "player 1 killed player 2 three times";
   EXPECT_TRUE(shows("WINUM4", 269 + digit - digit, 68 + 10)) << "player 1's total";
+  EXPECT_EQ(hurried.shown().deathmatch_totals[1], 1) << "two kills less one death by its own hand";
 }
 
-// The intermission after a co-op level: each player's counts (WI_drawNetgameStats).
-TEST(Multiplayer, TheCoopIntermissionShowsEachPlayersCounts) {
+// The intermission after a co-op level: each player's counts (WI_drawNetgameStats),
+// two percent a tic, the frag column only where someone has frags.
+TEST(Multiplayer, TheCoopIntermissionCountsEachPlayer) {
   const wad::Stack wads = bsp::read_wads({test::freedoom_path("freedm.wad")});
   const std::vector<uint32_t> palette = wad::Art(wads).palette();
-  const auto art = IntermissionArt::load(wads, 0, 1);
+  const auto art = IntermissionArt::load(wads, 0, 1, 2);
   ASSERT_TRUE(art.has_value());
   auto width = [&](const std::string& lump) { return test::picture_width(wads, lump); };
   auto height = [&](const std::string& lump) { return wad::decode_picture(wads.find(lump)->bytes, lump).height; };
   auto shows = [&](const image::Image& frame, const std::string& lump, int x, int y) {
     return test::shows_picture(frame, wads, palette, lump, x, y);
   };
+  Netgame g(2, Deathmatch::kNone);
   Tally t;
   t.netgame = true;
   t.in_game = {true, true, false, false};
   t.total_kills = 10;
   t.player_kills = {5, 10, 0, 0};  // 50% and 100%
+  TallyCount count(t, true);
+  EXPECT_EQ(count.shown().kills[0], 0) << "shown from the start";
+  EXPECT_EQ(count.shown().kills[2], -1) << "not in the game";
+  count_tally(count, *g.world, 35 + 25);
+  EXPECT_EQ(count.shown().kills[0], 50);
+  EXPECT_EQ(count.shown().kills[1], 50);
+  EXPECT_EQ(count_tally(count, *g.world, 25).back(), Sound::kBarexp);
+  EXPECT_EQ(count.shown().kills[1], 100) << "counted together, to the end of the longest";
+  EXPECT_EQ(count.shown().items[0], 0);
+  count_tally(count, *g.world, 1, 1);
+  EXPECT_EQ(count.shown().secrets[1], 0) << "a press shows the rest";
+  EXPECT_EQ(count_tally(count, *g.world, 1, 1), std::vector<Sound>{}) << "the button still down: no new press";
+  count_tally(count, *g.world, 1);
+  EXPECT_EQ(count_tally(count, *g.world, 1, 0), std::vector<Sound>{Sound::kSgcock});
+  EXPECT_EQ(count.stage(), TallyCount::Stage::kLeaving);
+
   image::Image frame(320, 200);
-  art->draw(t, frame, palette);
+  TallyCount done(t, true);
+  count_tally(done, *g.world, 1, 1);  // player 1 still holds fire from before: player 2 presses
+  art->draw(t, done.shown(), frame, palette);
   const int x = 32 + width("STFST01") / 2 + 32;  // no frags: Doom's table moves right
   const int first_row = 50 + height("WIOSTK");
   EXPECT_TRUE(shows(frame, "WIOSTK", x + 64 - width("WIOSTK"), 50));
@@ -285,9 +342,13 @@ TEST(Multiplayer, TheCoopIntermissionShowsEachPlayersCounts) {
   EXPECT_TRUE(shows(frame, "WINUM5", percent_x - 2 * digit, first_row + 10)) << "player 1: 50%";
   EXPECT_TRUE(shows(frame, "WINUM1", percent_x - 3 * digit, first_row + 33 + 10)) << "player 2: 100%";
   t.frags[1][0] = 1;  // a frag: the column shows, the table moves left
-  image::Image with_frags(320, 200);
-  art->draw(t, with_frags, palette);
-  EXPECT_TRUE(shows(with_frags, "WIFRGS", x - 32 + 4 * 64 - width("WIFRGS"), 50));
+  TallyCount with_frags(t, true);
+  EXPECT_TRUE(with_frags.shown().show_frags);
+  image::Image frags_frame(320, 200);
+  art->draw(t, with_frags.shown(), frags_frame, palette);
+  EXPECT_TRUE(shows(frags_frame, "WIFRGS", x - 32 + 4 * 64 - width("WIFRGS"), 50));
+  t.frags[1][0] = 0;
+  EXPECT_TRUE(TallyCount(t, true, true).shown().show_frags) << "Doom's dofrags stays on from the last netgame tally";
 }
 
 // Other players are drawn in their colours: the World shows each player's colour bits,

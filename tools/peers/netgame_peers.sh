@@ -10,21 +10,26 @@
 #     patched build that tools/peers/demo_batch.py describes), tic for tic.
 #
 #   tools/peers/netgame_peers.sh [--players 2..4] [--deathmatch|--altdeath] [--tics N]
-#       [--drop P] [--delay-ms MS] [--iwad WAD] [--map N] [--build DIR | --game PROGRAM]
-#       [--patched CHOCOLATE]
+#       [--timer MINUTES] [--drop P] [--delay-ms MS] [--iwad WAD] [--map N]
+#       [--build DIR | --game PROGRAM] [--patched CHOCOLATE]
+#
+# With --timer the level ends after that many minutes and the game goes on through the
+# tally (every player's press hurries it) into the next map: the demos then hold both
+# levels, and the replays, which end at the first exit, are compared up to there.
 #
 # Needs Debian's chocolate-doom (chocolate-doom, chocolate-server) and freedoom; prints
 # one line of results and exits 1 if anything differs. Without --patched, Chocolate's
 # replay is not compared.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-players=2 mode="" tics=350 drop=0.05 delay=30 iwad=/usr/share/games/doom/freedoom2.wad map=1 game=build/game/pseudo3d
+players=2 mode="" timer="" tics=350 drop=0.05 delay=30 iwad=/usr/share/games/doom/freedoom2.wad map=1 game=build/game/pseudo3d
 patched=""
 while [ $# -gt 0 ]; do
   case $1 in
     --players) players=$2; shift 2 ;;
-    --deathmatch|--altdeath) mode=$1; shift ;;
+    --deathmatch|--altdeath) mode=${1#-}; shift ;;  # Chocolate spells it -deathmatch
     --tics) tics=$2; shift 2 ;;
+    --timer) timer="-timer $2"; shift 2 ;;
     --drop) drop=$2; shift 2 ;;
     --delay-ms) delay=$2; shift 2 ;;
     --iwad) iwad=$2; shift 2 ;;
@@ -32,7 +37,7 @@ while [ $# -gt 0 ]; do
     --build) game=$2/game/pseudo3d; shift 2 ;;
     --game) game=$2; shift 2 ;;
     --patched) patched=$2; shift 2 ;;
-    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
     *) echo "$0: unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -60,7 +65,7 @@ map_name=$([ "$commercial" = 1 ] && printf 'MAP%02d' "$map" || echo "E1M$map")
 pids+=($!)
 sleep 0.5
 (cd "$work" && HOME="$work" SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy \
-  "$choc" -iwad "$iwad" -connect "127.0.0.1:${ports[0]}" -nodes "$players" -warp $warp -skill 3 $mode \
+  "$choc" -iwad "$iwad" -connect "127.0.0.1:${ports[0]}" -nodes "$players" -warp $warp -skill 3 $mode $timer \
   -record choc -nosound -nomusic >"$work/chocolate.log" 2>&1) &
 pids+=($!)
 sleep 1.5
@@ -80,15 +85,18 @@ for _ in $(seq 50); do [ -s "$work/choc.lmp" ] && break; sleep 0.2; done  # Choc
 if [ $status -ne 0 ] || [ ! -s "$work/choc.lmp" ]; then
   echo "netgame failed:"; tail -n 3 "$work"/ours*.log "$work/chocolate.log" "$work/server.log"; exit 1
 fi
-"$game" --iwad "$iwad" --play "$work/choc.lmp" --headless --stats-only --dump-things "$work/replay.things" \
+replay_timer=()  # our replay of a demo ends its level at the timer too (a demo holds no timer)
+[ -n "$timer" ] && replay_timer=(--timer "${timer#-timer }" "-$mode")
+"$game" --iwad "$iwad" --play "$work/choc.lmp" "${replay_timer[@]}" --headless --stats-only --dump-things "$work/replay.things" \
   --out "$work/replay" >/dev/null
 if [ -n "$patched" ]; then
   (cd "$work" && env HOME="$work" SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy P3D_DUMP="$work/chocolate.things" \
-    "$patched" -iwad "$iwad" -timedemo "$work/choc.lmp" -nodraw -nosound -nomusic >/dev/null 2>&1) || true
+    "$patched" -iwad "$iwad" -timedemo "$work/choc.lmp" $timer -nodraw -nosound -nomusic >/dev/null 2>&1) || true
 fi
-python3 - "$work" "$players" "$tics" "$drop" "$delay" "${mode:-coop}" <<'PY'
+python3 - "$work" "$players" "$tics" "$drop" "$delay" "${mode:-coop}" "$timer" <<'PY'
 import os, sys
 work, players, tics, drop, delay, mode = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4], sys.argv[5], sys.argv[6]
+levels = bool(sys.argv[7])  # --timer: the replays end at the first exit, the game goes on
 def blocks(path):
     out, cur = [], None
     for line in open(path):
@@ -99,6 +107,7 @@ def blocks(path):
     return out
 choc = open(os.path.join(work, "choc.lmp"), "rb").read()
 replay = blocks(os.path.join(work, "replay.things"))
+need = len(replay) if levels else tics
 results, bad = [], False
 for k in range(1, players):
     mine = open(os.path.join(work, f"ours{k}.lmp"), "rb").read()
@@ -106,7 +115,7 @@ for k in range(1, players):
     live = blocks(os.path.join(work, f"live{k}.things"))
     n = min(len(live), len(replay))
     parted = next((t for t in range(n) if live[t] != replay[t]), None)
-    bad |= not same_demo or parted is not None or n < tics
+    bad |= not same_demo or parted is not None or n < need or (levels and len(live) <= len(replay))
     results.append(f"client {k}: demo {'= Chocolate' if same_demo else 'DIFFERS'}, live = replay "
                    f"{n if parted is None else parted} of {len(live)} tics")
 chocolate = os.path.join(work, "chocolate.things")
@@ -114,8 +123,15 @@ if os.path.exists(chocolate):
     theirs = blocks(chocolate)
     n = min(len(theirs), len(replay))
     parted = next((t for t in range(n) if theirs[t] != replay[t]), None)
-    bad |= parted is not None or n < tics
+    bad |= parted is not None or n < need
     results.append(f"Chocolate's replay = ours {n if parted is None else parted} of {len(replay)} tics")
+    if levels:  # Chocolate's replay goes on through the levels, as our live games did
+        for k in range(1, players):
+            live = blocks(os.path.join(work, f"live{k}.things"))
+            n = min(len(live), len(theirs))
+            parted = next((t for t in range(n) if live[t] != theirs[t]), None)
+            bad |= parted is not None or n <= len(replay)
+            results.append(f"client {k}'s live = Chocolate's replay {n if parted is None else parted} of {len(live)} level tics")
 print(f"{players} players, {mode}, {tics} tics, {float(drop):.0%} lost, {delay}-{2 * int(delay)} ms: " + "; ".join(results))
 sys.exit(1 if bad else 0)
 PY
