@@ -227,6 +227,7 @@ bool FrontEnd::load_slot(int slot) {
 // ---- keys
 
 void FrontEnd::key_down(int key) {
+  if (chat_key(key)) return;  // a chat line takes the keys, which then move nothing
   held_.insert(key);
   if (menu_) {
     const int ch = key > ' ' && key < 0x7f ? key : 0;
@@ -254,6 +255,12 @@ void FrontEnd::key_down(int key) {
 
 void FrontEnd::key_up(int key) { held_.erase(key); }
 
+play::TicCmd FrontEnd::command() {
+  play::TicCmd cmd = command_from_keys().cmd;
+  if (session_) cmd.chatchar = session_->chat().next_char();  // G_BuildTiccmd's HU_dequeueChatChar
+  return cmd;
+}
+
 void FrontEnd::text_menu_key(int key) {
   if (key == front::kKeyEscape) text_menu_.close();
   if (key == front::kKeyUp || key == 'w') text_menu_.up();
@@ -271,6 +278,41 @@ void FrontEnd::text_menu_key(int key) {
 
 // Keys in a level that Doom's menus did not take: the map's, the weapons, typed
 // cheats, and our own (renderers, the heads-up text, screenshots).
+// Doom's HU_Responder in a netgame: T starts a line to everyone, G, I, B or R to one
+// player (with three or more); while a line is typed every key is the chat's.
+bool FrontEnd::chat_key(int key) {
+  if (!session_ || state_ != State::kLevel || !netgame() || menu_active()) return false;
+  play::Chat& chat = session_->chat();
+  if (chat.typing()) {
+    const int ch = key == front::kKeyEnter ? play::Chat::kEnter
+                   : key == front::kKeyBackspace ? play::Chat::kBackspace
+                   : key == front::kKeyEscape ? play::Chat::kEscape
+                                             : key;
+    std::optional<std::string> sent;
+    const bool taken = chat.key(ch, &sent);
+    if (sent) say(*sent);  // Doom shows our own line as our message
+    (void)taken;           // a key the line has no use for reaches the game no more than the rest
+    return true;
+  }
+  if (session_->show_automap) return false;
+  if (key == 't') {
+    chat.start(play::Chat::kToEveryone);
+    return true;
+  }
+  const std::string colours = "gibr";  // green, indigo, brown, red
+  const size_t to = colours.find(char(key));
+  const play::World& w = session_->world();
+  const int players = int(std::count(w.options().in_game.begin(), w.options().in_game.end(), true));
+  if (to == std::string::npos || key == 0 || players <= 2) return false;
+  if (int(to) == w.options().console_player) {
+    say("You mumble to yourself");
+    return true;
+  }
+  if (!w.in_game(int(to))) return false;
+  chat.start(uint8_t(to + 1));
+  return true;
+}
+
 void FrontEnd::game_key(int key) {
   Session& s = *session_;
   if (key >= 'a' && key <= 'z') cheats_typed_ |= cheats_.type(char(key));

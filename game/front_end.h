@@ -74,8 +74,9 @@ class FrontEnd {
   bool waiting() const;
   bool paused() const { return paused_; }
   bool netgame() const;  // several players: the game never waits for this one's menu
-  // The command the keys held make (what tic() plays), for a netgame to send first.
-  play::TicCmd command() { return command_from_keys().cmd; }
+  // The command the keys held make (what tic() plays), for a netgame to send first,
+  // with the chat's next character.
+  play::TicCmd command();
   bool quit_requested() const { return quit_ && quit_delay_ == 0; }
   bool screenshot_requested() { return std::exchange(screenshot_, false); }
   // The settings changed since the last call (the window applies and saves them).
@@ -113,6 +114,7 @@ class FrontEnd {
   bool start_demo(const std::string& lump);
   void carry_out(const front::MenuRequest& r);
   void game_key(int key);
+  bool chat_key(int key);
   void text_menu_key(int key);
   play::DemoTic command_from_keys();
   void level_tic(const play::DemoTic& player);

@@ -232,7 +232,7 @@ uint64_t NetPlay::step(Session& session, const std::function<play::TicCmd()>& in
     if (s.low_res_turn) cmd.turn = low_res_turn(cmd.turn, turn_carry_);
     ours_[make_tic_ % net::kBackupTics] = cmd;
     const uint8_t check = consistency_[size_t(me)][make_tic_ % net::kBackupTics];
-    client_.send_tic({cmd.forward, cmd.side, cmd.turn, cmd.buttons, check, 0}, now_ms());
+    client_.send_tic({cmd.forward, cmd.side, cmd.turn, cmd.buttons, check, cmd.chatchar}, now_ms());
     ++make_tic_;
   }
   flush();
@@ -248,7 +248,7 @@ uint64_t NetPlay::step(Session& session, const std::function<play::TicCmd()>& in
         throw Error("netgame on " + options_.connect + ": consistency failure at tic " + std::to_string(game_tic_) +
                     " (player " + std::to_string(i + 1) + " sent " + std::to_string(c.consistancy) + ", here " +
                     std::to_string(consistency_[size_t(i)][slot]) + "): the games have parted");
-      others[size_t(i)] = {c.forward, c.side, c.turn, c.buttons};
+      others[size_t(i)] = {c.forward, c.side, c.turn, c.buttons, c.chatchar};
     }
     for (int i = 0; i < s.num_players && i < play::kMaxPlayers; ++i)
       if (i != me && !tic->in_game[size_t(i)] && session.world().in_game(i)) session.player_left(i);  // RunTic

@@ -194,6 +194,11 @@ void Session::tally_tic(const std::array<play::TicCmd, play::kMaxPlayers>& cmds)
 // What Doom's tickers do after the play: the messages, the face, sounds, the view.
 void Session::after_tic() {
   advance_message();
+  const play::GameOptions& o = world_->options();
+  if (const auto line = chat_.receive(last_commands_, o.in_game, o.console_player)) {  // HU_Ticker
+    say(*line);  // shown whatever the messages setting, as Doom's message_nottobefuckedwith
+    if (listening_) sounds_.push_back({map_name().rfind("MAP", 0) == 0 ? play::Sound::kRadio : play::Sound::kTink, 0, std::nullopt});
+  }
   face_.tic(other_random_, play::face_input(player()));
   if (show_messages)
     for (const std::string& m : world_->messages()) say(m);
@@ -319,9 +324,11 @@ const render::RenderStats& Session::render(render::Frame& frame, double alpha) {
   // Doom's message line, top left, in its own font; over a smaller view's border Doom
   // redraws the border after it while a menu is open (D_Display's R_DrawViewBorder).
   const bool border_hides = menu_over_border && window.height < frame.height - bar;
-  if (message_tics_ > 0 && doom_messages(frame) && !border_hides) {
+  if (doom_messages(frame) && !border_hides) {
     const int doom_scale = play::ScreenPlace::scale_for(frame.width, frame.height);
-    hud_font_->draw(frame, message_, 0, 0, doom_scale, 0, 0, palettes_[size_t(flash)]);
+    if (message_tics_ > 0) hud_font_->draw(frame, message_, 0, 0, doom_scale, 0, 0, palettes_[size_t(flash)]);
+    if (chat_.typing())  // Doom's w_chat, the line below the message's, with its cursor
+      hud_font_->draw(frame, chat_.line() + "_", 0, hud_font_->height() + 1, doom_scale, 0, 0, palettes_[size_t(flash)]);
   }
   if (!show_automap) probe_.order.clear();
   return stats_;

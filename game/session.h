@@ -20,6 +20,7 @@
 #include "engine/level/level.h"
 #include "engine/play/demo.h"
 #include "engine/play/hud_font.h"
+#include "engine/play/chat.h"
 #include "engine/play/intermission.h"
 #include "engine/play/tally_count.h"
 #include "engine/play/music.h"
@@ -88,6 +89,12 @@ class Session {
   void end_level(bool secret) { world_->exit_level(secret); }
   // Doom's M_Random, which the status bar's face and the screen's melt draw from.
   play::Random& screen_random() { return other_random_; }
+  // A netgame's chat: what our player types (its characters go out in our commands),
+  // and the other players' lines, shown on the message line as their tics arrive.
+  play::Chat& chat() { return chat_; }
+  const play::Chat& chat() const { return chat_; }
+  // The message line now ("" when it has faded).
+  std::string message() const { return message_tics_ > 0 ? message_ : std::string(); }
   // A tic in which the world waits (a menu open, or paused): what Doom's status bar
   // and message line do every tic still happens (the face glances, messages fade).
   void idle_tic();
@@ -278,6 +285,7 @@ class Session {
   std::vector<std::array<play::TicCmd, play::kMaxPlayers>> others_;  // play_other_players'
   size_t others_at_ = 0;
   std::array<play::TicCmd, play::kMaxPlayers> last_commands_{};
+  play::Chat chat_;
   std::vector<std::array<play::TicCmd, play::kMaxPlayers>> recorded_others_;  // while recording a netgame
 };
 

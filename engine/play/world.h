@@ -89,6 +89,7 @@ struct TicCmd {
   int8_t side = 0;     // > 0 to the right
   int16_t turn = 0;    // 1/65536 of a turn, > 0 to the left
   uint8_t buttons = 0;  // Doom's: attack 1, use 2, change weapon 4 with the weapon in bits 3..5, special 128
+  uint8_t chatchar = 0;  // a netgame's chat, a character a tic (engine/play/chat.h); no demo holds it
   friend bool operator==(const TicCmd&, const TicCmd&) = default;
 };
 enum TicButton : uint8_t {

@@ -326,5 +326,37 @@ TEST(Settings, AFailedSaveLeavesTheOldFile) {
   EXPECT_EQ(read_file_text(dir / "settings.cfg"), before);
 }
 
+// A netgame's chat from the keys: T starts a line, the letters go out one a tic in our
+// commands (Doom's HU_dequeueChatChar) and move no one meanwhile; the other node shows
+// the line with our colour when its enter arrives.
+TEST(FrontEnd, ChatFromTheKeysGoesOutInTheCommands) {
+  Settings settings;
+  GameFlags two;
+  two.players = {true, true, false, false};
+  FrontEnd f(std::make_unique<Session>(bsp::LevelSource{{}, {test::freedoom_path("freedoom2.wad")}, "MAP01"}, 3, two),
+             settings, {});
+  ASSERT_TRUE(f.netgame());
+  for (int key : std::initializer_list<int>{'t', 'h', 'w', 'i', front::kKeyEnter}) f.key_down(key), f.key_up(key);
+  EXPECT_EQ(f.session()->message(), "HWI") << "our own line, shown at once";
+  std::vector<uint8_t> sent;
+  for (int t = 0; t < 6; ++t) {
+    const play::TicCmd cmd = f.command();
+    EXPECT_EQ(cmd.forward, 0) << "'w' was the chat's";
+    sent.push_back(cmd.chatchar);
+  }
+  EXPECT_EQ(sent, (std::vector<uint8_t>{play::Chat::kToEveryone, 'H', 'W', 'I', play::Chat::kEnter, 0}));
+
+  GameFlags other = two;
+  other.console_player = 1;
+  Session s(bsp::LevelSource{{}, {test::freedoom_path("freedoom2.wad")}, "MAP01"}, 3, other);
+  for (uint8_t c : sent) {
+    std::array<play::TicCmd, play::kMaxPlayers> cmds{};
+    cmds[0].chatchar = c;
+    s.queue_other_players(cmds);
+    s.tic(play::TicCmd{});
+  }
+  EXPECT_EQ(s.message(), "Green: HWI");
+}
+
 }  // namespace
 }  // namespace p3d::game

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "engine/bsp/load.h"
+#include "engine/play/chat.h"
 #include "engine/play/intermission.h"
 #include "engine/play/tally_count.h"
 #include "engine/play/world.h"
@@ -349,6 +350,48 @@ TEST(Multiplayer, TheCoopIntermissionCountsEachPlayer) {
   EXPECT_TRUE(shows(frags_frame, "WIFRGS", x - 32 + 4 * 64 - width("WIFRGS"), 50));
   t.frags[1][0] = 0;
   EXPECT_TRUE(TallyCount(t, true, true).shown().show_frags) << "Doom's dofrags stays on from the last netgame tally";
+}
+
+// Doom's chat: a line typed by one player goes out a character a tic in its commands,
+// and shows on the other nodes when its enter arrives, to everyone or to one player.
+TEST(Multiplayer, ChatTravelsACharacterATicAndShowsWhereItIsMeantFor) {
+  Chat green, indigo, brown;
+  green.start(Chat::kToEveryone);
+  EXPECT_TRUE(green.typing());
+  for (int c : std::initializer_list<int>{'h', 'i', '!', '~', Chat::kBackspace, 'o', Chat::kEnter}) green.key(c);
+  EXPECT_FALSE(green.typing());
+  EXPECT_FALSE(green.key('x')) << "not typing";
+  const std::array<bool, kMaxPlayers> in_game{true, true, true, false};
+  std::optional<std::string> at_indigo, at_brown, at_green;
+  for (int t = 0; t < 10; ++t) {
+    std::array<TicCmd, kMaxPlayers> cmds{};
+    cmds[0].chatchar = green.next_char();
+    if (auto m = indigo.receive(cmds, in_game, 1)) at_indigo = m;
+    if (auto m = brown.receive(cmds, in_game, 2)) at_brown = m;
+    if (auto m = green.receive(cmds, in_game, 0)) at_green = m;
+  }
+  EXPECT_EQ(at_indigo, "Green: HIO") << "in upper case; '~' is no Doom letter; the backspace took the '!' back";
+  EXPECT_EQ(at_brown, at_indigo);
+  EXPECT_FALSE(at_green) << "not shown back to its writer by the tics";
+
+  Chat red;
+  red.start(2);  // to indigo only
+  for (int c : std::initializer_list<int>{'y', 'o', Chat::kEnter}) red.key(c);
+  std::optional<std::string> to_indigo, to_brown;
+  for (int t = 0; t < 5; ++t) {
+    std::array<TicCmd, kMaxPlayers> cmds{};
+    cmds[3].chatchar = red.next_char();
+    const std::array<bool, kMaxPlayers> four{true, true, true, true};
+    if (auto m = indigo.receive(cmds, four, 1)) to_indigo = m;
+    if (auto m = brown.receive(cmds, four, 2)) to_brown = m;
+  }
+  EXPECT_EQ(to_indigo, "Red: YO");
+  EXPECT_FALSE(to_brown) << "meant for indigo";
+  Chat quiet;
+  quiet.start(Chat::kToEveryone);
+  quiet.key('a');
+  quiet.key(Chat::kEscape);
+  EXPECT_FALSE(quiet.typing());
 }
 
 // Other players are drawn in their colours: the World shows each player's colour bits,
