@@ -86,6 +86,7 @@ front::MenuContext FrontEnd::menu_context() const {
   c.mode = mode_;
   c.user_game = user_game_;
   c.in_level = state_ == State::kLevel && session_ && !session_->in_intermission();
+  c.netgame = netgame();
   c.automap = session_ && session_->show_automap;
   c.game_tic = game_tic_;
   return c;
@@ -247,7 +248,8 @@ void FrontEnd::key_down(int key) {
     return;
   }
   if (key == front::kKeyPause) {
-    if (!netgame()) paused_ = !paused_;
+    if (netgame()) send_pause_ = true;  // every node pauses at the tic our command says so
+    else paused_ = !paused_;
     return;
   }
   if (state_ == State::kLevel) game_key(key);
@@ -258,6 +260,8 @@ void FrontEnd::key_up(int key) { held_.erase(key); }
 play::TicCmd FrontEnd::command() {
   play::TicCmd cmd = command_from_keys().cmd;
   if (session_) cmd.chatchar = session_->chat().next_char();  // G_BuildTiccmd's HU_dequeueChatChar
+  if (std::exchange(send_pause_, false)) cmd.buttons = play::kBtSpecial | play::kBtsPause;
+  if (net_save_) cmd.buttons = uint8_t(play::kBtSpecial | play::kBtsSaveGame | (*std::exchange(net_save_, std::nullopt) << play::kBtsSaveShift));
   return cmd;
 }
 
@@ -353,7 +357,14 @@ void FrontEnd::carry_out(const front::MenuRequest& r) {
     case Kind::kNewGame:
     case Kind::kLoadGame:
     case Kind::kEndGame: game_action_ = r; break;  // at the next tic, as Doom's gameaction
-    case Kind::kSaveGame: save_slot(r.slot, r.text); break;
+    case Kind::kSaveGame:
+      if (netgame()) {  // Doom's G_SaveGame: every node saves when our command with it runs
+        net_save_ = r.slot;
+        net_save_description_ = r.text;
+      } else {
+        save_slot(r.slot, r.text);
+      }
+      break;
     case Kind::kQuit:
       quit_ = true;
       quit_delay_ = kQuitSoundTics;
@@ -432,6 +443,11 @@ void FrontEnd::tic(const play::DemoTic& player) {
   ++game_tic_;
   if (menu_) menu_->tic();
   if (quit_ && quit_delay_ > 0) --quit_delay_;
+  if (session_ && netgame())  // a save some player asked for at the last tic (Doom's ga_savegame)
+    if (const std::optional<int> slot = session_->take_save_request()) {
+      save_slot(*slot, net_save_description_.empty() ? "NET GAME" : net_save_description_);
+      net_save_description_.clear();
+    }
   if (const std::optional<front::MenuRequest> action = std::exchange(game_action_, std::nullopt)) {
     using Kind = front::MenuRequest::Kind;  // Doom's G_Ticker: the game action first, then the tic
     if (action->kind == Kind::kNewGame) new_game(action->episode, 1, action->skill);
@@ -599,7 +615,7 @@ void FrontEnd::draw_menus(render::Frame& frame) const {
     if (text_menu_.is_open()) draw_text_menu(frame);
     return;
   }
-  if (paused_ && state_ == State::kLevel) {
+  if (paused() && state_ == State::kLevel) {
     // M_PAUSE across the view window's top, in Doom's screen (at the top with the map).
     const int blocks = std::min(settings_.menu.screen_blocks, 10);
     const int width = blocks * 32, height = (blocks * 168 / 10) & ~7;

@@ -72,7 +72,7 @@ class FrontEnd {
   bool in_level() const { return state_ == State::kLevel && session_; }
   // The game waits (menu open in a game, or paused): the window stops its tic clock.
   bool waiting() const;
-  bool paused() const { return paused_; }
+  bool paused() const { return paused_ || (session_ && session_->paused()); }
   bool netgame() const;  // several players: the game never waits for this one's menu
   // The command the keys held make (what tic() plays), for a netgame to send first,
   // with the chat's next character.
@@ -147,6 +147,10 @@ class FrontEnd {
   std::unique_ptr<Session> session_;
   bool user_game_ = false;  // Doom's usergame: the player's own game, which saves and ends
   bool paused_ = false;
+  // A netgame's pause and save go out in our next command (Doom's sendpause, sendsave).
+  bool send_pause_ = false;
+  std::optional<int> net_save_;
+  std::string net_save_description_;  // ours, for the save when it comes back (Doom's savedescription)
   std::string page_;
   int page_tics_ = 0;
   std::vector<play::DemoTic> demo_;  // the title loop's demo being shown

@@ -150,7 +150,7 @@ int main(int argc, char** argv) {
   app.add_option("--capture-every", capture_every, "--headless: tics between captured frames")
       ->check(cli::Range(1, 1 << 20))
       ->capture_default_str();
-  app.add_option("--out", out_dir, "--headless: directory for the frames and stats.csv");
+  app.add_option("--out", out_dir, "--headless: directory for the frames and stats.csv (a netgame's saves: DIR/savegames)");
   app.add_flag("--json", json, "--headless --play: also stats.json, the same statistics by name");
   app.add_flag("--stats-only", stats_only, "--headless --play: stats.csv alone, no frames drawn (as fast as the rules run)");
   std::vector<std::pair<size_t, std::string>> save_at, load_at;
@@ -308,6 +308,7 @@ int main(int argc, char** argv) {
       n.long_tics = long_tics;
       n.settings = net_settings(source, skill, flags);
       n.wait_seconds = headless ? 60 : 0;  // a script waits a minute for the others; a player as long as it takes
+      if (headless && !out_dir.empty()) n.save_dir = std::filesystem::path(out_dir) / "savegames";  // never the player's slots
     }
     if (!connect.empty() && headless) {
       const std::vector<play::TicCmd> input = net_input.empty() ? std::vector<play::TicCmd>{} : console_tics(net_input, source);

@@ -286,7 +286,9 @@ uint64_t play_netgame_headless(const bsp::LevelSource& source, const NetGameOpti
   // Doom's front end runs the tics, as in the window: the level, the tally between
   // levels (which every player's press hurries on) and the finales.
   Settings settings;
-  FrontEnd front(std::make_unique<Session>(net.level_source(), net.skill(), net.flags()), settings, {});
+  FrontEndOptions front_options;
+  front_options.save_dir = o.save_dir;
+  FrontEnd front(std::make_unique<Session>(net.level_source(), net.skill(), net.flags()), settings, front_options);
   Session& session = *front.session();
   if (!o.record.empty()) session.start_recording(true, o.long_tics);
   const auto ours = [&] { return input(net.tics_made()); };

@@ -70,6 +70,7 @@ struct NetGameOptions {
   int wait_seconds = 0;          // for the game to start (0: as long as the server is there)
   std::filesystem::path record;  // every player's commands as a Doom demo (.lmp), if named
   bool long_tics = false;        // the demo in v1.91's long tics (Chocolate's -longtics)
+  std::filesystem::path save_dir;  // headless: where the game's saves go (every player's); empty: none
 };
 
 // The commands of our player, tic by tic (the caller's input, a demo's, or nothing).

@@ -167,8 +167,14 @@ void Session::tic(const play::DemoTic& tic) {
     if (several) recorded_others_.push_back(last_commands_);
     recording_.tics.push_back(played);
   }
+  special_buttons();
   if (tally_count_) return tally_tic(last_commands_);
   if (world_->exit() != play::ExitKind::kNone) return;  // the level is over: waiting for the next one
+  if (paused_) {  // Doom's P_Ticker waits; the status bar and the chat do not
+    idle_tic();
+    hear_chat();
+    return;
+  }
   if (!netgame && player().state == play::PlayerState::kReborn) {  // Doom's G_DoReborn: the level from its start
     random_ = world_->random();
     start_world(nullptr);
@@ -183,6 +189,25 @@ void Session::tic(const play::DemoTic& tic) {
   after_tic();
 }
 
+// HU_Ticker's part for the chat: the other players' characters of this tic.
+void Session::hear_chat() {
+  const play::GameOptions& o = world_->options();
+  const auto line = chat_.receive(last_commands_, o.in_game, o.console_player);
+  if (!line) return;
+  say(*line);  // shown whatever the messages setting, as Doom's message_nottobefuckedwith
+  if (listening_) sounds_.push_back({map_name().rfind("MAP", 0) == 0 ? play::Sound::kRadio : play::Sound::kTink, 0, std::nullopt});
+}
+
+// G_Ticker's special buttons, of every player in the game, whatever the screen.
+void Session::special_buttons() {
+  for (int i = 0; i < play::kMaxPlayers; ++i) {
+    const uint8_t b = last_commands_[size_t(i)].buttons;
+    if (!world_->in_game(i) || !(b & play::kBtSpecial)) continue;
+    if ((b & 3) == play::kBtsPause) paused_ = !paused_;
+    if ((b & 3) == play::kBtsSaveGame) save_request_ = (b & play::kBtsSaveMask) >> play::kBtsSaveShift;
+  }
+}
+
 // Doom's WI_Ticker: the count goes on (no other ticker runs), its sounds heard.
 void Session::tally_tic(const std::array<play::TicCmd, play::kMaxPlayers>& cmds) {
   tally_count_->tic(*world_, cmds);
@@ -194,11 +219,7 @@ void Session::tally_tic(const std::array<play::TicCmd, play::kMaxPlayers>& cmds)
 // What Doom's tickers do after the play: the messages, the face, sounds, the view.
 void Session::after_tic() {
   advance_message();
-  const play::GameOptions& o = world_->options();
-  if (const auto line = chat_.receive(last_commands_, o.in_game, o.console_player)) {  // HU_Ticker
-    say(*line);  // shown whatever the messages setting, as Doom's message_nottobefuckedwith
-    if (listening_) sounds_.push_back({map_name().rfind("MAP", 0) == 0 ? play::Sound::kRadio : play::Sound::kTink, 0, std::nullopt});
-  }
+  hear_chat();
   face_.tic(other_random_, play::face_input(player()));
   if (show_messages)
     for (const std::string& m : world_->messages()) say(m);

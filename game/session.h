@@ -93,6 +93,12 @@ class Session {
   // and the other players' lines, shown on the message line as their tics arrive.
   play::Chat& chat() { return chat_; }
   const play::Chat& chat() const { return chat_; }
+  // A netgame's pause and saves travel in the commands (Doom's BT_SPECIAL): each node
+  // pauses its world, or saves, at the tic one arrives, whoever sent it. The slot a
+  // save was asked for, once: the caller saves it before the next tic (Doom's
+  // ga_savegame).
+  bool paused() const { return paused_; }
+  std::optional<int> take_save_request() { return std::exchange(save_request_, std::nullopt); }
   // The message line now ("" when it has faded).
   std::string message() const { return message_tics_ > 0 ? message_ : std::string(); }
   // A tic in which the world waits (a menu open, or paused): what Doom's status bar
@@ -237,6 +243,8 @@ class Session {
   void start_world(const std::array<play::Player, play::kMaxPlayers>* carried);
   void after_tic();
   void tally_tic(const std::array<play::TicCmd, play::kMaxPlayers>& cmds);
+  void special_buttons();
+  void hear_chat();
   std::array<play::TicCmd, play::kMaxPlayers> take_commands(const play::TicCmd& console);
   void keep_sounds();  // the tic's, placed
   void choose_music(const std::string& map_name);  // "" for a level that is no Doom map
@@ -286,6 +294,8 @@ class Session {
   size_t others_at_ = 0;
   std::array<play::TicCmd, play::kMaxPlayers> last_commands_{};
   play::Chat chat_;
+  bool paused_ = false;               // by a special button (a netgame's pause)
+  std::optional<int> save_request_;   // by a special button: the slot
   std::vector<std::array<play::TicCmd, play::kMaxPlayers>> recorded_others_;  // while recording a netgame
 };
 

@@ -302,7 +302,13 @@ bool Menu::menu_key(int key, int ch) {
 
 // ---- the routines
 
-void Menu::new_game(int) { setup_next(mode_ == GameMode::kCommercial ? Page::kNewGame : Page::kEpisode); }
+void Menu::new_game(int) {
+  if (context_.netgame) {
+    start_message(doom_text(kNewGameInNetgame), nullptr, false);
+    return;
+  }
+  setup_next(mode_ == GameMode::kCommercial ? Page::kNewGame : Page::kEpisode);
+}
 
 void Menu::episode(int choice) {
   if (mode_ == GameMode::kShareware && choice) {
@@ -340,6 +346,10 @@ void Menu::options(int) { setup_next(Page::kOptions); }
 void Menu::end_game(int) {
   if (!context_.user_game) {
     sound(play::Sound::kOof);
+    return;
+  }
+  if (context_.netgame) {
+    start_message(doom_text(kEndNetgame), nullptr, false);
     return;
   }
   start_message(doom_text(kEndGameQuestion), &Menu::end_game_response, true);
@@ -399,6 +409,10 @@ void Menu::read_slots() {
 }
 
 void Menu::load_game(int) {
+  if (context_.netgame) {
+    start_message(doom_text(kLoadInNetgame), nullptr, false);
+    return;
+  }
   setup_next(Page::kLoad);
   read_slots();
 }
@@ -455,6 +469,10 @@ void Menu::quick_save_response(int key) {
 }
 
 void Menu::quick_load() {
+  if (context_.netgame) {
+    start_message(doom_text(kQuickLoadInNetgame), nullptr, false);
+    return;
+  }
   if (quick_save_slot_ < 0) {
     start_message(doom_text(kQuickSaveSpot), nullptr, false);
     return;

@@ -58,6 +58,7 @@ struct MenuContext {
   GameMode mode = GameMode::kCommercial;
   bool user_game = false;      // a game the player started or loaded (Doom's usergame): saving and ending allowed
   bool in_level = false;       // Doom's gamestate == GS_LEVEL
+  bool netgame = false;        // no new game, load or end then; a save is every player's
   bool automap = false;        // the screen-size keys belong to the map then
   uint64_t game_tic = 0;       // Doom's gametic: picks the quit message and its sound
 };

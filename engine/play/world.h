@@ -99,6 +99,11 @@ enum TicButton : uint8_t {
   kBtWeaponShift = 3,
   kBtWeaponMask = 7 << 3,
   kBtSpecial = 128,
+  // With kBtSpecial (Doom's BT_SPECIALMASK 3): what every node does at that tic.
+  kBtsPause = 1,
+  kBtsSaveGame = 2,
+  kBtsSaveShift = 2,         // the save's slot, 0..5
+  kBtsSaveMask = 7 << 2,
 };
 
 // Everything that thinks: things and the sectors' movers and lights.

@@ -155,6 +155,26 @@ TEST(Menu, QuitPicksItsMessageAndSoundByTheTic) {
   }
 }
 
+// Doom's menu in a netgame: no load, quickload, new game or end (M_LoadGame's LOADNET...).
+TEST(Menu, ANetgameCannotBeLoadedOverStartedAgainOrEnded) {
+  MenuFixture f;
+  f.context.user_game = f.context.in_level = f.context.netgame = true;
+  auto says = [&](int key, const std::string& text) {
+    f.press(key);
+    const bool shown = f.menu.message() && f.menu.message()->rfind(text, 0) == 0;
+    f.press(' ');
+    if (f.menu.active()) f.press(kKeyEscape);
+    return shown;
+  };
+  EXPECT_TRUE(says(kKeyF3, "you can't do load while in a net game!"));
+  EXPECT_TRUE(says(kKeyF9, "you can't quickload during a netgame!"));
+  EXPECT_TRUE(says(kKeyF7, "you can't end a netgame!"));
+  f.press(kKeyEscape);
+  EXPECT_TRUE(says(kKeyEnter, "you can't start a new game")) << "the main menu's first item";
+  f.press(kKeyF2);
+  EXPECT_EQ(f.menu.screen().page, Menu::Page::kSave) << "saving is allowed: every player's node saves";
+}
+
 TEST(Menu, SavingNeedsAGameAndTypesAnUpperCaseDescription) {
   MenuFixture f;
   f.press(kKeyF2);

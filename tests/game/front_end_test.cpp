@@ -358,5 +358,54 @@ TEST(FrontEnd, ChatFromTheKeysGoesOutInTheCommands) {
   EXPECT_EQ(s.message(), "Green: HWI");
 }
 
+// A netgame's pause and save go out in our command as Doom's special buttons: every
+// node pauses at the tic that carries one, and saves (ours with our description, the
+// other's as "NET GAME") before the next.
+TEST(FrontEnd, ANetgamesPauseAndSaveTravelInTheCommands) {
+  const auto dir = test::temp_dir("netgame-save");
+  Settings settings;
+  GameFlags two;
+  two.players = {true, true, false, false};
+  const bsp::LevelSource map01{{}, {test::freedoom_path("freedoom2.wad")}, "MAP01"};
+  FrontEndOptions ours_options, theirs_options;
+  ours_options.save_dir = dir / "ours";
+  theirs_options.save_dir = dir / "theirs";
+  GameFlags other = two;
+  other.console_player = 1;
+  FrontEnd ours(std::make_unique<Session>(map01, 3, two), settings, ours_options);
+  FrontEnd theirs(std::make_unique<Session>(map01, 3, other), settings, theirs_options);
+  // One tic of both nodes: each one's command, the other's queued beside it.
+  auto tic = [&] {
+    const play::TicCmd a = ours.command(), b = theirs.command();
+    ours.session()->queue_other_players({a, b, {}, {}});
+    theirs.session()->queue_other_players({a, b, {}, {}});
+    ours.tic({a, 0});
+    theirs.tic({b, 0});
+  };
+  tic();
+  ours.key_down(front::kKeyPause);
+  tic();
+  EXPECT_TRUE(ours.paused() && theirs.paused()) << "both, at the tic our command says so";
+  EXPECT_FALSE(ours.waiting()) << "the lockstep goes on";
+  const int level_time = theirs.session()->world().level_time();
+  tic();
+  EXPECT_EQ(theirs.session()->world().level_time(), level_time) << "the worlds wait";
+  theirs.key_down(front::kKeyPause);
+  tic();
+  EXPECT_FALSE(ours.paused() || theirs.paused()) << "either player's pause ends it";
+
+  ours.key_down(front::kKeyF2);
+  ours.key_down(front::kKeyEnter);  // slot 0
+  for (int key : std::initializer_list<int>{'u', 's', front::kKeyEnter}) ours.key_down(key);
+  EXPECT_FALSE(std::filesystem::exists(ours.slot_path(0))) << "not before the command runs";
+  tic();
+  tic();  // saved before this one, as Doom's ga_savegame
+  ASSERT_TRUE(std::filesystem::exists(ours.slot_path(0)));
+  ASSERT_TRUE(std::filesystem::exists(theirs.slot_path(0)));
+  EXPECT_EQ(Session::save_description(read_file_bytes(ours.slot_path(0))), "US");
+  EXPECT_EQ(Session::save_description(read_file_bytes(theirs.slot_path(0))), "NET GAME");
+  EXPECT_EQ(read_file_bytes(ours.slot_path(0)).size(), read_file_bytes(theirs.slot_path(0)).size());
+}
+
 }  // namespace
 }  // namespace p3d::game

@@ -11,24 +11,30 @@
 #
 #   tools/peers/netgame_peers.sh [--players 2..4] [--deathmatch|--altdeath] [--tics N]
 #       [--timer MINUTES] [--drop P] [--delay-ms MS] [--iwad WAD] [--map N]
-#       [--build DIR | --game PROGRAM] [--patched CHOCOLATE]
+#       [--build DIR | --game PROGRAM] [--patched CHOCOLATE] [--save-at TIC]
 #
 # With --timer the level ends after that many minutes and the game goes on through the
 # tally (every player's press hurries it) into the next map: the demos then hold both
 # levels, and the replays, which end at the first exit, are compared up to there.
+# With --save-at our first client's command at that tic asks for a save (Doom's
+# BT_SPECIAL | BTS_SAVEGAME, slot 0): every node saves. Loaded after that tic into our
+# replay of the demo, Chocolate Doom's save and the Doom part of each of ours must give
+# the same game to the end (Doom's load is not exact: neither goes on as the demo did),
+# and each of ours whole (with our extension) must go on exactly as the demo.
 #
 # Needs Debian's chocolate-doom (chocolate-doom, chocolate-server) and freedoom; prints
 # one line of results and exits 1 if anything differs. Without --patched, Chocolate's
 # replay is not compared.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-players=2 mode="" timer="" tics=350 drop=0.05 delay=30 iwad=/usr/share/games/doom/freedoom2.wad map=1 game=build/game/pseudo3d
+players=2 mode="" timer="" save_at="" tics=350 drop=0.05 delay=30 iwad=/usr/share/games/doom/freedoom2.wad map=1 game=build/game/pseudo3d
 patched=""
 while [ $# -gt 0 ]; do
   case $1 in
     --players) players=$2; shift 2 ;;
     --deathmatch|--altdeath) mode=${1#-}; shift ;;  # Chocolate spells it -deathmatch
     --tics) tics=$2; shift 2 ;;
+    --save-at) save_at=$2; shift 2 ;;
     --timer) timer="-timer $2"; shift 2 ;;
     --drop) drop=$2; shift 2 ;;
     --delay-ms) delay=$2; shift 2 ;;
@@ -75,8 +81,14 @@ for ((k = 1; k < players; ++k)); do
     --delay-ms "$delay" --jitter-ms "$delay" --seed "$k" 2>"$work/relay$k.log" &
   pids+=($!)
   python3 tools/peers/random_demo.py --map "$map_name" --skill 3 --tics "$tics" --seed "$((k + 10))" -o "$work/input$k.lmp"
+  if [ -n "$save_at" ] && [ "$k" = 1 ]; then  # the tic's buttons: BT_SPECIAL | BTS_SAVEGAME, slot 0
+    python3 -c "
+import sys; p = sys.argv[1]; d = bytearray(open(p, 'rb').read()); d[13 + 4 * int(sys.argv[2]) + 3] = 0x82
+open(p, 'wb').write(d)" "$work/input$k.lmp" "$save_at"
+  fi
   "$game" --iwad "$iwad" --headless --connect "127.0.0.1:${ports[$k]}" --net-input "$work/input$k.lmp" \
-    --quit-after-tics "$tics" --dump-things "$work/live$k.things" --record "$work/ours$k.lmp" >"$work/ours$k.log" 2>&1 &
+    --quit-after-tics "$tics" --dump-things "$work/live$k.things" --record "$work/ours$k.lmp" --out "$work/out$k" \
+    >"$work/ours$k.log" 2>&1 &
   ours+=($!)
 done
 status=0
@@ -93,10 +105,23 @@ if [ -n "$patched" ]; then
   (cd "$work" && env HOME="$work" SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy P3D_DUMP="$work/chocolate.things" \
     "$patched" -iwad "$iwad" -timedemo "$work/choc.lmp" $timer -nodraw -nosound -nomusic >/dev/null 2>&1) || true
 fi
-python3 - "$work" "$players" "$tics" "$drop" "$delay" "${mode:-coop}" "$timer" <<'PY'
-import os, sys
+if [ -n "$save_at" ]; then
+  load_into_replay() {  # SAVE THINGS [--load-doom-only]
+    "$game" --iwad "$iwad" --play "$work/choc.lmp" "${replay_timer[@]}" --headless --stats-only \
+      --load-at "$save_at" "$1" ${3:-} --dump-things "$2" --out "$work/load" >/dev/null 2>&1 || true
+  }
+  choc_save=$(find "$work/.local" -name doomsav0.dsg | head -n 1)
+  [ -n "$choc_save" ] && load_into_replay "$choc_save" "$work/load_choc.things" --load-doom-only
+  for ((k = 1; k < players; ++k)); do
+    load_into_replay "$work/out$k/savegames/doomsav0.dsg" "$work/load_doom$k.things" --load-doom-only
+    load_into_replay "$work/out$k/savegames/doomsav0.dsg" "$work/load_ours$k.things"
+  done
+fi
+python3 - "$work" "$players" "$tics" "$drop" "$delay" "${mode:-coop}" "$timer" "$save_at" <<'PY'
+import glob, os, sys
 work, players, tics, drop, delay, mode = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4], sys.argv[5], sys.argv[6]
 levels = bool(sys.argv[7])  # --timer: the replays end at the first exit, the game goes on
+save_at = sys.argv[8]
 def blocks(path):
     out, cur = [], None
     for line in open(path):
@@ -132,6 +157,18 @@ if os.path.exists(chocolate):
             parted = next((t for t in range(n) if live[t] != theirs[t]), None)
             bad |= parted is not None or n <= len(replay)
             results.append(f"client {k}'s live = Chocolate's replay {n if parted is None else parted} of {len(live)} level tics")
+if save_at:
+    def loaded(name):
+        path = os.path.join(work, name)
+        return blocks(path) if os.path.exists(path) else []
+    theirs = loaded("load_choc.things")
+    for k in range(1, players):
+        doom, whole = loaded(f"load_doom{k}.things"), loaded(f"load_ours{k}.things")
+        same_load = bool(theirs) and doom == theirs
+        exact = len(whole) == len(replay) and whole == replay
+        bad |= not same_load or not exact
+        results.append(f"client {k}'s save at tic {save_at}: loads as Chocolate's "
+                       f"{'does' if same_load else 'DOES NOT'}, goes on as the demo {'yes' if exact else 'NO'}")
 print(f"{players} players, {mode}, {tics} tics, {float(drop):.0%} lost, {delay}-{2 * int(delay)} ms: " + "; ".join(results))
 sys.exit(1 if bad else 0)
 PY
