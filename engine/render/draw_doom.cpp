@@ -597,9 +597,10 @@ void Canvas::doom_draw_masked(int x, const Step& m) {
   const doom::Tables& t = *doom_;
   const DoomSide& ds = doom_side(m);
   const Fixed scale = doom::scale_at(t, ds.seg, view_->fangle, x, ds.precision.max_scale);
+  // Heights at the map's limits less the eye wrap, as Doom's fixed_t did.
   Fixed mid = (w.flags & level::kUnpegLower)
-                  ? fixed_of(std::max(s.floor, b.floor)) + (Fixed(tex.height) << kFracBits) - view_->fz
-                  : fixed_of(std::min(s.ceiling, b.ceiling)) - view_->fz;
+                  ? play::wrap_sub(play::wrap_add(fixed_of(std::max(s.floor, b.floor)), Fixed(tex.height) << kFracBits), view_->fz)
+                  : play::wrap_sub(fixed_of(std::min(s.ceiling, b.ceiling)), view_->fz);
   mid = play::wrap_add(mid, fixed_of(side.y_offset + level_->part_y(side, level::kMiddlePart)));
   const Fixed column = play::wrap_add(doom::texture_column(t, ds.seg, x),
                                       fixed_of(side.x_offset + level_->part_x(side, level::kMiddlePart) +
