@@ -76,7 +76,7 @@ void FrontEnd::start(const bsp::LevelSource& wads) {
 
 bool FrontEnd::playing() const { return state_ == State::kLevel && session_ && user_game_; }
 
-// A netgame goes on under the menu, as Doom's (its pause would be every player's).
+// A netgame goes on under the menu, as Doom's; its pause is every node's (Session::paused).
 bool FrontEnd::waiting() const { return paused_ || (menu_active() && playing() && !netgame()); }
 
 bool FrontEnd::netgame() const { return session_ && session_->world().options().netgame && !options_.watching; }
@@ -280,8 +280,6 @@ void FrontEnd::text_menu_key(int key) {
   }
 }
 
-// Keys in a level that Doom's menus did not take: the map's, the weapons, typed
-// cheats, and our own (renderers, the heads-up text, screenshots).
 // Doom's HU_Responder in a netgame: T starts a line to everyone, G, I, B or R to one
 // player (with three or more); while a line is typed every key is the chat's.
 bool FrontEnd::chat_key(int key) {
@@ -293,9 +291,8 @@ bool FrontEnd::chat_key(int key) {
                    : key == front::kKeyEscape ? play::Chat::kEscape
                                              : key;
     std::optional<std::string> sent;
-    const bool taken = chat.key(ch, &sent);
+    chat.key(ch, &sent);  // a key the line has no use for reaches the game no more than the rest
     if (sent) say(*sent);  // Doom shows our own line as our message
-    (void)taken;           // a key the line has no use for reaches the game no more than the rest
     return true;
   }
   if (session_->show_automap) return false;
@@ -304,10 +301,10 @@ bool FrontEnd::chat_key(int key) {
     return true;
   }
   const std::string colours = "gibr";  // green, indigo, brown, red
-  const size_t to = colours.find(char(key));
+  const size_t to = key > 0 && key < 0x80 ? colours.find(char(key)) : std::string::npos;
   const play::World& w = session_->world();
   const int players = int(std::count(w.options().in_game.begin(), w.options().in_game.end(), true));
-  if (to == std::string::npos || key == 0 || players <= 2) return false;
+  if (to == std::string::npos || players <= 2) return false;
   if (int(to) == w.options().console_player) {
     say("You mumble to yourself");
     return true;
@@ -317,6 +314,8 @@ bool FrontEnd::chat_key(int key) {
   return true;
 }
 
+// Keys in a level that Doom's menus did not take: the map's, the weapons, typed
+// cheats, and our own (renderers, the heads-up text, screenshots).
 void FrontEnd::game_key(int key) {
   Session& s = *session_;
   if (key >= 'a' && key <= 'z') cheats_typed_ |= cheats_.type(char(key));
