@@ -194,7 +194,10 @@ void Session::hear_chat() {
   const play::GameOptions& o = world_->options();
   const auto line = chat_.receive(last_commands_, o.in_game, o.console_player);
   if (!line) return;
-  say(*line);  // shown whatever the messages setting, as Doom's message_nottobefuckedwith
+  const std::string name = play::kChatNames[size_t(line->player)];
+  const auto reworded = o.texts.find(name);  // the WAD's DEHACKED name (Freedoom's "g:")
+  // Shown whatever the messages setting, as Doom's message_nottobefuckedwith.
+  say((reworded != o.texts.end() ? reworded->second : name) + line->text);
   if (listening_) sounds_.push_back({map_name().rfind("MAP", 0) == 0 ? play::Sound::kRadio : play::Sound::kTink, 0, std::nullopt});
 }
 

@@ -6,7 +6,6 @@ namespace {
 
 constexpr size_t kMaxLine = 80;       // HU_MAXLINELENGTH
 constexpr size_t kMaxQueued = 128;    // QUEUESIZE
-constexpr const char* kNames[kMaxPlayers] = {"Green: ", "Indigo: ", "Brown: ", "Red: "};  // HUSTR_PLRGREEN...
 
 // HUlib_keyInIText: Doom's letters ' ' to '_', backspace and enter; false for the rest.
 bool key_in_line(std::string& line, int ch) {
@@ -51,9 +50,9 @@ uint8_t Chat::next_char() {
   return c;
 }
 
-std::optional<std::string> Chat::receive(const std::array<TicCmd, kMaxPlayers>& cmds,
-                                         const std::array<bool, kMaxPlayers>& in_game, int console_player) {
-  std::optional<std::string> shown;
+std::optional<Chat::Line> Chat::receive(const std::array<TicCmd, kMaxPlayers>& cmds,
+                                        const std::array<bool, kMaxPlayers>& in_game, int console_player) {
+  std::optional<Line> shown;
   for (int i = 0; i < kMaxPlayers; ++i) {
     const uint8_t c = cmds[size_t(i)].chatchar;
     if (!in_game[size_t(i)] || i == console_player || !c) continue;
@@ -64,7 +63,7 @@ std::optional<std::string> Chat::receive(const std::array<TicCmd, kMaxPlayers>& 
     std::string& line = incoming_[size_t(i)];
     if (!key_in_line(line, c) || c != kEnter) continue;
     const uint8_t to = destination_[size_t(i)];
-    if (!line.empty() && (to == console_player + 1 || to == kToEveryone)) shown = kNames[i] + line;
+    if (!line.empty() && (to == console_player + 1 || to == kToEveryone)) shown = Line{i, line};
     line.clear();
   }
   return shown;

@@ -2,7 +2,7 @@
 // travels a character a tic in its commands (the ticcmd's chatchar, which the protocol
 // carries and demos do not), to everyone or to one player; each node gathers the
 // others' characters into their lines and shows a finished line meant for it on the
-// message line, with the player's colour for a name. Nothing of it touches the play.
+// message line after the player's name. Nothing of it touches the play.
 #pragma once
 
 #include <array>
@@ -14,6 +14,10 @@
 #include "engine/play/world.h"
 
 namespace p3d::play {
+
+// Doom's English for each player's name before a line (HUSTR_PLRGREEN...), which a
+// WAD's DEHACKED may reword (Freedoom's "g:").
+inline constexpr std::array<const char*, kMaxPlayers> kChatNames = {"Green: ", "Indigo: ", "Brown: ", "Red: "};
 
 class Chat {
  public:
@@ -31,9 +35,13 @@ class Chat {
   // The next character for this tic's command (HU_dequeueChatChar), 0 for none.
   uint8_t next_char();
   // The other players' characters of this tic (HU_Ticker): a finished line for us or
-  // everyone comes back as "Green: TEXT".
-  std::optional<std::string> receive(const std::array<TicCmd, kMaxPlayers>& cmds, const std::array<bool, kMaxPlayers>& in_game,
-                                     int console_player);
+  // everyone comes back with its writer, to be shown after the writer's name.
+  struct Line {
+    int player = 0;
+    std::string text;
+  };
+  std::optional<Line> receive(const std::array<TicCmd, kMaxPlayers>& cmds, const std::array<bool, kMaxPlayers>& in_game,
+                              int console_player);
 
  private:
   bool typing_ = false;

@@ -328,7 +328,7 @@ TEST(Settings, AFailedSaveLeavesTheOldFile) {
 
 // A netgame's chat from the keys: T starts a line, the letters go out one a tic in our
 // commands (Doom's HU_dequeueChatChar) and move no one meanwhile; the other node shows
-// the line with our colour when its enter arrives.
+// the line after our name (as the WAD words it) when its enter arrives.
 TEST(FrontEnd, ChatFromTheKeysGoesOutInTheCommands) {
   Settings settings;
   GameFlags two;
@@ -355,7 +355,7 @@ TEST(FrontEnd, ChatFromTheKeysGoesOutInTheCommands) {
     s.queue_other_players(cmds);
     s.tic(play::TicCmd{});
   }
-  EXPECT_EQ(s.message(), "Green: HWI");
+  EXPECT_EQ(s.message(), "g:HWI") << "Freedoom's DEHACKED names green g:, as Chocolate Doom shows it";
 }
 
 // A netgame's pause and save go out in our command as Doom's special buttons: every

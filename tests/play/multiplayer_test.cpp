@@ -362,7 +362,7 @@ TEST(Multiplayer, ChatTravelsACharacterATicAndShowsWhereItIsMeantFor) {
   EXPECT_FALSE(green.typing());
   EXPECT_FALSE(green.key('x')) << "not typing";
   const std::array<bool, kMaxPlayers> in_game{true, true, true, false};
-  std::optional<std::string> at_indigo, at_brown, at_green;
+  std::optional<Chat::Line> at_indigo, at_brown, at_green;
   for (int t = 0; t < 10; ++t) {
     std::array<TicCmd, kMaxPlayers> cmds{};
     cmds[0].chatchar = green.next_char();
@@ -370,14 +370,16 @@ TEST(Multiplayer, ChatTravelsACharacterATicAndShowsWhereItIsMeantFor) {
     if (auto m = brown.receive(cmds, in_game, 2)) at_brown = m;
     if (auto m = green.receive(cmds, in_game, 0)) at_green = m;
   }
-  EXPECT_EQ(at_indigo, "Green: HIO") << "in upper case; '~' is no Doom letter; the backspace took the '!' back";
-  EXPECT_EQ(at_brown, at_indigo);
+  ASSERT_TRUE(at_indigo && at_brown);
+  EXPECT_EQ(at_indigo->player, 0);
+  EXPECT_EQ(at_indigo->text, "HIO") << "in upper case; '~' is no Doom letter; the backspace took the '!' back";
+  EXPECT_EQ(at_brown->text, "HIO");
   EXPECT_FALSE(at_green) << "not shown back to its writer by the tics";
 
   Chat red;
   red.start(2);  // to indigo only
   for (int c : std::initializer_list<int>{'y', 'o', Chat::kEnter}) red.key(c);
-  std::optional<std::string> to_indigo, to_brown;
+  std::optional<Chat::Line> to_indigo, to_brown;
   for (int t = 0; t < 5; ++t) {
     std::array<TicCmd, kMaxPlayers> cmds{};
     cmds[3].chatchar = red.next_char();
@@ -385,7 +387,9 @@ TEST(Multiplayer, ChatTravelsACharacterATicAndShowsWhereItIsMeantFor) {
     if (auto m = indigo.receive(cmds, four, 1)) to_indigo = m;
     if (auto m = brown.receive(cmds, four, 2)) to_brown = m;
   }
-  EXPECT_EQ(to_indigo, "Red: YO");
+  ASSERT_TRUE(to_indigo);
+  EXPECT_EQ(to_indigo->player, 3);
+  EXPECT_EQ(to_indigo->text, "YO");
   EXPECT_FALSE(to_brown) << "meant for indigo";
   Chat quiet;
   quiet.start(Chat::kToEveryone);
