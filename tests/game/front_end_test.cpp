@@ -9,6 +9,7 @@
 
 #include "engine/front/keys.h"
 #include "engine/image/image.h"
+#include "engine/play/thing_dump.h"
 #include "engine/util/error.h"
 #include "engine/util/file.h"
 #include "game/key_script.h"
@@ -405,6 +406,44 @@ TEST(FrontEnd, ANetgamesPauseAndSaveTravelInTheCommands) {
   EXPECT_EQ(Session::save_description(read_file_bytes(ours.slot_path(0))), "US");
   EXPECT_EQ(Session::save_description(read_file_bytes(theirs.slot_path(0))), "NET GAME");
   EXPECT_EQ(read_file_bytes(ours.slot_path(0)).size(), read_file_bytes(theirs.slot_path(0)).size());
+}
+
+// Two nodes of a netgame cross a level change in lockstep: the tally takes every
+// player's command, the other player's press hurries both tallies on, both enter the
+// next map at the same tic, and their worlds stay the same thing for thing.
+TEST(FrontEnd, TwoNodesLeaveTheTallyAtTheSameTicAndPlayOnAlike) {
+  Settings settings;
+  GameFlags two;
+  two.players = {true, true, false, false};
+  two.deathmatch = 1;
+  GameFlags other = two;
+  other.console_player = 1;
+  const bsp::LevelSource map01{{}, {test::freedoom_path("freedoom2.wad")}, "MAP01"};
+  FrontEnd a(std::make_unique<Session>(map01, 3, two), settings, {});
+  FrontEnd b(std::make_unique<Session>(map01, 3, other), settings, {});
+  std::vector<play::TicCmd> moves;  // player 1 runs and turns; player 2 presses fire now and then
+  auto tic = [&](int t) {
+    const play::TicCmd first{50, 0, int16_t(t % 40 < 20 ? 300 : -300), 0};
+    const play::TicCmd second{0, 0, 0, uint8_t(t % 30 == 29 ? play::kBtAttack : 0)};
+    a.session()->queue_other_players({first, second, {}, {}});
+    b.session()->queue_other_players({first, second, {}, {}});
+    a.tic({first, 0});
+    b.tic({second, 0});
+  };
+  for (int t = 0; t < 40; ++t) tic(t);
+  a.session()->end_level(false);  // the same exit on both nodes, as a timer's would be
+  b.session()->end_level(false);
+  int t = 40, tally_tics = 0;
+  for (; t < 400 && (a.session()->in_intermission() || a.session()->map_name() == "MAP01"); ++t, ++tally_tics) {
+    tic(t);
+    EXPECT_EQ(a.session()->in_intermission(), b.session()->in_intermission()) << t;
+  }
+  ASSERT_EQ(a.session()->map_name(), "MAP02") << "the presses of player 2 ended both tallies";
+  EXPECT_EQ(b.session()->map_name(), "MAP02");
+  EXPECT_GT(tally_tics, 40) << "a second's pause, a count, another press, ten tics";
+  for (int end = t + 100; t < end; ++t) tic(t);
+  EXPECT_EQ(play::dump_things(a.session()->world(), 0), play::dump_things(b.session()->world(), 0));
+  EXPECT_GT(a.session()->world().level_time(), 90);
 }
 
 }  // namespace
