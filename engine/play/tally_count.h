@@ -51,7 +51,7 @@ class TallyCount {
   Tally tally_;
   bool commercial_ = false;
   Stage stage_ = Stage::kCounting;
-  int state_ = 1;  // sp_state, ng_state or dm_state: odd numbers pause, even ones count
+  int state_ = 1;  // sp_state, ng_state or dm_state: odd ones pause, even ones count (the last waits for a press)
   int pause_ = 35;
   int countdown_ = 0;  // Doom's cnt: of the episode's map, then of the last ten tics
   int tics_ = 0;
