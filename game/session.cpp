@@ -498,11 +498,8 @@ bool Session::start_intermission() {
 play::Tally Session::tally() const {
   play::Tally t;
   const play::Player& p = player();
-  t.kills = p.kill_count;
   t.total_kills = world_->total_kills();
-  t.items = p.inv.items;
   t.total_items = world_->total_items();
-  t.secrets = p.secret_count;
   t.total_secrets = world_->total_secrets();
   t.seconds = world_->level_time() / kTicRate;
   const play::GameOptions& o = world_->options();

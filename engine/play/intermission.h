@@ -19,9 +19,7 @@
 namespace p3d::play {
 
 struct Tally {
-  int kills = 0, total_kills = 0;
-  int items = 0, total_items = 0;
-  int secrets = 0, total_secrets = 0;
+  int total_kills = 0, total_items = 0, total_secrets = 0;
   int seconds = 0;
   // Doom's par time as Chocolate Doom counts it (g_game.c's tables), and whether the
   // tally shows it (not on Doom's fourth episode).
@@ -38,8 +36,8 @@ struct Tally {
   std::array<bool, 4> in_game{true, false, false, false};
   int me = 0;
   std::array<std::array<int, 4>, 4> frags{};
-  // A co-op netgame's table (Doom's WI_drawNetgameStats, when `netgame` and not
-  // deathmatch): each player's kills, items and secrets, and frags if anyone has any.
+  // Each player's kills, items and secrets (the console player's alone, but for a
+  // co-op netgame's table: Doom's WI_drawNetgameStats, with frags if anyone has any).
   bool netgame = false;
   std::array<int, 4> player_kills{}, player_items{}, player_secrets{};
 };

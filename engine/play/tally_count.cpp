@@ -85,10 +85,17 @@ void TallyCount::hurry(World& world, const std::array<TicCmd, kMaxPlayers>& cmds
   }
 }
 
-bool TallyCount::pause_over() {
-  if (--pause_) return false;
-  pause_ = kPauseTics;
-  return true;
+// The count's last state waits for a press (then its sound, and on); an odd one
+// pauses a second before the next count.
+void TallyCount::wait_or_pause(int done, Sound on_press) {
+  if (state_ == done) {
+    if (!hurried_) return;
+    sound(on_press);
+    after_count();
+  } else if ((state_ & 1) && !--pause_) {
+    pause_ = kPauseTics;
+    ++state_;
+  }
 }
 
 // The counting is over and a press came: Doom's map of the episode, or Doom II's last tics.
@@ -159,13 +166,8 @@ void TallyCount::count_single() {
         ++state_;
       }
     }
-  } else if (state_ == kSingleDone) {
-    if (hurried_) {
-      sound(Sound::kSgcock);
-      after_count();
-    }
-  } else if (state_ & 1) {
-    if (pause_over()) ++state_;
+  } else {
+    wait_or_pause(kSingleDone, Sound::kSgcock);
   }
 }
 
@@ -202,13 +204,8 @@ void TallyCount::count_netgame() {
       sound(Sound::kBarexp), state_ += shown_.show_frags ? 1 : 3;
   } else if (state_ == 8) {
     if (!count_all(shown_.frags, 1, [&](int i) { return frag_total(tally_, i); })) sound(Sound::kPldeth), ++state_;
-  } else if (state_ == kNetgameDone) {
-    if (hurried_) {
-      sound(Sound::kSgcock);
-      after_count();
-    }
-  } else if (state_ & 1) {
-    if (pause_over()) ++state_;
+  } else {
+    wait_or_pause(kNetgameDone, Sound::kSgcock);
   }
 }
 
@@ -242,13 +239,8 @@ void TallyCount::count_deathmatch() {
       totals[size_t(i)] = std::clamp(frag_total(tally_, i), -99, 99);
     }
     if (!ticking) sound(Sound::kBarexp), ++state_;
-  } else if (state_ == kDeathmatchDone) {
-    if (hurried_) {
-      sound(Sound::kSlop);
-      after_count();
-    }
-  } else if (state_ & 1) {
-    if (pause_over()) ++state_;
+  } else {
+    wait_or_pause(kDeathmatchDone, Sound::kSlop);
   }
 }
 

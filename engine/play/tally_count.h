@@ -41,7 +41,7 @@ class TallyCount {
   void count_deathmatch();
   void after_count();
   void leave_soon();
-  bool pause_over();
+  void wait_or_pause(int done, Sound on_press);
   int percent_kills(int p) const;
   int percent_items(int p) const;
   int percent_secrets(int p) const;
