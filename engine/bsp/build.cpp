@@ -19,7 +19,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <numeric>
+#include <span>
 #include <tuple>
 
 #include "engine/bsp/convex.h"
@@ -81,11 +83,14 @@ struct CellVertex {
 };
 using Cell = std::vector<CellVertex>;
 
-// A cell still to split, holding its fragments by value: partitioning reads them in
-// order and writes each side's in order (as quicksort moves keys), where fragments
-// kept in one pool and named by index cost a cache miss each at every level.
+// A cell still to split. Its fragments lie by value in the builder's stack of them
+// (Builder::frags_), the tasks' ranges in the order of the tasks, so the task taken
+// holds the last range: partitioning reads them in order and writes each side's in
+// order in their place (as quicksort moves keys), where fragments named by index cost
+// a cache miss each at every level, and a vector per cell was memory freed and faulted
+// in again at every level (a sixth of a million walls' compile, zeroing pages).
 struct Task {
-  std::vector<Frag> frags;
+  size_t first, count;  // its fragments: frags_[first, first + count)
   Cell cell;
   int32_t parent;  // node index, or kNone for the root
   int slot;        // 0 front, 1 back
@@ -274,28 +279,47 @@ class Builder {
     Cell root;
     for (Vec2 p : geom::box_polygon(box)) root.push_back({p, level::kNone, false});
 
+    frags_ = std::move(all);
+    frags_.reserve(frags_.size() * 2);  // room for the root's front side and splits: never copied as it grows
     std::vector<Task> stack;
-    stack.push_back({std::move(all), std::move(root), level::kNone, 0, 0});
+    stack.push_back({0, frags_.size(), std::move(root), level::kNone, 0, 0});
     while (!stack.empty()) {
       Task task = std::move(stack.back());
       stack.pop_back();
       max_depth_ = std::max<size_t>(max_depth_, task.depth);
       const std::optional<Splitter> splitter = split_or_leaf(task);
-      if (!splitter) continue;
+      if (!splitter) {
+        frags_.resize(task.first);  // the leaf holds them now
+        continue;
+      }
       const int32_t node = static_cast<int32_t>(out_.nodes.size());
       link(task, node);
       out_.nodes.push_back({});
       out_.nodes[node].splitter = splitter->line;
       if (splitter->spans) ++free_splits_;  // it cannot cut anything: free
-      std::vector<Frag> front, back;
-      partition(task.frags, int32_t(splitter->line), node, front, back);
-      std::vector<Frag>().swap(task.frags);
+      const size_t backs = partition(task.first, int32_t(splitter->line), node);
+      const size_t fronts = frags_.size() - task.first - backs;
+      release_stack_room();
 
       const Line& l = lines_[splitter->line];
-      stack.push_back({std::move(back), clip(task.cell, l, node, false), node, 1, task.depth + 1});
-      stack.push_back({std::move(front), clip(task.cell, l, node, true), node, 0, task.depth + 1});
+      stack.push_back({task.first, backs, clip(task.cell, l, node, false), node, 1, task.depth + 1});
+      stack.push_back({task.first + backs, fronts, clip(task.cell, l, node, true), node, 0, task.depth + 1});
     }
+    std::vector<Frag>().swap(frags_);
   }
+
+  // The stack of fragments shrinks as leaves take them: once it holds under a quarter
+  // of its room (the root's two sides at first), it moves to room for twice what it
+  // holds, and the memory left goes back for the tree's records to take.
+  void release_stack_room() {
+    if (frags_.capacity() < (size_t{1} << 16) || frags_.size() * 4 > frags_.capacity()) return;
+    std::vector<Frag> smaller;
+    smaller.reserve(frags_.size() * 2);
+    smaller.assign(frags_.begin(), frags_.end());
+    frags_.swap(smaller);
+  }
+
+  std::span<const Frag> frags_of(const Task& task) const { return {frags_.data() + task.first, task.count}; }
 
   void link(const Task& task, int32_t child) {
     if (task.parent != level::kNone) out_.nodes[task.parent].child[task.slot] = child;
@@ -306,7 +330,7 @@ class Builder {
     level::Node& n = out_.nodes[node];
     if (n.fragment_count++ == 0) n.first_fragment = static_cast<uint32_t>(out_.fragments.size());
     out_.fragments.push_back({f.wall, {f.cut[0], f.cut[1]}, f.t[0], f.t[1], 0});
-    shortest_ = std::min(shortest_, (f.t[1] - f.t[0]) * wall_length(f.wall));
+    shortest_ = std::min(shortest_, (f.t[1] - f.t[0]) * length(f.line));
   }
 
   void count_placed(size_t fragments) {
@@ -339,7 +363,7 @@ class Builder {
   // Makes the task's cell a leaf (returning nothing) when its fragments bound a convex
   // region of one sector; otherwise returns the line to split it along.
   std::optional<Splitter> split_or_leaf(Task& task) {
-    const std::vector<Frag>& frags = task.frags;
+    const std::span<const Frag> frags = frags_of(task);
     if (frags.empty()) {
       make_leaf(task, level::kNone);
       return std::nullopt;
@@ -420,7 +444,7 @@ class Builder {
     size_t other = kNoFragment;
     size_t barrier = kNoFragment;
   };
-  Sectors cell_sectors(const std::vector<Frag>& frags) const {
+  Sectors cell_sectors(std::span<const Frag> frags) const {
     Sectors out;
     for (size_t i = 0; i < frags.size(); ++i) {
       const uint32_t w = frags[i].wall;
@@ -438,7 +462,7 @@ class Builder {
 
   // The cell's fragments for convex_region.
   struct FragPieces {
-    const std::vector<Frag>& frags;
+    std::span<const Frag> frags;
     const Builder& builder;
     size_t size() const { return frags.size(); }
     const Line& line(size_t i) const { return frags[i].line; }
@@ -450,7 +474,7 @@ class Builder {
   static bool spans_cell(const Frag& f) { return f.on_boundary0 && f.on_boundary1; }
 
   // first, random, freesplit: the first fragment (a spanning one for freesplit, if any).
-  size_t choose_simple(const std::vector<Frag>& frags) const {
+  size_t choose_simple(std::span<const Frag> frags) const {
     if (opt_.strategy == Strategy::kFreeSplit)
       for (size_t i = 0; i < frags.size(); ++i)
         if (spans_cell(frags[i])) return i;
@@ -459,7 +483,7 @@ class Builder {
 
   // Whether fragment c's line leaves fragments on both of its sides (or c is a barrier,
   // which must become a splitter anyway).
-  bool divides(const std::vector<Frag>& frags, size_t c) const {
+  bool divides(std::span<const Frag> frags, size_t c) const {
     if (barrier(frags[c].wall)) return true;
     const Line& l = frags[c].line;
     bool front = false, back = false;
@@ -473,7 +497,7 @@ class Builder {
   }
 
   // Greedy: the sampled candidate of least cost, with what the sample shows of it.
-  Choice choose_greedy(const std::vector<Frag>& frags) {
+  Choice choose_greedy(std::span<const Frag> frags) {
     const size_t m = frags.size();
     const size_t k = std::min<size_t>(m, std::max(1, opt_.greedy_candidates));
     const size_t samples = std::min<size_t>(m, std::max(1, opt_.greedy_sample));
@@ -588,6 +612,17 @@ class Builder {
   };
   std::optional<double> score(const Line& l, double to_beat, Tally& tally) {
     const size_t n = sample_.size();
+    // Hot: the sample's arrays in locals (the stores below cannot move them), and the
+    // side of a point as one difference of products less the line's own: exact in 64
+    // bits, each term under 2^60 for coordinates within geom::kMaxFixed.
+    const IPoint* ends = sample_.ends.data();
+    const uint8_t* cut = sample_.cut.data();
+    const double* weight = sample_.weight.data();
+    const int64_t dx = l.d.x, dy = l.d.y, offset = dx * l.a.y - dy * l.a.x;
+    auto side = [dx, dy, offset](IPoint p) {
+      const int64_t v = dx * p.y - dy * p.x - offset;
+      return int(v > 0) - int(v < 0);
+    };
     double front = 0, back = 0, left = sample_weight_;
     int64_t splits = 0, slivers = 0;
     size_t fronts = 0, backs = 0;
@@ -600,31 +635,35 @@ class Builder {
                   opt_.balance_weight * std::max(0.0, std::fabs(front - back) - left) >=
               to_beat)
         return std::nullopt;
-      const IPoint* e = &sample_.ends[2 * i];
-      int s0 = geom::side_of(l, e[0]), s1 = geom::side_of(l, e[1]);
-      if (sample_.cut[i]) {
+      int s0 = side(ends[2 * i]), s1 = side(ends[2 * i + 1]);
+      if (cut[i]) [[unlikely]] {
         const Frag& f = *sample_.frags[i];
-        if (sample_.cut[i] & 1) s0 = end_side(f, 0, l);
-        if (sample_.cut[i] & 2) s1 = end_side(f, 1, l);
+        if (cut[i] & 1) s0 = end_side(f, 0, l);
+        if (cut[i] & 2) s1 = end_side(f, 1, l);
       }
-      const double w = sample_.weight[i];
+      const double w = weight[i];
       left -= w;
       const bool to_front = s0 < 0 || s1 < 0, to_back = s0 > 0 || s1 > 0;
       front += to_front ? w : 0.0;
       back += to_back ? w : 0.0;
       fronts += to_front, backs += to_back;
-      if (s0 * s1 < 0) {
+      if (s0 * s1 < 0) [[unlikely]] {
         ++splits;
-        const Frag& f = *sample_.frags[i];
-        const double t = geom::crossing_param(f.line, l);
-        double& length = sample_.length[i];
-        if (length < 0) length = wall_length(f.wall);
-        slivers += std::min(t - f.t[0], f.t[1] - t) * length < kSliverLength;
+        slivers += leaves_sliver(i, l);
       }
     }
     tally = {fronts > 0 && backs > 0, fronts, backs, size_t(splits)};
     return (tally.divides ? 0.0 : opt_.peel_weight) + opt_.split_weight * double(splits) +
            opt_.balance_weight * std::fabs(front - back) + opt_.sliver_weight * double(slivers);
+  }
+
+  // Whether l splits sampled fragment i into a piece shorter than kSliverLength.
+  [[gnu::noinline]] bool leaves_sliver(size_t i, const Line& l) {
+    const Frag& f = *sample_.frags[i];
+    const double t = geom::crossing_param(f.line, l);
+    double& wall_length = sample_.length[i];
+    if (wall_length < 0) wall_length = length(f.line);
+    return std::min(t - f.t[0], f.t[1] - t) * wall_length < kSliverLength;
   }
 
   // ---- exact classification ------------------------------------------------
@@ -636,25 +675,29 @@ class Builder {
     return geom::side_of_crossing(l, f.line, lines_[f.cut[k]]);
   }
 
-  // Front = right of the splitter (side < 0), back = left (side > 0); fragments on its
-  // line go to the node. The sides are decided first, so each side's vector is made
-  // at its final size.
-  void partition(std::vector<Frag>& frags, int32_t splitter, int32_t node, std::vector<Frag>& front,
-                 std::vector<Frag>& back) {
+  // The last task's fragments, from frags_[first] on, become the back side's (left of
+  // the splitter, side > 0) then the front side's (right, side < 0), each in order;
+  // fragments on its line go to the node. Returns the back side's count. In place:
+  // a fragment gives the back side one piece at most, written where one was read,
+  // while the front side's pieces go after the task's range and then move down.
+  size_t partition(size_t first, int32_t splitter, int32_t node) {
     const Line& l = lines_[size_t(splitter)];
-    sides_.resize(frags.size());
+    const size_t count = frags_.size() - first;
+    sides_.resize(count);
     size_t fronts = 0, backs = 0;
-    for (size_t k = 0; k < frags.size(); ++k) {
-      Frag& f = frags[k];
+    for (size_t k = 0; k < count; ++k) {
+      const Frag& f = frags_[first + k];
       const int s0 = end_side(f, 0, l), s1 = end_side(f, 1, l);
       sides_[k] = {int8_t(s0), int8_t(s1)};
       fronts += s0 < 0 || s1 < 0;
       backs += s0 > 0 || s1 > 0;
     }
-    front.reserve(fronts);
-    back.reserve(backs);
-    for (size_t k = 0; k < frags.size(); ++k) {
-      Frag& f = frags[k];
+    frags_.resize(first + count + fronts);
+    Frag* const task = frags_.data() + first;
+    Frag* back = task;
+    Frag* front = task + count;
+    for (size_t k = 0; k < count; ++k) {
+      Frag f = task[k];
       const auto [s0, s1] = sides_[k];
       if (s0 == 0 && s1 == 0) {
         place_on_node(node, f);
@@ -663,16 +706,19 @@ class Builder {
       if (s0 == 0) f.on_boundary0 = 1;
       if (s1 == 0) f.on_boundary1 = 1;
       if (s0 <= 0 && s1 <= 0) {
-        front.push_back(f);
+        *front++ = f;
       } else if (s0 >= 0 && s1 >= 0) {
-        back.push_back(f);
+        *back++ = f;
       } else {
         const Frag tail = split(f, splitter);
-        (s0 < 0 ? front : back).push_back(f);
-        (s1 < 0 ? front : back).push_back(tail);
+        *(s0 < 0 ? front : back)++ = f;
+        *(s1 < 0 ? front : back)++ = tail;
       }
     }
+    std::memmove(static_cast<void*>(task + backs), task + count, fronts * sizeof(Frag));
+    frags_.resize(first + backs + fronts);
     count_placed(out_.nodes[size_t(node)].fragment_count);
+    return backs;
   }
 
   // Cuts f where `cutter`'s line crosses it: f keeps [t0, t], the piece returned gets [t, t1].
@@ -691,9 +737,9 @@ class Builder {
     return tail;
   }
 
-  double wall_length(uint32_t wall) const {
-    const IPoint d = lines_[wall].d;
-    const double x = double(d.x), y = double(d.y);  // far from overflow: std::hypot's care is not needed
+  // A fragment's wall's length in map units (from the line it carries: no look-up).
+  static double length(const Line& line) {
+    const double x = double(line.d.x), y = double(line.d.y);  // far from overflow: std::hypot's care is not needed
     return std::sqrt(x * x + y * y) / geom::kFixedOne;
   }
 
@@ -733,14 +779,15 @@ class Builder {
       level::Leaf& l = out_.leaves.emplace_back();
       l.sector = sector;
       l.first_fragment = static_cast<uint32_t>(out_.fragments.size());
-      l.fragment_count = static_cast<uint32_t>(task.frags.size());
+      l.fragment_count = static_cast<uint32_t>(task.count);
     }
-    for (size_t i = 0; i < task.frags.size(); ++i) {
-      const Frag& f = task.frags[i];
+    const std::span<const Frag> frags = frags_of(task);
+    for (size_t i = 0; i < frags.size(); ++i) {
+      const Frag& f = frags[i];
       out_.fragments.push_back({f.wall, {f.cut[0], f.cut[1]}, f.t[0], f.t[1], convex_sides_[i]});
-      shortest_ = std::min(shortest_, (f.t[1] - f.t[0]) * wall_length(f.wall));
+      shortest_ = std::min(shortest_, (f.t[1] - f.t[0]) * length(f.line));
     }
-    count_placed(task.frags.size());
+    count_placed(task.count);
     leaf_depth_sum_ += task.depth;
     if (sector == level::kNone && !edge_sector(task.cell, out_.leaves.back().sector)) {
       geom::Polygon poly;
@@ -865,6 +912,7 @@ class Builder {
   std::vector<IPoint> free_points_;               // choose_free's scratch: the sample's vertices
   Sample sample_;                                 // choose_greedy's scratch
   double sample_weight_ = 0;                      // its fragments' weight in all
+  std::vector<Frag> frags_;                       // the pending tasks' fragments (Task)
   std::vector<std::pair<int8_t, int8_t>> sides_;  // partition's scratch: each fragment's end sides
   std::vector<int8_t> convex_sides_;              // convex_region's: each fragment's side facing the region
   std::vector<uint32_t> convex_order_;

@@ -28,28 +28,29 @@ class NameIndex {
     if (names * 2 > slots_.size()) rehash(names * 2);
   }
   // The index given to `name`, or kMissing.
-  int find(std::string_view name) const {
-    if (slots_.empty()) return kMissing;
+  int find(std::string_view name) const { return slots_.empty() ? kMissing : find(name, hash(name)); }
+  // False (and nothing changed) when `name` is there already.
+  bool insert(std::string_view name, int value) {
     const uint64_t h = hash(name);
+    if (!slots_.empty() && find(name, h) != kMissing) return false;
+    if ((size() + 1) * 2 > slots_.size()) rehash(std::max<size_t>(16, slots_.size() * 2));
+    chars_.append(name);
+    ends_.push_back(chars_.size());
+    values_.push_back(value);
+    place(h, int32_t(size() - 1));
+    return true;
+  }
+  size_t size() const { return values_.size(); }
+
+ private:
+  int find(std::string_view name, uint64_t h) const {
     for (size_t i = h & mask();; i = (i + 1) & mask()) {
       const Slot& s = slots_[i];
       if (s.name == kEmpty) return kMissing;
       if (s.tag == tag(h) && name_at(size_t(s.name)) == name) return values_[size_t(s.name)];
     }
   }
-  // False (and nothing changed) when `name` is there already.
-  bool insert(std::string_view name, int value) {
-    if (find(name) != kMissing) return false;
-    if ((size() + 1) * 2 > slots_.size()) rehash(std::max<size_t>(16, slots_.size() * 2));
-    chars_.append(name);
-    ends_.push_back(chars_.size());
-    values_.push_back(value);
-    place(hash(name), int32_t(size() - 1));
-    return true;
-  }
-  size_t size() const { return values_.size(); }
 
- private:
   static constexpr int32_t kEmpty = -1;
   static constexpr size_t kMaxDigits = 9;  // a number's digits read (more belong to the stem)
   struct Slot {

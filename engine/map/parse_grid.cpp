@@ -27,21 +27,22 @@ class GridParser {
 
   Source run(const std::string& text) {
     const std::vector<std::string_view> lines = detail::split_lines(text);
+    detail::Words words;
     size_t i = 0;
     for (; i < lines.size(); ++i) {
       const FileLoc loc = file_.at(int(i) + 1);
       if (lines[i].find('\0') != std::string_view::npos) throw Error(loc, "binary data in a text map");
-      auto words = detail::split_words(lines[i]);
-      if (words.empty()) continue;
-      if (words[0] == "map") {
-        if (words.size() != 1) throw Error(loc, "map: expected nothing after 'map'; the rows follow on the next lines");
+      detail::split_words(lines[i], words.args);
+      if (words.args.empty()) continue;
+      if (words.args[0] == "map") {
+        if (words.args.size() != 1) throw Error(loc, "map: expected nothing after 'map'; the rows follow on the next lines");
         if (map_line_ > 0)
           throw Error(loc, "a second map block (the first is at line " + std::to_string(map_line_) + "); a .grid holds one");
         map_line_ = int(i) + 1;
         i = read_rows(lines, i + 1);
         continue;
       }
-      Statement s(loc, std::move(words));
+      Statement s(file_, int(i) + 1, words);
       statement(s);
     }
     finish();

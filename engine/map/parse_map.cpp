@@ -8,7 +8,6 @@
 namespace p3d::map {
 
 using detail::Statement;
-using detail::split_words;
 
 namespace {
 
@@ -19,15 +18,14 @@ class Parser {
   }
 
   Source run(std::string_view text) {
-    const std::vector<std::string_view> lines = detail::split_lines(text);
-    reserve(lines);
-    int line_number = 0;
-    for (const std::string_view line : lines) {
-      ++line_number;
-      if (line.find('\0') != std::string_view::npos)
-        throw Error(file_.at(line_number), "binary data in a text map");
-      auto words = split_words(line);
-      if (!words.empty()) statement(Statement(file_.at(line_number), std::move(words)));
+    reserve(text);
+    detail::LineReader lines(text);
+    detail::Words words;
+    std::string_view line;
+    for (int line_number = 1; lines.next(line); ++line_number) {
+      if (line.find('\0') != std::string_view::npos) throw Error(file_.at(line_number), "binary data in a text map");
+      detail::split_words(line, words.args);
+      if (!words.args.empty()) statement(Statement(file_, line_number, words));
     }
     if (!have_player_) throw Error(file_, "no player start (add 'player X Y ANGLE')");
     if (source_.walls.empty()) throw Error(file_, "the map has no walls");
@@ -39,12 +37,16 @@ class Parser {
  private:
   // Room for the records the lines announce, so that a big map's vectors and indices
   // are allocated once rather than grown (a rough count is enough: it is only room).
-  void reserve(const std::vector<std::string_view>& lines) {
+  void reserve(std::string_view text) {
     size_t walls = 0, vertices = 0, sectors = 0;
-    for (const std::string_view line : lines) {
-      walls += line.starts_with("wall ");
-      vertices += line.starts_with("vertex ");
-      sectors += line.starts_with("sector ");
+    detail::LineReader lines(text);
+    for (std::string_view line; lines.next(line);) {
+      if (line.empty()) continue;
+      switch (line[0]) {  // one compare a line at most
+        case 'w': walls += line.starts_with("wall "); break;
+        case 'v': vertices += line.starts_with("vertex "); break;
+        case 's': sectors += line.starts_with("sector "); break;
+      }
     }
     source_.walls.reserve(walls);
     source_.vertices.reserve(vertices);
@@ -55,14 +57,14 @@ class Parser {
 
   void statement(Statement s) {
     const std::string_view k = s.keyword();
+    if (k == "vertex") return vertex(s);  // the many first
+    if (k == "wall") return wall(s);
+    if (k == "segment") return segment(s);
+    if (k == "sector") return sector(s, false);
     if (k == "title") return title(s);
     if (k == "texture") return texture(s);
     if (k == "sky") return sky(s);
-    if (k == "vertex") return vertex(s);
-    if (k == "sector") return sector(s, false);
     if (k == "default") return sector(s, true);
-    if (k == "wall") return wall(s);
-    if (k == "segment") return segment(s);
     if (k == "player") return player(s);
     if (k == "thing") return thing(s);
     if (k == "sprite") return sprites_.statement(s, source_, options_);

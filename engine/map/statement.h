@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -18,17 +19,25 @@
 
 namespace p3d::map::detail {
 
+// A line's words, kept by a parser from one line to the next: a statement costs no
+// allocation once the first lines have made room.
+struct Words {
+  std::vector<std::string_view> args;
+  std::vector<std::pair<std::string_view, std::string_view>> options;
+};
+
 class Statement {
  public:
-  // The words' vector becomes the arguments' (compacted in place): a line costs no
-  // allocation beyond its words and, when it has options, one for them.
-  Statement(const FileLoc& loc, std::vector<std::string_view> words) : loc_(loc), args_(std::move(words)) {
+  // words.args holds the line's words (split_words): they become its positional
+  // arguments, compacted in place, and its key=value options go to words.options.
+  Statement(const FileLoc& file, int line, Words& words) : file_(file), line_(line), args_(words.args), options_(words.options) {
     keyword_ = args_.front();
+    options_.clear();
     size_t positional = 0;
     for (size_t i = 1; i < args_.size(); ++i) {
       const std::string_view word = args_[i];
-      const size_t eq = word.find('=');
-      if (eq == std::string_view::npos) {
+      const size_t eq = size_t(std::find(word.begin(), word.end(), '=') - word.begin());  // a short word: no memchr call
+      if (eq == word.size()) {
         if (!options_.empty()) fail("positional argument '" + std::string(word) + "' after key=value options");
         args_[positional++] = word;
       } else {
@@ -37,7 +46,6 @@ class Statement {
         // No statement knows more than a few keys; a cap keeps the search below linear.
         if (options_.size() == kMaxOptions) fail("more than " + std::to_string(kMaxOptions) + " key=value options");
         if (find(key) != options_.end()) fail("option '" + std::string(key) + "' given twice");
-        if (options_.empty()) options_.reserve(std::min(kMaxOptions, args_.size() - i));
         options_.emplace_back(key, word.substr(eq + 1));
       }
     }
@@ -45,8 +53,8 @@ class Statement {
   }
 
   std::string_view keyword() const { return keyword_; }
-  const FileLoc& loc() const { return loc_; }
-  [[noreturn]] void fail(const std::string& message) const { throw Error(loc_, message); }
+  FileLoc loc() const { return file_.at(line_); }
+  [[noreturn]] void fail(const std::string& message) const { throw Error(loc(), message); }
 
   void expect_args(size_t n, const char* usage) const {
     if (args_.size() != n) fail(std::string(keyword_) + ": expected " + usage);
@@ -114,15 +122,16 @@ class Statement {
   }
 
  private:
-  FileLoc loc_;
+  const FileLoc& file_;  // made into a located FileLoc only when asked (a copy counts a reference)
+  int line_;
   std::string_view keyword_;
-  std::vector<std::string_view> args_;
+  std::vector<std::string_view>& args_;
   static constexpr size_t kMaxOptions = 64;
   using Options = std::vector<std::pair<std::string_view, std::string_view>>;  // a few per line: searched in turn
   Options::iterator find(std::string_view key) {
     return std::find_if(options_.begin(), options_.end(), [&](const auto& o) { return o.first == key; });
   }
-  Options options_;
+  Options& options_;
 
   // Most numbers in a map are short integers: read by a plain loop, they are the same
   // doubles from_chars would give (exact below 2^53), -0 included.
@@ -151,42 +160,59 @@ class Statement {
   }
 };
 
-// A text map's lines: LF, CRLF and old Mac CR-only line ends alike, a leading UTF-8 byte
-// order mark skipped (editors on Windows write one).
-inline std::vector<std::string_view> split_lines(std::string_view text) {
-  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
-  std::vector<std::string_view> lines;
-  size_t pos = 0;
-  // memchr over [from, to), never given a null pointer (an empty mapped file has none).
-  const auto find = [&](char c, size_t from, size_t to) -> const char* {
-    return to > from ? static_cast<const char*>(std::memchr(text.data() + from, c, to - from)) : nullptr;
-  };
-  for (;;) {  // memchr for the next LF, then for a CR before it (rare: CRLF or CR-only files)
-    const char* lf = find('\n', pos, text.size());
-    const size_t newline = lf ? size_t(lf - text.data()) : text.size();
-    const char* cr = find('\r', pos, newline);
-    const size_t end = cr ? size_t(cr - text.data()) : newline;
-    if (end == text.size()) {
-      lines.push_back(text.substr(pos));
-      return lines;
-    }
-    lines.push_back(text.substr(pos, end - pos));
-    pos = end + (text.compare(end, 2, "\r\n") == 0 ? 2 : 1);
+// A text map's lines one at a time: LF, CRLF and old Mac CR-only line ends alike, a
+// leading UTF-8 byte order mark skipped (editors on Windows write one).
+class LineReader {
+ public:
+  explicit LineReader(std::string_view text) : text_(text.substr(0, 3) == "\xEF\xBB\xBF" ? text.substr(3) : text) {}
+  // The next line into `line`; false after the last (a text's last line may be empty).
+  bool next(std::string_view& line) {
+    if (done_) return false;
+    // memchr for the next LF, then for a CR before it (rare: CRLF or CR-only files).
+    const char* lf = find('\n', pos_, text_.size());
+    const size_t newline = lf ? size_t(lf - text_.data()) : text_.size();
+    const char* cr = find('\r', pos_, newline);
+    const size_t end = cr ? size_t(cr - text_.data()) : newline;
+    line = text_.substr(pos_, end - pos_);
+    done_ = end == text_.size();
+    if (!done_) pos_ = end + (text_.compare(end, 2, "\r\n") == 0 ? 2 : 1);
+    return true;
   }
+
+ private:
+  // memchr over [from, to), never given a null pointer (an empty mapped file has none).
+  const char* find(char c, size_t from, size_t to) const {
+    return to > from ? static_cast<const char*>(std::memchr(text_.data() + from, c, to - from)) : nullptr;
+  }
+  std::string_view text_;
+  size_t pos_ = 0;
+  bool done_ = false;
+};
+
+inline std::vector<std::string_view> split_lines(std::string_view text) {
+  std::vector<std::string_view> lines;
+  LineReader reader(text);
+  for (std::string_view line; reader.next(line);) lines.push_back(line);
+  return lines;
 }
 
-inline std::vector<std::string_view> split_words(std::string_view line) {
-  std::vector<std::string_view> words;
-  words.reserve(8);  // a statement's words, mostly: one allocation where growing took three
+// A line's words into `words` (what it held is dropped); a '#' starts a comment.
+inline void split_words(std::string_view line, std::vector<std::string_view>& words) {
+  static constexpr auto kind = [] {  // 1: a space between words, 2: a comment's start
+    std::array<uint8_t, 256> k{};
+    k[' '] = k['\t'] = k['\r'] = 1;
+    k['#'] = 2;
+    return k;
+  }();
+  words.clear();
   size_t i = 0;
   while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    while (i < line.size() && kind[uint8_t(line[i])] == 1) ++i;
     if (i >= line.size() || line[i] == '#') break;
     const size_t start = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r' && line[i] != '#') ++i;
+    while (i < line.size() && kind[uint8_t(line[i])] == 0) ++i;
     words.push_back(line.substr(start, i - start));
   }
-  return words;
 }
 
 // Loads a texture statement's PNG (relative to the map's directory, see LoadOptions)

@@ -328,7 +328,9 @@ TEST_F(ParseTest, BadGridsGiveLocatedMessages) {
 // come out as from_chars reads it, bit for bit (-0 too), and every text it refuses
 // must still be refused.
 TEST(Statement, NumbersAreReadAsFromCharsReadsThem) {
-  const detail::Statement s(FileLoc("t.map", 1), {"k"});
+  const FileLoc file("t.map");
+  detail::Words words{{"k"}, {}};
+  const detail::Statement s(file, 1, words);
   for (const std::string text : {"0", "-0", "7", "-12", "007", "-000", "123456789012345", "-999999999999999",
                                  "1234567890123456", "99999999999999999999", "1.5", "-2.25", "1e3", "+5", "-", "",
                                  "--1", "12a", " 1", "0x10", "1-", "nan", "inf", "1e999"}) {
