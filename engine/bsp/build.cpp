@@ -19,7 +19,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
+#include <memory>
 #include <numeric>
 #include <span>
 #include <tuple>
@@ -68,6 +68,7 @@ struct Frag {
   uint32_t on_boundary0 : 1;  // this end lies on an ancestor's splitter line (free-split bookkeeping)
   uint32_t on_boundary1 : 1;
   uint32_t either_side : 1;   // the side facing its cell's region: either, or 0 (a one-sided wall's front)
+  uint32_t barrier : 1;       // its wall is a barrier (Builder::barrier)
 
   int side() const { return either_side ? -1 : 0; }
 };
@@ -127,7 +128,7 @@ class Builder {
     std::vector<Frag> all;
     all.reserve(order.size());
     for (uint32_t i : order)
-      all.push_back({lines_[i], {0.0, 1.0}, i, {level::kNone, level::kNone}, line_of_[i], 0, 0, !one_sided(i)});
+      all.push_back({lines_[i], {0.0, 1.0}, i, {level::kNone, level::kNone}, line_of_[i], 0, 0, !one_sided(i), barrier(i)});
     std::vector<uint32_t>().swap(line_of_);    std::vector<uint32_t>().swap(order);
     // Room for a few splits, and for a node per fragment at most: a big map's vectors
     // are not copied as they grow (for a moment, twice their size). Room never
@@ -280,7 +281,7 @@ class Builder {
     for (Vec2 p : geom::box_polygon(box)) root.push_back({p, level::kNone, false});
 
     frags_ = std::move(all);
-    frags_.reserve(frags_.size() * 2);  // room for the root's front side and splits: never copied as it grows
+    frags_.reserve(frags_.size() + frags_.size() / 4);  // room for splits: not copied as it grows
     std::vector<Task> stack;
     stack.push_back({0, frags_.size(), std::move(root), level::kNone, 0, 0});
     while (!stack.empty()) {
@@ -306,13 +307,17 @@ class Builder {
       stack.push_back({task.first + backs, fronts, clip(task.cell, l, node, true), node, 0, task.depth + 1});
     }
     std::vector<Frag>().swap(frags_);
+    front_side_.reset(), front_room_ = 0;
   }
 
   // The stack of fragments shrinks as leaves take them: once it holds under a quarter
-  // of its room (the root's two sides at first), it moves to room for twice what it
-  // holds, and the memory left goes back for the tree's records to take.
+  // of its room, it moves to room for twice what it holds, and the memory left goes
+  // back for the tree's records to take; so does partition's scratch once no cell
+  // left is as big as a quarter of it.
   void release_stack_room() {
-    if (frags_.capacity() < (size_t{1} << 16) || frags_.size() * 4 > frags_.capacity()) return;
+    constexpr size_t kSmall = size_t{1} << 16;
+    if (front_room_ > kSmall && frags_.size() * 4 < front_room_) front_side_.reset(), front_room_ = 0;
+    if (frags_.capacity() < kSmall || frags_.size() * 4 > frags_.capacity()) return;
     std::vector<Frag> smaller;
     smaller.reserve(frags_.size() * 2);
     smaller.assign(frags_.begin(), frags_.end());
@@ -448,7 +453,7 @@ class Builder {
     Sectors out;
     for (size_t i = 0; i < frags.size(); ++i) {
       const uint32_t w = frags[i].wall;
-      if (barrier(w)) {
+      if (frags[i].barrier) {
         if (out.barrier == kNoFragment) out.barrier = i;
         continue;
       }
@@ -484,7 +489,7 @@ class Builder {
   // Whether fragment c's line leaves fragments on both of its sides (or c is a barrier,
   // which must become a splitter anyway).
   bool divides(std::span<const Frag> frags, size_t c) const {
-    if (barrier(frags[c].wall)) return true;
+    if (frags[c].barrier) return true;
     const Line& l = frags[c].line;
     bool front = false, back = false;
     for (const Frag& f : frags) {
@@ -501,10 +506,10 @@ class Builder {
     const size_t m = frags.size();
     const size_t k = std::min<size_t>(m, std::max(1, opt_.greedy_candidates));
     const size_t samples = std::min<size_t>(m, std::max(1, opt_.greedy_sample));
-    sample_.clear();
+    sample_.resize(samples);
     for (size_t i = 0; i < samples; ++i) {
       const Frag& f = frags[samples == m ? i : rng_.below(m)];
-      sample_.add(f, barrier(f.wall) ? 1.0 : opt_.plain_weight);
+      sample_.set(i, f, f.barrier ? 1.0 : opt_.plain_weight);
     }
     sample_weight_ = 0;
     for (double w : sample_.weight) sample_weight_ += w;
@@ -588,16 +593,18 @@ class Builder {
     std::vector<double> weight;
     std::vector<uint32_t> line;      // its line's number
 
-    void clear() { ends.clear(), frags.clear(), cut.clear(), length.clear(), weight.clear(), line.clear(); }
+    void resize(size_t n) {
+      ends.resize(2 * n), frags.resize(n), cut.resize(n), length.resize(n), weight.resize(n), line.resize(n);
+    }
     size_t size() const { return frags.size(); }
-    void add(const Frag& f, double w) {
+    void set(size_t i, const Frag& f, double w) {
       const IPoint far{f.line.a.x + f.line.d.x, f.line.a.y + f.line.d.y};
-      for (int k = 0; k < 2; ++k) ends.push_back(f.cut[k] != level::kNone ? IPoint{} : f.t[k] == 0 ? f.line.a : far);
-      cut.push_back(uint8_t((f.cut[0] != level::kNone) | (f.cut[1] != level::kNone) << 1));
-      frags.push_back(&f);
-      length.push_back(-1);
-      weight.push_back(w);
-      line.push_back(f.line_number);
+      for (int k = 0; k < 2; ++k) ends[2 * i + k] = f.cut[k] != level::kNone ? IPoint{} : f.t[k] == 0 ? f.line.a : far;
+      cut[i] = uint8_t((f.cut[0] != level::kNone) | (f.cut[1] != level::kNone) << 1);
+      frags[i] = &f;
+      length[i] = -1;
+      weight[i] = w;
+      line[i] = f.line_number;
     }
   };
 
@@ -619,37 +626,36 @@ class Builder {
     const uint8_t* cut = sample_.cut.data();
     const double* weight = sample_.weight.data();
     const int64_t dx = l.d.x, dy = l.d.y, offset = dx * l.a.y - dy * l.a.x;
-    auto side = [dx, dy, offset](IPoint p) {
-      const int64_t v = dx * p.y - dy * p.x - offset;
-      return int(v > 0) - int(v < 0);
-    };
     double front = 0, back = 0, left = sample_weight_;
     int64_t splits = 0, slivers = 0;
     size_t fronts = 0, backs = 0;
-    for (size_t i = 0; i < n; ++i) {
+    for (size_t block = 0; block < n; block += 8) {
       // Stop once this candidate cannot win (the same choice, sooner): splits and
       // slivers only add, and the fragments left can close the imbalance by at most
       // their weight.
-      if (i % 8 == 0 && i > 0 &&
-          opt_.split_weight * double(splits) + opt_.sliver_weight * double(slivers) +
-                  opt_.balance_weight * std::max(0.0, std::fabs(front - back) - left) >=
-              to_beat)
+      if (block > 0 && opt_.split_weight * double(splits) + opt_.sliver_weight * double(slivers) +
+                               opt_.balance_weight * std::max(0.0, std::fabs(front - back) - left) >=
+                           to_beat)
         return std::nullopt;
-      int s0 = side(ends[2 * i]), s1 = side(ends[2 * i + 1]);
-      if (cut[i]) [[unlikely]] {
-        const Frag& f = *sample_.frags[i];
-        if (cut[i] & 1) s0 = end_side(f, 0, l);
-        if (cut[i] & 2) s1 = end_side(f, 1, l);
-      }
-      const double w = weight[i];
-      left -= w;
-      const bool to_front = s0 < 0 || s1 < 0, to_back = s0 > 0 || s1 > 0;
-      front += to_front ? w : 0.0;
-      back += to_back ? w : 0.0;
-      fronts += to_front, backs += to_back;
-      if (s0 * s1 < 0) [[unlikely]] {
-        ++splits;
-        slivers += leaves_sliver(i, l);
+      for (size_t i = block, end = std::min(n, block + 8); i < end; ++i) {
+        // Each end's side as a value whose sign tells it (> 0 left, < 0 right).
+        int64_t v0 = dx * ends[2 * i].y - dy * ends[2 * i].x - offset;
+        int64_t v1 = dx * ends[2 * i + 1].y - dy * ends[2 * i + 1].x - offset;
+        if (cut[i]) [[unlikely]] {
+          const Frag& f = *sample_.frags[i];
+          if (cut[i] & 1) v0 = end_side(f, 0, l);
+          if (cut[i] & 2) v1 = end_side(f, 1, l);
+        }
+        const double w = weight[i];
+        left -= w;
+        const bool to_front = (v0 | v1) < 0, to_back = v0 > 0 || v1 > 0;
+        front += w * double(to_front);  // w or +0: the same sums as adding w where it goes
+        back += w * double(to_back);
+        fronts += to_front, backs += to_back;
+        if (to_front && to_back) [[unlikely]] {  // an end on either side
+          ++splits;
+          slivers += leaves_sliver(i, l);
+        }
       }
     }
     tally = {fronts > 0 && backs > 0, fronts, backs, size_t(splits)};
@@ -679,7 +685,7 @@ class Builder {
   // the splitter, side > 0) then the front side's (right, side < 0), each in order;
   // fragments on its line go to the node. Returns the back side's count. In place:
   // a fragment gives the back side one piece at most, written where one was read,
-  // while the front side's pieces go after the task's range and then move down.
+  // while the front side's pieces wait in front_side_ and then follow.
   size_t partition(size_t first, int32_t splitter, int32_t node) {
     const Line& l = lines_[size_t(splitter)];
     const size_t count = frags_.size() - first;
@@ -692,10 +698,10 @@ class Builder {
       fronts += s0 < 0 || s1 < 0;
       backs += s0 > 0 || s1 > 0;
     }
-    frags_.resize(first + count + fronts);
+    if (front_room_ < fronts) front_side_.reset(new Frag[front_room_ = fronts]);  // scratch: left unset
     Frag* const task = frags_.data() + first;
     Frag* back = task;
-    Frag* front = task + count;
+    Frag* front = front_side_.get();
     for (size_t k = 0; k < count; ++k) {
       Frag f = task[k];
       const auto [s0, s1] = sides_[k];
@@ -715,8 +721,8 @@ class Builder {
         *(s1 < 0 ? front : back)++ = tail;
       }
     }
-    std::memmove(static_cast<void*>(task + backs), task + count, fronts * sizeof(Frag));
-    frags_.resize(first + backs + fronts);
+    frags_.resize(first + backs);
+    frags_.insert(frags_.end(), front_side_.get(), front);
     count_placed(out_.nodes[size_t(node)].fragment_count);
     return backs;
   }
@@ -913,6 +919,8 @@ class Builder {
   Sample sample_;                                 // choose_greedy's scratch
   double sample_weight_ = 0;                      // its fragments' weight in all
   std::vector<Frag> frags_;                       // the pending tasks' fragments (Task)
+  std::unique_ptr<Frag[]> front_side_;            // partition's scratch: the front side's pieces
+  size_t front_room_ = 0;                         // its size
   std::vector<std::pair<int8_t, int8_t>> sides_;  // partition's scratch: each fragment's end sides
   std::vector<int8_t> convex_sides_;              // convex_region's: each fragment's side facing the region
   std::vector<uint32_t> convex_order_;
