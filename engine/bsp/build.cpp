@@ -27,6 +27,7 @@
 #include "engine/bsp/convex.h"
 #include "engine/geom/polygon.h"
 #include "engine/util/limits.h"
+#include "engine/util/radix_sort.h"
 #include "engine/util/rng.h"
 
 namespace p3d::bsp {
@@ -239,31 +240,48 @@ class Builder {
   }
 
   // Walls on one line share a number (line_of_): a line's direction in lowest terms,
-  // pointing right (or up), and its offset, exact.
+  // pointing right (or up), and its offset, exact. The numbers only tell lines apart:
+  // walls are grouped by a hash of their line's key, radix-sorted (a sort of the keys
+  // was a fortieth of compiling a million walls), and a group that holds more than one
+  // key (a collision) is sorted by key.
   void number_lines() {
-    struct Key {
-      int64_t dx, dy, offset;
-      uint32_t wall;
-    };
-    std::vector<Key> keys;
-    keys.reserve(lines_.size());
+    using Key = std::array<int64_t, 3>;  // dx, dy, offset
+    std::vector<Key> keys(lines_.size());
+    std::vector<std::pair<uint64_t, uint32_t>> by_hash(lines_.size());  // (hash, wall)
     for (uint32_t w = 0; w < lines_.size(); ++w) {
       int64_t dx = lines_[w].d.x, dy = lines_[w].d.y;
       const int64_t g = std::gcd(dx, dy);
       dx /= g, dy /= g;
       if (dx < 0 || (dx == 0 && dy < 0)) dx = -dx, dy = -dy;
-      keys.push_back({dx, dy, dx * lines_[w].a.y - dy * lines_[w].a.x, w});
+      keys[w] = {dx, dy, dx * lines_[w].a.y - dy * lines_[w].a.x};
+      uint64_t h = 0;
+      for (const int64_t part : keys[w]) h = mix_bits(h ^ uint64_t(part));
+      by_hash[w] = {h >> 32, w};  // 32 bits: three radix passes, and a collision costs only a sort
     }
-    std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
-      return std::tie(a.dx, a.dy, a.offset, a.wall) < std::tie(b.dx, b.dy, b.offset, b.wall);
-    });
+    radix_sort_by_key(by_hash);
     line_of_.resize(lines_.size());
     uint32_t line = 0;
-    for (size_t i = 0; i < keys.size(); ++i) {
-      if (i > 0 && std::tie(keys[i].dx, keys[i].dy, keys[i].offset) != std::tie(keys[i - 1].dx, keys[i - 1].dy, keys[i - 1].offset))
-        ++line;
-      line_of_[keys[i].wall] = line;
+    for (size_t begin = 0; begin < by_hash.size();) {
+      size_t end = begin + 1;
+      while (end < by_hash.size() && by_hash[end].first == by_hash[begin].first) ++end;
+      const auto key_of = [&](const std::pair<uint64_t, uint32_t>& e) { return keys[e.second]; };
+      if (std::any_of(by_hash.begin() + ptrdiff_t(begin), by_hash.begin() + ptrdiff_t(end),
+                      [&](const auto& e) { return key_of(e) != key_of(by_hash[begin]); }))
+        std::sort(by_hash.begin() + ptrdiff_t(begin), by_hash.begin() + ptrdiff_t(end),
+                  [&](const auto& a, const auto& b) { return key_of(a) < key_of(b); });
+      for (size_t i = begin; i < end; ++i) {
+        if (i > begin && key_of(by_hash[i]) != key_of(by_hash[i - 1])) ++line;
+        line_of_[by_hash[i].second] = line;
+      }
+      ++line;
+      begin = end;
     }
+  }
+
+  static uint64_t mix_bits(uint64_t x) {  // splitmix64's finaliser
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
   }
 
   // ---- the tree ------------------------------------------------------------

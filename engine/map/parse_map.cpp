@@ -21,9 +21,12 @@ class Parser {
     reserve(text);
     detail::LineReader lines(text);
     detail::Words words;
+    // The first NUL byte, found once: the line holding it is the first to end past it.
+    const size_t nul = text.find('\0');
+    const char* const first_nul = nul == std::string_view::npos ? nullptr : text.data() + nul;
     std::string_view line;
     for (int line_number = 1; lines.next(line); ++line_number) {
-      if (line.find('\0') != std::string_view::npos) throw Error(file_.at(line_number), "binary data in a text map");
+      if (first_nul && line.data() + line.size() > first_nul) throw Error(file_.at(line_number), "binary data in a text map");
       detail::split_words(line, words.args);
       if (!words.args.empty()) statement(Statement(file_, line_number, words));
     }

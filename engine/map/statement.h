@@ -164,14 +164,15 @@ class Statement {
 // leading UTF-8 byte order mark skipped (editors on Windows write one).
 class LineReader {
  public:
-  explicit LineReader(std::string_view text) : text_(text.substr(0, 3) == "\xEF\xBB\xBF" ? text.substr(3) : text) {}
+  explicit LineReader(std::string_view text)
+      : text_(text.substr(0, 3) == "\xEF\xBB\xBF" ? text.substr(3) : text), any_cr_(find('\r', 0, text_.size())) {}
   // The next line into `line`; false after the last (a text's last line may be empty).
   bool next(std::string_view& line) {
     if (done_) return false;
     // memchr for the next LF, then for a CR before it (rare: CRLF or CR-only files).
     const char* lf = find('\n', pos_, text_.size());
     const size_t newline = lf ? size_t(lf - text_.data()) : text_.size();
-    const char* cr = find('\r', pos_, newline);
+    const char* cr = any_cr_ ? find('\r', pos_, newline) : nullptr;
     const size_t end = cr ? size_t(cr - text_.data()) : newline;
     line = text_.substr(pos_, end - pos_);
     done_ = end == text_.size();
@@ -185,6 +186,7 @@ class LineReader {
     return to > from ? static_cast<const char*>(std::memchr(text_.data() + from, c, to - from)) : nullptr;
   }
   std::string_view text_;
+  bool any_cr_;  // most texts have none: a line is then found by one memchr
   size_t pos_ = 0;
   bool done_ = false;
 };
