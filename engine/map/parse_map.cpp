@@ -7,6 +7,7 @@
 
 namespace p3d::map {
 
+using detail::same_word;
 using detail::Statement;
 
 namespace {
@@ -45,10 +46,11 @@ class Parser {
     detail::LineReader lines(text);
     for (std::string_view line; lines.next(line);) {
       if (line.empty()) continue;
+      const auto starts = [&](std::string_view word) { return same_word(line.substr(0, word.size()), word); };
       switch (line[0]) {  // one compare a line at most
-        case 'w': walls += line.starts_with("wall "); break;
-        case 'v': vertices += line.starts_with("vertex "); break;
-        case 's': sectors += line.starts_with("sector "); break;
+        case 'w': walls += starts("wall "); break;
+        case 'v': vertices += starts("vertex "); break;
+        case 's': sectors += starts("sector "); break;
       }
     }
     source_.walls.reserve(walls);
@@ -60,17 +62,17 @@ class Parser {
 
   void statement(Statement s) {
     const std::string_view k = s.keyword();
-    if (k == "vertex") return vertex(s);  // the many first
-    if (k == "wall") return wall(s);
-    if (k == "segment") return segment(s);
-    if (k == "sector") return sector(s, false);
-    if (k == "title") return title(s);
-    if (k == "texture") return texture(s);
-    if (k == "sky") return sky(s);
-    if (k == "default") return sector(s, true);
-    if (k == "player") return player(s);
-    if (k == "thing") return thing(s);
-    if (k == "sprite") return sprites_.statement(s, source_, options_);
+    if (same_word(k, "vertex")) return vertex(s);  // the many first
+    if (same_word(k, "wall")) return wall(s);
+    if (same_word(k, "segment")) return segment(s);
+    if (same_word(k, "sector")) return sector(s, false);
+    if (same_word(k, "title")) return title(s);
+    if (same_word(k, "texture")) return texture(s);
+    if (same_word(k, "sky")) return sky(s);
+    if (same_word(k, "default")) return sector(s, true);
+    if (same_word(k, "player")) return player(s);
+    if (same_word(k, "thing")) return thing(s);
+    if (same_word(k, "sprite")) return sprites_.statement(s, source_, options_);
     s.fail("unknown statement '" + std::string(k) + "'");
   }
 

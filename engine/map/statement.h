@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "engine/map/name_index.h"
 #include "engine/map/source.h"
 #include "engine/util/limits.h"
 
@@ -129,7 +130,7 @@ class Statement {
   static constexpr size_t kMaxOptions = 64;
   using Options = std::vector<std::pair<std::string_view, std::string_view>>;  // a few per line: searched in turn
   Options::iterator find(std::string_view key) {
-    return std::find_if(options_.begin(), options_.end(), [&](const auto& o) { return o.first == key; });
+    return std::find_if(options_.begin(), options_.end(), [&](const auto& o) { return same_word(o.first, key); });
   }
   Options& options_;
 
@@ -176,7 +177,7 @@ class LineReader {
     const size_t end = cr ? size_t(cr - text_.data()) : newline;
     line = text_.substr(pos_, end - pos_);
     done_ = end == text_.size();
-    if (!done_) pos_ = end + (text_.compare(end, 2, "\r\n") == 0 ? 2 : 1);
+    if (!done_) pos_ = end + (text_[end] == '\r' && end + 1 < text_.size() && text_[end + 1] == '\n' ? 2 : 1);
     return true;
   }
 
