@@ -247,7 +247,7 @@ class Builder {
   void number_lines() {
     using Key = std::array<int64_t, 3>;  // dx, dy, offset
     std::vector<Key> keys(lines_.size());
-    std::vector<std::pair<uint64_t, uint32_t>> by_hash(lines_.size());  // (hash, wall)
+    std::vector<std::pair<uint32_t, uint32_t>> by_hash(lines_.size());  // (hash, wall)
     for (uint32_t w = 0; w < lines_.size(); ++w) {
       int64_t dx = lines_[w].d.x, dy = lines_[w].d.y;
       const int64_t g = std::gcd(dx, dy);
@@ -256,7 +256,7 @@ class Builder {
       keys[w] = {dx, dy, dx * lines_[w].a.y - dy * lines_[w].a.x};
       uint64_t h = 0;
       for (const int64_t part : keys[w]) h = mix_bits(h ^ uint64_t(part));
-      by_hash[w] = {h >> 32, w};  // 32 bits: three radix passes, and a collision costs only a sort
+      by_hash[w] = {uint32_t(h >> 32), w};  // 32 bits: three radix passes, and a collision costs only a sort
     }
     radix_sort_by_key(by_hash);
     line_of_.resize(lines_.size());
@@ -264,13 +264,14 @@ class Builder {
     for (size_t begin = 0; begin < by_hash.size();) {
       size_t end = begin + 1;
       while (end < by_hash.size() && by_hash[end].first == by_hash[begin].first) ++end;
-      const auto key_of = [&](const std::pair<uint64_t, uint32_t>& e) { return keys[e.second]; };
-      if (std::any_of(by_hash.begin() + ptrdiff_t(begin), by_hash.begin() + ptrdiff_t(end),
-                      [&](const auto& e) { return key_of(e) != key_of(by_hash[begin]); }))
+      const auto key_of = [&](const std::pair<uint32_t, uint32_t>& e) -> const Key& { return keys[e.second]; };
+      if (end - begin > 1 && std::any_of(by_hash.begin() + ptrdiff_t(begin), by_hash.begin() + ptrdiff_t(end),
+                                         [&](const auto& e) { return key_of(e) != key_of(by_hash[begin]); }))
         std::sort(by_hash.begin() + ptrdiff_t(begin), by_hash.begin() + ptrdiff_t(end),
                   [&](const auto& a, const auto& b) { return key_of(a) < key_of(b); });
-      for (size_t i = begin; i < end; ++i) {
-        if (i > begin && key_of(by_hash[i]) != key_of(by_hash[i - 1])) ++line;
+      line_of_[by_hash[begin].second] = line;
+      for (size_t i = begin + 1; i < end; ++i) {
+        if (key_of(by_hash[i]) != key_of(by_hash[i - 1])) ++line;
         line_of_[by_hash[i].second] = line;
       }
       ++line;

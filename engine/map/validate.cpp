@@ -225,7 +225,11 @@ namespace {
 
 // Whether the grid's cells (entries sorted by cell) hold so many pairs that testing
 // them would cost more than a sweep line.
-bool crowded(const std::vector<std::pair<uint64_t, uint32_t>>& entries, size_t walls) {
+// The grid's entries (cell id, wall), made in the order of the walls: a cell id is
+// under 2^25 (at most 4,097 cells a side).
+using CellEntries = std::vector<std::pair<uint32_t, uint32_t>>;
+
+bool crowded(const CellEntries& entries, size_t walls) {
   constexpr double kPairsPerWall = 64;
   double pairs = 0;
   for (size_t begin = 0; begin < entries.size();) {
@@ -236,9 +240,6 @@ bool crowded(const std::vector<std::pair<uint64_t, uint32_t>>& entries, size_t w
   }
   return pairs > kPairsPerWall * double(walls);
 }
-
-// The grid's entries (cell id, wall), made in the order of the walls.
-using CellEntries = std::vector<std::pair<uint64_t, uint32_t>>;
 
 // Candidate pairs come from a uniform grid: each wall is entered in the cells its
 // segment passes through, and walls sharing a cell are tested (test_cell). A grid
@@ -281,7 +282,7 @@ std::vector<Contact> find_contacts_impl(const Source& src, size_t max_count) {
       if (cx == c1) y0 = std::min(y0, by), y1 = std::max(y1, by);
       const int64_t r0 = std::max<int64_t>(0, static_cast<int64_t>(y0 - 1e-6));
       const int64_t r1 = static_cast<int64_t>(y1 + 1e-6);
-      for (int64_t cy = r0; cy <= r1; ++cy) entries.push_back({uint64_t(cy * cells_x + cx), i});
+      for (int64_t cy = r0; cy <= r1; ++cy) entries.push_back({uint32_t(cy * cells_x + cx), i});
     }
   }
   radix_sort_by_key(entries);  // by cell, each cell's walls in order

@@ -13,14 +13,14 @@
 
 namespace p3d {
 
-template <typename Value>
-void radix_sort_by_key(std::vector<std::pair<uint64_t, Value>>& pairs) {
+template <typename Key, typename Value>  // Key: an unsigned integer
+void radix_sort_by_key(std::vector<std::pair<Key, Value>>& pairs) {
   constexpr int kDigitBits = 12;
-  constexpr uint64_t kDigit = (uint64_t{1} << kDigitBits) - 1;
-  uint64_t largest = 0;
+  constexpr Key kDigit = (Key{1} << kDigitBits) - 1;
+  Key largest = 0;
   for (const auto& p : pairs) largest = std::max(largest, p.first);
-  std::vector<std::pair<uint64_t, Value>> sorted(pairs.size());
-  for (int shift = 0; shift < 64 && (largest >> shift) != 0; shift += kDigitBits) {
+  std::vector<std::pair<Key, Value>> sorted(pairs.size());
+  for (int shift = 0; shift < int(8 * sizeof(Key)) && (largest >> shift) != 0; shift += kDigitBits) {
     std::array<size_t, kDigit + 2> start{};  // start[d + 1] counts digit d, then start[d] is where it begins
     for (const auto& p : pairs) ++start[((p.first >> shift) & kDigit) + 1];
     std::partial_sum(start.begin(), start.end(), start.begin());
