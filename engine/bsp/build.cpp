@@ -127,7 +127,7 @@ class Builder {
     for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
     if (opt_.strategy != Strategy::kFirst) rng_.shuffle(order);
     std::vector<Frag> all;
-    all.reserve(order.size());
+    all.reserve(order.size() + order.size() / 4);  // the build's stack of fragments: room for splits
     for (uint32_t i : order)
       all.push_back({lines_[i], {0.0, 1.0}, i, {level::kNone, level::kNone}, line_of_[i], 0, 0, !one_sided(i), barrier(i)});
     std::vector<uint32_t>().swap(line_of_);    std::vector<uint32_t>().swap(order);
@@ -300,7 +300,6 @@ class Builder {
     for (Vec2 p : geom::box_polygon(box)) root.push_back({p, level::kNone, false});
 
     frags_ = std::move(all);
-    frags_.reserve(frags_.size() + frags_.size() / 4);  // room for splits: not copied as it grows
     std::vector<Task> stack;
     stack.push_back({0, frags_.size(), std::move(root), level::kNone, 0, 0});
     while (!stack.empty()) {

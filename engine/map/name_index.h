@@ -30,6 +30,7 @@ class NameIndex {
   static constexpr int kMissing = -1;
 
   void reserve(size_t names) {
+    chars_.reserve(names * 8);  // names mostly short (v123456): not copied as they come
     ends_.reserve(names);
     values_.reserve(names);
     if (names * 2 > slots_.size()) rehash(names * 2);
@@ -111,7 +112,7 @@ class NameIndex {
   // The names one after another, each ending where ends_ says: a million vertices' names
   // in 15 MB, where as strings they took 32.
   std::string chars_;
-  std::vector<size_t> ends_;
+  std::vector<uint32_t> ends_;  // the names come from one file, under limits::kMaxFileBytes (2 GiB)
   std::vector<int> values_;
   std::vector<Slot> slots_;  // a power of two, at most half full
 };
