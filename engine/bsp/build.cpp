@@ -795,7 +795,8 @@ class Builder {
   // The task's fragments become the leaf's, facing the sides convex_region chose
   // (convex_sides_). A leaf whose fragments face no sector (it holds none, or plain
   // segments only) takes the sector of a wall along its edges facing it, or failing
-  // that (only segments near) one found by a ray cast once the tree is done.
+  // that (only segments near) one found by a ray cast once the tree is done; in a map
+  // of plain segments, the default sector.
   void make_leaf(const Task& task, int32_t sector) {
     const int32_t leaf = static_cast<int32_t>(out_.leaves.size());
     link(task, level::leaf_child(leaf));
@@ -813,7 +814,9 @@ class Builder {
     }
     count_placed(task.count);
     leaf_depth_sum_ += task.depth;
-    if (sector == level::kNone && !edge_sector(task.cell, out_.leaves.back().sector)) {
+    if (sector == level::kNone && segments_only_) {
+      out_.leaves.back().sector = out_.default_sector;  // a map of plain segments has no other
+    } else if (sector == level::kNone && !edge_sector(task.cell, out_.leaves.back().sector)) {
       geom::Polygon poly;
       for (const CellVertex& v : task.cell) poly.push_back(v.p);
       unresolved_.push_back({leaf, poly.empty() ? Vec2(0) : geom::polygon_centroid(poly)});
@@ -855,10 +858,9 @@ class Builder {
 
   // Leaves facing no sector: the first wall a ray from inside meets tells the sector (its
   // front's when the ray meets the back of a one-sided wall). A map of plain segments
-  // has only its default sector: no ray needed.
+  // has none: make_leaf gave each its default sector.
   void resolve_leaves_by_ray_cast() {
-    for (const auto& [leaf, inside] : unresolved_)
-      out_.leaves[leaf].sector = segments_only_ ? out_.default_sector : ray_cast_sector(inside);
+    for (const auto& [leaf, inside] : unresolved_) out_.leaves[leaf].sector = ray_cast_sector(inside);
   }
 
   int32_t ray_cast_sector(Vec2 origin) const {
@@ -919,7 +921,7 @@ class Builder {
     s.max_depth = max_depth_;
     s.mean_depth = s.leaves ? double(leaf_depth_sum_) / s.leaves : 0;
     s.shortest_fragment = shortest_;
-    s.ray_cast_leaves = segments_only_ ? 0 : unresolved_.size();
+    s.ray_cast_leaves = unresolved_.size();
     s.segs = 0;
     for (const level::Fragment& f : out_.fragments) s.segs += out_.walls[f.wall].two_sided() ? 2 : 1;
     s.empty_leaves = size_t(std::count_if(out_.leaves.begin(), out_.leaves.end(), [](const level::Leaf& l) { return l.fragment_count == 0; }));
