@@ -605,6 +605,7 @@ class Builder {
   // measured when first split; its weight in the balance.
   struct Sample {
     std::vector<IPoint> ends;        // 2 per fragment
+    std::vector<Vec2> rounded;       // 2 per fragment: a crossing end's point, to within 2^-19 (score's filter)
     std::vector<const Frag*> frags;
     std::vector<uint8_t> cut;        // bit k: end k is a crossing
     std::vector<double> length;      // < 0: not measured yet
@@ -612,12 +613,19 @@ class Builder {
     std::vector<uint32_t> line;      // its line's number
 
     void resize(size_t n) {
-      ends.resize(2 * n), frags.resize(n), cut.resize(n), length.resize(n), weight.resize(n), line.resize(n);
+      ends.resize(2 * n), rounded.resize(2 * n), frags.resize(n), cut.resize(n), length.resize(n), weight.resize(n),
+          line.resize(n);
     }
     size_t size() const { return frags.size(); }
     void set(size_t i, const Frag& f, double w) {
       const IPoint far{f.line.a.x + f.line.d.x, f.line.a.y + f.line.d.y};
-      for (int k = 0; k < 2; ++k) ends[2 * i + k] = f.cut[k] != level::kNone ? IPoint{} : f.t[k] == 0 ? f.line.a : far;
+      for (int k = 0; k < 2; ++k) {
+        ends[2 * i + k] = f.cut[k] != level::kNone ? IPoint{} : f.t[k] == 0 ? f.line.a : far;
+        // t is the exact crossing's parameter to within 2^-49 (crossing_param's three
+        // roundings, then kept inside), so the point is within 2^-19 of it: |d| <= 2^30.
+        if (f.cut[k] != level::kNone)
+          rounded[2 * i + k] = Vec2(double(f.line.a.x) + f.t[k] * double(f.line.d.x), double(f.line.a.y) + f.t[k] * double(f.line.d.y));
+      }
       cut[i] = uint8_t((f.cut[0] != level::kNone) | (f.cut[1] != level::kNone) << 1);
       frags[i] = &f;
       length[i] = -1;
@@ -660,9 +668,8 @@ class Builder {
         int64_t v0 = dx * ends[2 * i].y - dy * ends[2 * i].x - offset;
         int64_t v1 = dx * ends[2 * i + 1].y - dy * ends[2 * i + 1].x - offset;
         if (cut[i]) [[unlikely]] {
-          const Frag& f = *sample_.frags[i];
-          if (cut[i] & 1) v0 = end_side(f, 0, l);
-          if (cut[i] & 2) v1 = end_side(f, 1, l);
+          if (cut[i] & 1) v0 = crossing_side(i, 0, l);
+          if (cut[i] & 2) v1 = crossing_side(i, 1, l);
         }
         const double w = weight[i];
         left -= w;
@@ -679,6 +686,20 @@ class Builder {
     tally = {fronts > 0 && backs > 0, fronts, backs, size_t(splits)};
     return (tally.divides ? 0.0 : opt_.peel_weight) + opt_.split_weight * double(splits) +
            opt_.balance_weight * std::fabs(front - back) + opt_.sliver_weight * double(slivers);
+  }
+
+  // The side of sampled fragment i's end k, a crossing, relative to l: in doubles from
+  // its rounded point where that cannot be wrong, else exact (geom::side_of_crossing's
+  // 128-bit products). The double value's error is under 2^13 fixed units squared:
+  // the point's 2^-19 times |l.d| <= 2^30 for each term, and each product's and
+  // difference's rounding (values under 2^61); most crossings lie far further from l.
+  // (Only the choice of splitter rests on it: partition places every piece exactly.)
+  int crossing_side(size_t i, int k, const Line& l) const {
+    constexpr double kMargin = 65536;  // 2^16: eight times the error
+    const Vec2 p = sample_.rounded[2 * i + k];
+    const double v = double(l.d.x) * (p.y - double(l.a.y)) - double(l.d.y) * (p.x - double(l.a.x));
+    if (std::fabs(v) > kMargin) return v > 0 ? 1 : -1;
+    return end_side(*sample_.frags[i], k, l);
   }
 
   // Whether l splits sampled fragment i into a piece shorter than kSliverLength.
