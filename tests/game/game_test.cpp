@@ -536,7 +536,7 @@ TEST(Session, TheIntermissionTalliesTheLevel) {
   s.tic(fire);
   s.tic(play::TicCmd{});
   s.tic(fire);
-  for (int t = 0; t < 9; ++t) s.tic(fire);
+  for (int held = 0; held < 9; ++held) s.tic(fire);
   EXPECT_FALSE(s.intermission_over()) << "the held button is no new press";
   s.tic(play::TicCmd{});
   EXPECT_TRUE(s.intermission_over());
