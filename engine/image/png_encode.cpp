@@ -185,8 +185,9 @@ std::vector<uint8_t> encode_png(int width, int height, std::span<const uint8_t> 
   for (const uint32_t c : palette) colours.insert(colours.end(), {uint8_t(red(c)), uint8_t(green(c)), uint8_t(blue(c))});
   if (!std::all_of(palette.begin(), palette.end(), [](uint32_t c) { return c >> 24 == 255; }))
     for (const uint32_t c : palette) alphas.push_back(uint8_t(c >> 24));
-  for (const uint8_t i : indices)
-    if (i >= palette.size()) throw Error("cannot encode PNG: an index outside the palette");
+  if (palette.size() < 256)  // else every byte is a colour of it
+    for (const uint8_t i : indices)
+      if (i >= palette.size()) throw Error("cannot encode PNG: an index outside the palette");
   std::vector<std::pair<const char*, std::vector<uint8_t>>> chunks{{"PLTE", std::move(colours)}};
   if (!alphas.empty()) chunks.push_back({"tRNS", std::move(alphas)});
   return encode_rows(width, height, indices.data(), 1, 3, chunks);
