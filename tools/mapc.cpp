@@ -16,6 +16,10 @@
 #include "tools/cli.h"
 #include "tools/overview_svg.h"
 
+#ifdef P3D_MIMALLOC
+#include <mimalloc.h>
+#endif
+
 using namespace p3d;
 
 namespace {
@@ -172,9 +176,21 @@ int compile_one(Args& a, const bsp::LevelSource& source, Progress& progress) {
 }
 
 // Every map of the WADs into a directory, with a progress line and a summary table.
+// Memory a map's compile frees stays the process's for the next map's, not given back
+// and faulted in again (the kernel zeroing every page), at the same peak: freedoom2
+// --all never slower, and in 0.5 to 0.8 of the time while this host's faults were
+// dear. (A single map keeps mimalloc's default: at a million walls its peak would grow
+// by a tenth.)
+void keep_freed_memory() {
+#ifdef P3D_MIMALLOC
+  mi_option_disable(mi_option_allow_decommit);
+#endif
+}
+
 int compile_all(Args& a, const bsp::LevelSource& source) {
   if (!source.is_wad()) throw cli::ValidationError("--all", "compiles every map of WADs: use it with --iwad (or a WAD)");
   if (!a.svg.empty()) throw cli::ValidationError("--svg", "draws one level: leave out --all");
+  keep_freed_memory();
   const wad::Stack wads = bsp::read_wads(source.wads);
   const std::vector<std::string> maps = wads.map_names();
   if (maps.empty()) throw Error(source.wads.back().string() + ": the WADs hold no maps");
