@@ -600,9 +600,9 @@ class Builder {
   }
 
   // The fragments a candidate splitter is scored against, laid out for the scoring
-  // loop: each end's point where it is an original wall end (most are), else the
-  // fragment itself for the exact crossing test; each wall's length for slivers,
-  // measured when first split; its weight in the balance.
+  // loop: each end's point where it is an original wall end (most are), else its
+  // rounded point and the fragment itself for the exact crossing test; each wall's
+  // length for slivers, measured when first split; its weight in the balance.
   struct Sample {
     std::vector<IPoint> ends;        // 2 per fragment
     std::vector<Vec2> rounded;       // 2 per fragment: a crossing end's point, to within 2^-19 (score's filter)
