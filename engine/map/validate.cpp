@@ -223,12 +223,12 @@ std::optional<Contact> first_contact_by_sweep(const Source& src) {
 
 namespace {
 
-// Whether the grid's cells (entries sorted by cell) hold so many pairs that testing
-// them would cost more than a sweep line.
 // The grid's entries (cell id, wall), made in the order of the walls: a cell id is
 // under 2^25 (at most 4,097 cells a side).
 using CellEntries = std::vector<std::pair<uint32_t, uint32_t>>;
 
+// Whether the grid's cells (entries sorted by cell) hold so many pairs that testing
+// them would cost more than a sweep line.
 bool crowded(const CellEntries& entries, size_t walls) {
   constexpr double kPairsPerWall = 64;
   double pairs = 0;
