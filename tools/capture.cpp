@@ -55,7 +55,7 @@ class PngEncoder {
   PngEncoder& operator=(const PngEncoder&) = delete;
 
   void add(const std::filesystem::path& path, const render::Frame& frame, Outputs& outputs) {
-    if (threads_ <= 1) return outputs.add(path, encode(frame));
+    if (threads_ <= 1) return outputs.write_now(path, encode(frame));
     while (pending_.size() >= size_t(2 * threads_)) finish_oldest(outputs);
     std::unique_ptr<Job> job = take_spare();
     job->path = path;
@@ -121,7 +121,7 @@ class PngEncoder {
       job_done_.wait(lock, [&] { return job.done; });
     }
     if (job.error) std::rethrow_exception(job.error);
-    outputs.add(job.path, std::move(job.bytes));
+    outputs.write_now(job.path, job.bytes);  // on disk while the next frames render, not held to the end
     job.bytes.clear(), job.done = false;
     spares_.push_back(std::move(pending_.front()));
     pending_.pop_front();

@@ -151,17 +151,33 @@ void write_file_atomically(const std::filesystem::path& path, std::span<const ui
   outputs.commit();
 }
 
+void Outputs::write_now(const std::filesystem::path& path, std::span<const uint8_t> bytes) {
+  write_temporary(path, [bytes](OutputFile& out) { out.write(bytes); });
+  written_.push_back(path);
+}
+
 void Outputs::commit() {
   size_t written = 0;
   try {
     for (; written < files_.size(); ++written) write_temporary(files_[written].first, files_[written].second);
   } catch (...) {
-    for (size_t i = 0; i < written; ++i) std::remove(temporary_for(files_[i].first).c_str());
+    remove_temporaries(written);
     throw;
   }
+  for (const std::filesystem::path& path : written_) rename_temporary(path);
   for (const auto& [path, write] : files_) rename_temporary(path);
+  written_.clear();
   files_.clear();
 }
+
+// write_now's temporaries, and the first `files_written` of files_'s.
+void Outputs::remove_temporaries(size_t files_written) {
+  for (const std::filesystem::path& path : written_) std::remove(temporary_for(path).c_str());
+  written_.clear();
+  for (size_t i = 0; i < files_written; ++i) std::remove(temporary_for(files_[i].first).c_str());
+}
+
+Outputs::~Outputs() { remove_temporaries(0); }
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& text) {
   write_file_atomically(path, std::span(reinterpret_cast<const uint8_t*>(text.data()), text.size()));

@@ -54,18 +54,28 @@ class OutputFile {
 // first, and only when all are written are they renamed into place.
 class Outputs {
  public:
+  Outputs() = default;
+  Outputs(const Outputs&) = delete;
+  Outputs& operator=(const Outputs&) = delete;
+  ~Outputs();  // a command that did not commit leaves no temporary behind
+
   using Writer = std::function<void(OutputFile&)>;
   void add(std::filesystem::path path, std::vector<uint8_t> bytes);
   void add(std::filesystem::path path, const std::string& text) { add(std::move(path), std::vector<uint8_t>(text.begin(), text.end())); }
   // A file written piece by piece at commit(), never whole in memory (what `write`
   // reads must outlive the commit).
   void add(std::filesystem::path path, Writer write) { files_.push_back({std::move(path), std::move(write)}); }
+  // A file written to its temporary at once, not kept in memory until commit() (which
+  // renames it with the rest); throws Error if it cannot be written.
+  void write_now(const std::filesystem::path& path, std::span<const uint8_t> bytes);
   // Throws Error (and leaves nothing behind) if any cannot be written.
   void commit();
 
  private:
   static void write_temporary(const std::filesystem::path& path, const Writer& write);
+  void remove_temporaries(size_t files_written);
   std::vector<std::pair<std::filesystem::path, Writer>> files_;
+  std::vector<std::filesystem::path> written_;  // write_now's, on disk as temporaries
 };
 
 }  // namespace p3d
