@@ -255,7 +255,7 @@ class Builder {
       if (dx < 0 || (dx == 0 && dy < 0)) dx = -dx, dy = -dy;
       keys[w] = {dx, dy, dx * lines_[w].a.y - dy * lines_[w].a.x};
       uint64_t h = 0;
-      for (const int64_t part : keys[w]) h = mix_bits(h ^ uint64_t(part));
+      for (const int64_t part : keys[w]) h = mix64(h ^ uint64_t(part));
       by_hash[w] = {uint32_t(h >> 32), w};  // 32 bits: three radix passes, and a collision costs only a sort
     }
     radix_sort_by_key(by_hash);
@@ -277,12 +277,6 @@ class Builder {
       ++line;
       begin = end;
     }
-  }
-
-  static uint64_t mix_bits(uint64_t x) {  // splitmix64's finaliser
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
   }
 
   // ---- the tree ------------------------------------------------------------

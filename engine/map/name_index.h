@@ -17,6 +17,8 @@
 #include <string_view>
 #include <vector>
 
+#include "engine/util/rng.h"
+
 namespace p3d::map::detail {
 
 // Whether two words are the same: a memcmp (inlined against a literal), where
@@ -75,17 +77,12 @@ class NameIndex {
     uint64_t h = 0xcbf29ce484222325ull;
     for (const char c : name.substr(0, stem)) h = (h ^ uint8_t(c)) * 0x100000001b3ull;
     const size_t digits = name.size() - stem;
-    if (digits == 0) return mix(h);
+    if (digits == 0) return mix64(h);
     uint64_t number = 0;
     for (const char c : name.substr(stem)) number = number * 10 + uint64_t(c - '0');
-    const uint64_t line = mix(h ^ (digits << 56) ^ (number >> 3));
+    const uint64_t line = mix64(h ^ (digits << 56) ^ (number >> 3));
     const uint64_t place = number & 7;
     return ((line >> 32) ^ (place * 0x9e3779b9u)) << 32 | ((line & 0xfffffff8u) | place);
-  }
-  static uint64_t mix(uint64_t x) {  // splitmix64's finaliser
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
   }
   static uint32_t tag(uint64_t h) { return uint32_t(h >> 32); }
   size_t mask() const { return slots_.size() - 1; }
