@@ -10,18 +10,24 @@ namespace p3d::wad {
 ArtCache::ArtCache(const Stack& stack, bool shared) : stack_(stack), shared_(shared), art_(stack) {}
 
 ArtCache::Picture ArtCache::share(Entry& entry) const {
-  if (shared_) return *entry.picture;
+  if (shared_) return coloured(*entry.picture, entry.picture->indices);
   if (entry.handed_over) throw std::logic_error("ArtCache: a picture of a cache that is not shared was asked for twice");
   entry.handed_over = true;
-  return std::move(*entry.picture);
+  return colour(std::move(*entry.picture));
 }
 
 ArtCache::Picture ArtCache::colour(IndexedImage img) const {
+  std::vector<uint8_t> indices = std::move(img.indices);
+  return coloured(img, std::move(indices));
+}
+
+// The picture's shape, offsets and opacity from img, its palette indices from `indices`.
+ArtCache::Picture ArtCache::coloured(const IndexedImage& img, std::vector<uint8_t> indices) const {
   Picture out;
   out.colours = image::Image(img.width, img.height);
   const uint32_t* palette = art_.palette().data();
-  for (size_t p = 0; p < img.indices.size(); ++p) out.colours.pixels[p] = palette[img.indices[p]] & (img.opaque[p] ? ~0u : 0u);
-  out.indices = std::move(img.indices);
+  for (size_t p = 0; p < indices.size(); ++p) out.colours.pixels[p] = palette[indices[p]] & (img.opaque[p] ? ~0u : 0u);
+  out.indices = std::move(indices);
   out.left = img.left_offset;
   out.top = img.top_offset;
   return out;
@@ -30,14 +36,14 @@ ArtCache::Picture ArtCache::colour(IndexedImage img) const {
 ArtCache::Entry& ArtCache::texture(const std::string& name) {
   auto [it, added] = textures_.try_emplace(name);
   if (added)
-    if (auto img = art_.texture(name, it->second.problems)) it->second.picture = colour(std::move(*img));
+    if (auto img = art_.texture(name, it->second.problems)) it->second.picture = std::move(*img);
   return it->second;
 }
 
 ArtCache::Entry& ArtCache::flat(const std::string& name) {
   auto [it, added] = flats_.try_emplace(name);
   if (added)
-    if (auto img = art_.flat(name, it->second.problems)) it->second.picture = colour(std::move(*img));
+    if (auto img = art_.flat(name, it->second.problems)) it->second.picture = std::move(*img);
   return it->second;
 }
 
@@ -45,7 +51,7 @@ ArtCache::Entry& ArtCache::sprite(const Lump& lump) {
   auto [it, added] = sprites_.try_emplace(lump.name);
   if (added) {
     try {
-      it->second.picture = colour(decode_picture(lump.bytes, "sprite " + lump.name));
+      it->second.picture = decode_picture(lump.bytes, "sprite " + lump.name);
     } catch (const Error& e) {
       it->second.problems.push_back(e.what());
     }

@@ -41,9 +41,10 @@ class ArtCache {
     int left = 0, top = 0;  // sprites: the origin's place (IndexedImage's offsets)
   };
   // A picture or why there is none: `problems` are warnings for every map that uses it
-  // (broken patches, a lump that does not decode).
+  // (broken patches, a lump that does not decode). Kept as palette indices, two bytes a
+  // texel where a coloured picture takes five: a whole WAD's art is held at once.
   struct Entry {
-    std::optional<Picture> picture;
+    std::optional<IndexedImage> picture;
     std::vector<std::string> problems;
     bool handed_over = false;  // share() moved the picture out
   };
@@ -51,8 +52,9 @@ class ArtCache {
   Entry& texture(const std::string& name);  // a composite wall texture; none if unknown
   Entry& flat(const std::string& name);     // none if unknown or too small
   Entry& sprite(const Lump& lump);          // a sprite lump decoded; none if broken
-  // An entry's picture for a level: a copy, or the picture itself from a cache that is
-  // not shared (each name is asked for once by one import).
+  // An entry's picture in colours for a level: from a copy of its indices, or from the
+  // indices themselves in a cache that is not shared (each name is asked for once by one
+  // import).
   Picture share(Entry& entry) const;
 
   // The sprite lumps between S_START and S_END (and SS_), in the WADs' order, and the
@@ -72,6 +74,8 @@ class ArtCache {
   Picture colour(IndexedImage img) const;
 
  private:
+  Picture coloured(const IndexedImage& img, std::vector<uint8_t> indices) const;
+
   const Stack& stack_;
   const bool shared_;
   Art art_;
