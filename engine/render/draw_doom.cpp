@@ -165,10 +165,21 @@ bool Canvas::draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& b
   drawn_doom_side_ = uint32_t(&ds - doom_sides_.data());
   if (!ds.wall_ready || ds.near != near) set_up_doom_wall(ds, hit, near);
   const Fixed scale = doom::scale_at(t, ds.seg, view_->fangle, x, ds.precision.max_scale);
-  const uint32_t iscale = 0xFFFFFFFFu / uint32_t(scale);
-  const int map = fixed_or(doom::wall_map(t, ds.start_map, scale));
-  const Fixed column = play::wrap_add(doom::texture_column(t, ds.seg, x), ds.x_offset);
-  auto column_of = [&](int part) { return int32_t(play::wrap_add(column, ds.part_x[part]) >> kFracBits); };
+  // What a drawn part's texels need, worked out for the column's first drawn part: most
+  // hits draw none (an opening between sectors), and the step is a division.
+  uint32_t iscale = 0;
+  int map = 0;
+  Fixed column = 0;
+  auto draw_part = [&](int y0, int y1, int part, int texture) {
+    if (y0 >= y1 || dry_) return;
+    if (iscale == 0) {
+      iscale = 0xFFFFFFFFu / uint32_t(scale);
+      map = fixed_or(doom::wall_map(t, ds.start_map, scale));
+      column = play::wrap_add(doom::texture_column(t, ds.seg, x), ds.x_offset);
+    }
+    doom_wall_rows(x, y0, y1, texture, ds.mid[part], int32_t(play::wrap_add(column, ds.part_x[part]) >> kFracBits), iscale,
+                   map);
+  };
   // A wall edge's row: centery - world * scale, in fixed point of `bits` fraction bits
   // (vanilla's 20.12 in 32 bits; Crispy's in 64, fewer bits for taller sectors).
   const int bits = ds.precision.height_bits, shift = kFracBits - bits;
@@ -209,7 +220,7 @@ bool Canvas::draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& b
     if (middle == kNone) {
       planes_to_horizon(x, yl, yh + 1, near);
     } else {
-      doom_wall_rows(x, yl, yh + 1, middle, ds.mid[level::kMiddlePart], column_of(level::kMiddlePart), iscale, map);
+      draw_part(yl, yh + 1, level::kMiddlePart, middle);
     }
     top = bottom;
     return false;
@@ -220,8 +231,7 @@ bool Canvas::draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& b
     if (mid >= floor_clip) mid = floor_clip - 1;
     if (mid >= yl) {
       // An upper part reaching below the floor's first row: Doom draws its planes last.
-      doom_wall_rows(x, yl, std::min(mid + 1, floor_start), upper, ds.mid[level::kUpperPart],
-                     column_of(level::kUpperPart), iscale, map);
+      draw_part(yl, std::min(mid + 1, floor_start), level::kUpperPart, upper);
       new_ceiling = mid;
     } else {
       new_ceiling = yl - 1;
@@ -233,7 +243,7 @@ bool Canvas::draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& b
     int mid = row_up(ds.worldlow);
     if (mid <= new_ceiling) mid = new_ceiling + 1;
     if (mid <= yh) {
-      doom_wall_rows(x, mid, yh + 1, lower, ds.mid[level::kLowerPart], column_of(level::kLowerPart), iscale, map);
+      draw_part(mid, yh + 1, level::kLowerPart, lower);
       new_floor = mid;
     } else {
       new_floor = yh + 1;
@@ -266,7 +276,6 @@ inline void Canvas::crispy_wall_rows(int x, int y0, int y1, const level::Texture
 }
 
 void Canvas::doom_wall_rows(int x, int y0, int y1, int texture, Fixed mid, int32_t column, uint32_t iscale, int map) {
-  if (y0 >= y1 || dry_) return;
   if (texture == kNone) return fill_span(x, y0, y1, Fill::kMissingTexture);
   count(x, y0, y1);
   if (painting_planes_) mark_painted(x, y0, y1, kNoPlane);
