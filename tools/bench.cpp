@@ -771,15 +771,16 @@ std::string demo_map(const wad::Lump& demo, bool numbered_maps) {
   return name;
 }
 
-// Crispy Doom's render-only ms/frame on a demo, by tools/peers/doom_render_ms.py; 0 when it cannot run.
+// Crispy Doom's render-only ms/frame on a demo (a lump of the IWAD or a .lmp file), by
+// tools/peers/doom_render_ms.py; 0 when it cannot run.
 double crispy_ms(const Settings& s, const std::filesystem::path& iwad, const std::string& demo) {
   static std::map<std::string, double> measured;  // each demo once per run, for both tables
   const std::string key = iwad.string() + ":" + demo;
   if (const auto it = measured.find(key); it != measured.end()) return it->second;
   double& ms = measured[key];
   const auto script = std::filesystem::path(s.source_dir) / "tools" / "peers" / "doom_render_ms.py";
-  const std::string command = "python3 '" + script.string() + "' --port crispy --iwad '" + iwad.string() + "' --demo " +
-                              demo + " --res 640 --reps " + std::to_string(s.peer_reps) + " 2>/dev/null";
+  const std::string command = "python3 '" + script.string() + "' --port crispy --iwad '" + iwad.string() + "' --demo '" +
+                              demo + "' --res 640 --reps " + std::to_string(s.peer_reps) + " 2>/dev/null";
   FILE* pipe = ::popen(command.c_str(), "r");
   if (!pipe) return 0;
   std::string out;
@@ -792,32 +793,83 @@ double crispy_ms(const Settings& s, const std::filesystem::path& iwad, const std
 
 // The demo replayed by Doom's rules (the same path as Crispy's -timedemo, tic for tic),
 // each tic's view rendered as Crispy draws it above its status bar (640x336, 8-bit):
-// the mean ms/frame on one thread and on `cores`, interleaved frame by frame.
+// the mean ms/frame on one thread and on `cores`. Each pass replays the whole demo on
+// one thread count, so each frame follows the tic before's as in Crispy's timedemo; the
+// median of `passes` passes for each count, the counts taking turns.
 std::pair<double, double> time_demo_views(const wad::Stack& wads, const level::Level& level, const std::string& map,
-                                          const play::DoomDemo& doom, int cores) {
+                                          const play::DoomDemo& doom, int cores, int passes) {
   play::GameOptions o = play::game_options_for(wads, map, doom.skill);
   o.fast = doom.fast, o.respawn = doom.respawn, o.no_monsters = doom.no_monsters;
-  play::World world(play::map_from_wads(wads, map, level), level, o, play::Random{});
   const play::Demo demo = play::demo_from_doom(doom, level);
-  auto one = render::make_renderer("bsp", {.threads = 1});
-  auto all = render::make_renderer("bsp", {.threads = cores});
-  render::Frame frame(640, 336);
-  frame.keep_indices = true;
-  double ms1 = 0, msn = 0;
-  for (const play::DemoTic& t : demo.tics) {
-    world.tick(t.cmd);
-    const play::Mobj& mo = *world.player().mo;
-    const render::Camera camera{{play::to_double(mo.x), play::to_double(mo.y)}, play::to_double(world.player().view_z),
-                                double(mo.angle) * (360.0 / 4294967296.0), 90};
-    const level::State& state = world.state();
-    for (auto [r, sum] : {std::pair{one.get(), &ms1}, std::pair{all.get(), &msn}}) {
+  auto mean_ms = [&](int threads) {
+    play::World world(play::map_from_wads(wads, map, level), level, o, play::Random{});
+    auto renderer = render::make_renderer("bsp", {.threads = threads});
+    render::Frame frame(640, 336);
+    frame.keep_indices = true;
+    double ms = 0;
+    for (const play::DemoTic& t : demo.tics) {
+      world.tick(t.cmd);
+      const play::Mobj& mo = *world.player().mo;
+      const render::Camera camera{{play::to_double(mo.x), play::to_double(mo.y)},
+                                  play::to_double(world.player().view_z), double(mo.angle) * (360.0 / 4294967296.0), 90};
       const auto t0 = Clock::now();
-      r->render(level, state, camera, frame);
-      *sum += cli::seconds_since(t0) * 1000;
+      renderer->render(level, world.state(), camera, frame);
+      ms += cli::seconds_since(t0) * 1000;
     }
+    return ms / double(std::max<size_t>(1, demo.tics.size()));
+  };
+  std::vector<double> one, all;
+  for (int pass = 0; pass < passes; ++pass) one.push_back(mean_ms(1)), all.push_back(mean_ms(cores));
+  return {median(one), median(all)};
+}
+
+// A demo that stands at the map's start and turns in place, left, by Doom's smallest
+// turn a tic (1/256 of a turn): a full turn in 256 tics, each tic a new view.
+play::DoomDemo turn_in_place(const std::string& map) {
+  play::DoomDemo demo;
+  if (std::sscanf(map.c_str(), "MAP%d", &demo.map) != 1 && std::sscanf(map.c_str(), "E%dM%d", &demo.episode, &demo.map) != 2)
+    throw Error(map + ": not a map name");
+  demo.commands.assign(256, play::DoomTic{.turn = 256});
+  return demo;
+}
+
+// Maps viewed from their start turning in place (Freedoom's E1M1, MAP01, MAP02, MAP10
+// and MAP15; with --iwad, its --map): Crispy Doom's render-only time on that demo beside
+// ours on the same views.
+void bench_doom_start_views(const Settings& s, int cores, bool crispy) {
+  const std::filesystem::path games = "/usr/share/games/doom";
+  std::vector<std::pair<std::filesystem::path, std::string>> maps = {
+      {games / "freedoom1.wad", "E1M1"}, {games / "freedoom2.wad", "MAP01"}, {games / "freedoom2.wad", "MAP02"},
+      {games / "freedoom2.wad", "MAP10"}, {games / "freedoom2.wad", "MAP15"}};
+  if (!s.wads.iwad.empty()) maps = {{s.wads.iwad, s.wads.map.empty() ? "MAP01" : s.wads.map}};
+  report.print("\n### Beside Crispy Doom at each map's start: render-only ms/frame, turning in place\n\n");
+  report.print("Both engines play a demo that stands at the player start and turns left by 1/256 of a turn a tic\n"
+               "(256 views), measured as in the table below.\n\n");
+  report.print("| iwad | map | tics | Crispy 640x400 | ours, 1 thread | ÷ Crispy | ours, %d threads | ÷ Crispy |\n"
+               "|---|---|---:|---:|---:|---:|---:|---:|\n", cores);
+  const auto dir = std::filesystem::temp_directory_path() / ("p3d-bench-doom-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::vector<double> ratio1, ration;
+  for (const auto& [iwad, map] : maps) {
+    if (!std::filesystem::exists(iwad)) continue;
+    const wad::Stack wads = bsp::read_wads({iwad});
+    if (!wads.map(map)) continue;
+    const play::DoomDemo demo = turn_in_place(map);
+    const auto file = dir / ("turn" + map + ".lmp");  // Doom names the demo's lump after the file
+    write_file_atomically(file, play::encode_doom_demo(demo));
+    const level::Level level = bsp::build_wad_map(wads, map, {}, nullptr);
+    const double peer = crispy ? crispy_ms(s, iwad, file.string()) : 0;
+    const auto [one, all] = time_demo_views(wads, level, map, demo, cores, s.repeat);
+    if (peer > 0) ratio1.push_back(one / peer), ration.push_back(all / peer);
+    report.print("| %s | %s | %zu | %s | %s | %s | %s | %s |\n", iwad.filename().c_str(), map.c_str(), demo.tic_count(),
+                 peer > 0 ? fixed(peer, 3).c_str() : "n/a", fixed(one, 3).c_str(),
+                 peer > 0 ? fixed(one / peer, 2).c_str() : "n/a", fixed(all, 3).c_str(),
+                 peer > 0 ? fixed(all / peer, 2).c_str() : "n/a");
+    std::fflush(stdout);
   }
-  const double n = double(std::max<size_t>(1, demo.tics.size()));
-  return {ms1 / n, msn / n};
+  std::filesystem::remove_all(dir);
+  report.print("| geomean | | | | | %s | | %s |\n", ratio1.empty() ? "n/a" : fixed(geomean(ratio1), 2).c_str(),
+               ration.empty() ? "n/a" : fixed(geomean(ration), 2).c_str());
 }
 
 // For every demo of the IWADs (Freedoom's eight by default), the map it plays: Crispy
@@ -834,6 +886,8 @@ void bench_doom(const Settings& s) {
         iwads.push_back(std::filesystem::path("/usr/share/games/doom") / name);
   if (iwads.empty()) return report.print("\n### Beside Crispy Doom: no IWAD (apt-get install freedoom, or --iwad)\n");
   const bool crispy = s.peer_reps > 0 && on_path("crispy-doom");
+  bench_doom_start_views(s, cores, crispy);
+  if (!s.wads.map.empty()) return;  // one map's start: the demos play others
   report.print("\n### Beside Crispy Doom on the same views: render-only ms/frame along each demo\n\n");
   report.print("Both engines play the demo (ours by Doom's rules, in sync with Doom) and draw every tic's view, 640x400\n"
                "hires: Crispy's render-only time (its -timedemo drawn without blit, less the game without drawing), ours\n"
@@ -853,7 +907,7 @@ void bench_doom(const Settings& s) {
       const play::DoomDemo doom = play::decode_doom_demo(lump->bytes, demo);
       const level::Level level = bsp::build_wad_map(wads, map, {}, nullptr);
       const double peer = crispy ? crispy_ms(s, iwad, demo) : 0;
-      const auto [one, all] = time_demo_views(wads, level, map, doom, cores);
+      const auto [one, all] = time_demo_views(wads, level, map, doom, cores, s.repeat);
       if (peer > 0) same1.push_back(one / peer), samen.push_back(all / peer);
       report.print("| %s | %s | %s | %zu | %s | %s | %s | %s | %s |\n", iwad.filename().c_str(), demo.c_str(), map.c_str(),
                    doom.tic_count(), peer > 0 ? fixed(peer, 3).c_str() : "n/a", fixed(one, 3).c_str(),

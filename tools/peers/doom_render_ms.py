@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Render-only ms/frame of Crispy Doom (or Chocolate Doom) on one of an IWAD's demos.
 
-  tools/peers/doom_render_ms.py [--port crispy|chocolate] [--iwad PATH] [--demo demo3] [--res 640|320] [--reps 3]
+  tools/peers/doom_render_ms.py [--port crispy|chocolate] [--iwad PATH] [--demo demo3|FILE.lmp] [--res 640|320] [--reps 3]
 
 Prints one line: `port iwad demo res frames render_ms_per_frame`. Needs the port's
 Debian package, the IWAD and a C compiler; no display (SDL's dummy driver).
@@ -33,7 +33,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--port", default="crispy", choices=["crispy", "chocolate"])
     ap.add_argument("--iwad", default="/usr/share/games/doom/freedoom2.wad")
-    ap.add_argument("--demo", default="demo3")
+    ap.add_argument("--demo", default="demo3", help="a demo lump of the IWAD, or a demo file")
     ap.add_argument("--res", default="640", choices=["640", "320"])
     ap.add_argument("--reps", type=int, default=3)
     a = ap.parse_args()
@@ -45,7 +45,7 @@ def main():
         shim = os.path.join(work, "tick_dilate.so")
         subprocess.run(["cc", "-O2", "-shared", "-fPIC", "-o", shim,
                         os.path.join(os.path.dirname(os.path.abspath(__file__)), "tick_dilate.c")], check=True)
-        demo = lump(a.iwad, a.demo)
+        demo = open(a.demo, "rb").read() if os.path.isfile(a.demo) else lump(a.iwad, a.demo)
         header = 13 if demo[0] >= 104 else 7  # Doom 1.4+ demos have the longer header
         calibration = os.path.join(work, "calibration.lmp")
         open(calibration, "wb").write(bytes(demo[:header]) + bytes(8) + b"\x80")  # two idle tics, end marker
@@ -72,7 +72,8 @@ def main():
         realtics = {}
         tics = 0
         for _ in range(a.reps):
-            for kind, arg in (("demo", a.demo), ("calibration", calibration)):
+            for kind, arg in (("demo", os.path.abspath(a.demo) if os.path.isfile(a.demo) else a.demo),
+                              ("calibration", calibration)):
                 for mode in ("noblit", "nodraw"):
                     gametics, r = timedemo(arg, mode)
                     tics = gametics if kind == "demo" else tics
@@ -81,7 +82,7 @@ def main():
         frames = tics - 2
         drawn = med[("demo", "noblit")] - med[("calibration", "noblit")]
         undrawn = med[("demo", "nodraw")] - med[("calibration", "nodraw")]
-        print(f"{a.port} {os.path.basename(a.iwad)} {a.demo} {a.res} frames={frames} "
+        print(f"{a.port} {os.path.basename(a.iwad)} {os.path.basename(a.demo)} {a.res} frames={frames} "
               f"render_ms_per_frame={(drawn - undrawn) * MS_PER_REALTIC / frames:.4f}")
     finally:
         shutil.rmtree(work, ignore_errors=True)
