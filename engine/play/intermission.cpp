@@ -15,15 +15,6 @@ constexpr int kMatrixX = 42, kMatrixY = 68, kSpacingX = 40, kSpacingY = 33, kTot
 constexpr int kKillersX = 10, kKillersY = 100, kVictimsX = 5, kVictimsY = 50;
 constexpr int kNetStatsY = 50, kNetSpacingX = 64;  // NG_STATSY, NG_SPACINGX
 
-std::optional<wad::IndexedImage> picture(const wad::Stack& wads, const std::string& name) {
-  const wad::Lump* lump = wads.find(name);
-  if (!lump) return std::nullopt;
-  try {
-    return wad::decode_picture(lump->bytes, name);
-  } catch (const std::exception&) {
-    return std::nullopt;  // a broken piece is left out
-  }
-}
 
 }  // namespace
 
@@ -63,33 +54,33 @@ std::optional<IntermissionArt> IntermissionArt::load(const wad::Stack& wads, int
   IntermissionArt a;
   a.episode_ = episode;
   if (episode == 0 || episode == 4)
-    a.background_ = picture(wads, "INTERPIC");
+    a.background_ = wad::find_picture(wads, "INTERPIC");
   else
-    a.background_ = picture(wads, "WIMAP" + std::to_string(episode - 1));
-  a.level_name_ = picture(wads, level_name_lump(episode, map));
-  if (next_map > 0) a.next_name_ = picture(wads, level_name_lump(episode, next_map));
-  a.entering_ = picture(wads, "WIENTER");
-  a.splat_ = picture(wads, "WISPLAT");
-  a.you_are_here_ = {picture(wads, "WIURH0"), picture(wads, "WIURH1")};
-  a.finished_ = picture(wads, "WIF");
-  a.kills_ = picture(wads, "WIOSTK");
-  a.items_ = picture(wads, "WIOSTI");
-  a.secret_ = picture(wads, "WISCRT2");
-  a.time_ = picture(wads, "WITIME");
-  a.par_label_ = picture(wads, "WIPAR");
-  a.percent_ = picture(wads, "WIPCNT");
-  a.colon_ = picture(wads, "WICOLON");
-  a.minus_ = picture(wads, "WIMINUS");
-  a.sucks_ = picture(wads, "WISUCKS");
-  for (int i = 0; i < 10; ++i) a.digits_.push_back(picture(wads, "WINUM" + std::to_string(i)));
-  a.killers_ = picture(wads, "WIKILRS");
-  a.victims_ = picture(wads, "WIVCTMS");
-  a.total_ = picture(wads, "WIMSTT");
-  a.star_ = picture(wads, "STFST01");
-  a.dead_star_ = picture(wads, "STFDEAD0");
-  a.netgame_secret_ = picture(wads, "WIOSTS");
-  a.netgame_frags_ = picture(wads, "WIFRGS");
-  for (int i = 0; i < 4; ++i) a.player_faces_[size_t(i)] = picture(wads, "STPB" + std::to_string(i));
+    a.background_ = wad::find_picture(wads, "WIMAP" + std::to_string(episode - 1));
+  a.level_name_ = wad::find_picture(wads, level_name_lump(episode, map));
+  if (next_map > 0) a.next_name_ = wad::find_picture(wads, level_name_lump(episode, next_map));
+  a.entering_ = wad::find_picture(wads, "WIENTER");
+  a.splat_ = wad::find_picture(wads, "WISPLAT");
+  a.you_are_here_ = {wad::find_picture(wads, "WIURH0"), wad::find_picture(wads, "WIURH1")};
+  a.finished_ = wad::find_picture(wads, "WIF");
+  a.kills_ = wad::find_picture(wads, "WIOSTK");
+  a.items_ = wad::find_picture(wads, "WIOSTI");
+  a.secret_ = wad::find_picture(wads, "WISCRT2");
+  a.time_ = wad::find_picture(wads, "WITIME");
+  a.par_label_ = wad::find_picture(wads, "WIPAR");
+  a.percent_ = wad::find_picture(wads, "WIPCNT");
+  a.colon_ = wad::find_picture(wads, "WICOLON");
+  a.minus_ = wad::find_picture(wads, "WIMINUS");
+  a.sucks_ = wad::find_picture(wads, "WISUCKS");
+  for (int i = 0; i < 10; ++i) a.digits_.push_back(wad::find_picture(wads, "WINUM" + std::to_string(i)));
+  a.killers_ = wad::find_picture(wads, "WIKILRS");
+  a.victims_ = wad::find_picture(wads, "WIVCTMS");
+  a.total_ = wad::find_picture(wads, "WIMSTT");
+  a.star_ = wad::find_picture(wads, "STFST01");
+  a.dead_star_ = wad::find_picture(wads, "STFDEAD0");
+  a.netgame_secret_ = wad::find_picture(wads, "WIOSTS");
+  a.netgame_frags_ = wad::find_picture(wads, "WIFRGS");
+  for (int i = 0; i < 4; ++i) a.player_faces_[size_t(i)] = wad::find_picture(wads, "STPB" + std::to_string(i));
   if (!a.background_ && !a.digits_[0]) return std::nullopt;
   return a;
 }

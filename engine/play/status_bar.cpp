@@ -47,15 +47,6 @@ constexpr int kKeyY[3] = {171, 181, 191};
 constexpr int kAmmoCountX = 288, kMaxAmmoX = 314;
 constexpr int kAmmoCountY[4] = {173, 179, 191, 185};
 
-std::optional<wad::IndexedImage> picture(const wad::Stack& wads, const std::string& name) {
-  const wad::Lump* lump = wads.find(name);
-  if (!lump) return std::nullopt;
-  try {
-    return wad::decode_picture(lump->bytes, name);
-  } catch (const std::exception&) {
-    return std::nullopt;  // a broken piece is left out, as a missing one
-  }
-}
 
 }  // namespace
 
@@ -166,26 +157,26 @@ void Face::update(int random_number, const FaceInput& in) {
 
 std::optional<StatusBarArt> StatusBarArt::load(const wad::Stack& wads) {
   StatusBarArt a;
-  a.bar_ = picture(wads, "STBAR");
+  a.bar_ = wad::find_picture(wads, "STBAR");
   if (!a.bar_) return std::nullopt;
-  a.percent_ = picture(wads, "STTPRCNT");
-  a.minus_ = picture(wads, "STTMINUS");
-  a.arms_background_ = picture(wads, "STARMS");
-  for (int i = 0; i < 4; ++i) a.face_backgrounds_[size_t(i)] = picture(wads, "STFB" + std::to_string(i));
+  a.percent_ = wad::find_picture(wads, "STTPRCNT");
+  a.minus_ = wad::find_picture(wads, "STTMINUS");
+  a.arms_background_ = wad::find_picture(wads, "STARMS");
+  for (int i = 0; i < 4; ++i) a.face_backgrounds_[size_t(i)] = wad::find_picture(wads, "STFB" + std::to_string(i));
   for (int i = 0; i < 10; ++i) {
-    a.tall_[size_t(i)] = picture(wads, "STTNUM" + std::to_string(i));
-    a.small_[size_t(i)] = picture(wads, "STYSNUM" + std::to_string(i));
-    a.grey_[size_t(i)] = picture(wads, "STGNUM" + std::to_string(i));
+    a.tall_[size_t(i)] = wad::find_picture(wads, "STTNUM" + std::to_string(i));
+    a.small_[size_t(i)] = wad::find_picture(wads, "STYSNUM" + std::to_string(i));
+    a.grey_[size_t(i)] = wad::find_picture(wads, "STGNUM" + std::to_string(i));
   }
-  for (int i = 0; i < 6; ++i) a.keys_[size_t(i)] = picture(wads, "STKEYS" + std::to_string(i));
+  for (int i = 0; i < 6; ++i) a.keys_[size_t(i)] = wad::find_picture(wads, "STKEYS" + std::to_string(i));
   for (int pain = 0; pain < kPainFaces; ++pain) {
     for (int j = 0; j < kStraightFaces; ++j)
-      a.faces_.push_back(picture(wads, "STFST" + std::to_string(pain) + std::to_string(j)));
-    for (const char* other : {"STFTR", "STFTL"}) a.faces_.push_back(picture(wads, other + std::to_string(pain) + "0"));
-    for (const char* other : {"STFOUCH", "STFEVL", "STFKILL"}) a.faces_.push_back(picture(wads, other + std::to_string(pain)));
+      a.faces_.push_back(wad::find_picture(wads, "STFST" + std::to_string(pain) + std::to_string(j)));
+    for (const char* other : {"STFTR", "STFTL"}) a.faces_.push_back(wad::find_picture(wads, other + std::to_string(pain) + "0"));
+    for (const char* other : {"STFOUCH", "STFEVL", "STFKILL"}) a.faces_.push_back(wad::find_picture(wads, other + std::to_string(pain)));
   }
-  a.faces_.push_back(picture(wads, "STFGOD0"));
-  a.faces_.push_back(picture(wads, "STFDEAD0"));
+  a.faces_.push_back(wad::find_picture(wads, "STFGOD0"));
+  a.faces_.push_back(wad::find_picture(wads, "STFDEAD0"));
   return a;
 }
 

@@ -5,6 +5,7 @@
 
 #include "engine/util/bytes.h"
 #include "engine/util/error.h"
+#include "engine/wad/wad.h"
 
 namespace p3d::wad {
 
@@ -72,6 +73,16 @@ IndexedImage decode_picture(std::span<const uint8_t> bytes, const std::string& w
     }
   }
   return img;
+}
+
+std::optional<IndexedImage> find_picture(const Stack& wads, const std::string& name) {
+  const Lump* lump = wads.find(name);
+  if (!lump) return std::nullopt;
+  try {
+    return decode_picture(lump->bytes, name);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace p3d::wad

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -30,6 +31,11 @@ constexpr int kMaxPictureSide = 4096;
 // them; the rows below the picture are never shown). Tall patches (DeePsea's
 // relative post offsets) are understood.
 IndexedImage decode_picture(std::span<const uint8_t> bytes, const std::string& what);
+
+class Stack;
+// The picture lump `name` of the WADs, decoded; none when it is missing or broken (the
+// status bar and the intermission leave such a piece out, as Doom would not start).
+std::optional<IndexedImage> find_picture(const Stack& wads, const std::string& name);
 
 // Whether a lump looks like a picture (a plausible header and column offsets); used
 // to tell pictures from PNGs and raw data.
