@@ -31,10 +31,15 @@ struct Image {
 // Decodes a PNG (any channel count) to RGBA8; throws Error("<what>: ...") on bad data.
 Image decode_png(std::span<const uint8_t> bytes, const std::string& what);
 Image load_png(const std::filesystem::path& path);
-std::vector<uint8_t> encode_png(const Image& image);
+// How encode_png deflates its filtered rows: as runs and literals (deflate_runs.h), or
+// by libdeflate's search for matches (level 1): files a few percent smaller, in several
+// times the time (docs/benchmarks.md, "Threads and captures").
+enum class PngDeflate { kRuns, kSearch };
+std::vector<uint8_t> encode_png(const Image& image, PngDeflate how = PngDeflate::kRuns);
 // A paletted PNG: indices (row-major, width x height) into palette (1 to 256 colours,
 // RGBA; a tRNS chunk only when one is not opaque). Throws Error on a mismatch.
-std::vector<uint8_t> encode_png(int width, int height, std::span<const uint8_t> indices, std::span<const uint32_t> palette);
+std::vector<uint8_t> encode_png(int width, int height, std::span<const uint8_t> indices, std::span<const uint32_t> palette,
+                                PngDeflate how = PngDeflate::kRuns);
 void save_png(const Image& image, const std::filesystem::path& path);  // atomic
 
 struct Difference {

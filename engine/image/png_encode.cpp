@@ -1,8 +1,8 @@
 // PNG encoding: each row filtered by whichever of PNG's five filters leaves the
 // smallest sum of absolute differences (libpng's heuristic), the rows deflated in one
-// zlib stream by libdeflate. An opaque image is written as RGB, else RGBA; an 8-bit
-// frame as palette indices. The bytes
-// depend only on the pixels: captures are reproducible on any thread count.
+// zlib stream: as runs and literals (deflate_runs.h), or by libdeflate's search. An
+// opaque image is written as RGB, else RGBA; an 8-bit frame as palette indices. The
+// bytes depend only on the pixels: captures are reproducible on any thread count.
 #include <libdeflate.h>
 
 #ifdef __SSE2__
@@ -14,6 +14,7 @@
 #include <cstring>
 #include <memory>
 
+#include "engine/image/deflate_runs.h"
 #include "engine/image/image.h"
 #include "engine/util/error.h"
 
@@ -21,9 +22,8 @@ namespace p3d::image {
 
 namespace {
 
-// Level 1-12; 1 writes files 1.35 times smaller than stb_image_write's at a seventh
-// of its time, 3% larger than level 2's at 0.6 of its deflate instructions (bench:
-// README, "Threads and captures").
+// PngDeflate::kSearch's level, 1-12: 1 writes files 3% larger than level 2's at 0.6 of
+// its deflate instructions (docs/benchmarks.md, "Threads and captures").
 constexpr int kDeflateLevel = 1;
 
 void put32(std::vector<uint8_t>& out, uint32_t v) {
@@ -60,31 +60,32 @@ void filter_span(const uint8_t* row, const uint8_t* up, size_t channels, size_t 
 }
 
 #ifdef __SSE2__
-// filter_span sixteen bytes at a time (SSE2 is part of x86-64): the Paeth predictor
-// on 16-bit lanes, the magnitudes summed by psadbw against 128 (|v ^ 128 - 128| is
-// the magnitude of v as a signed byte). Returns where it stopped.
+// filter_span sixteen bytes at a time (SSE2 is part of x86-64), the magnitudes summed
+// by psadbw against 128 (|v ^ 128 - 128| is the magnitude of v as a signed byte).
+// Paeth's distances stay in bytes: pa = |b - c| and pb = |a - c| as unsigned
+// differences, and pc = |(a - c) + (b - c)| their sum (saturated: 255 still orders
+// after both) where a and b lie on one side of c, else the difference of the two.
+// Returns where it stopped.
 size_t filter_span_sse2(const uint8_t* row, const uint8_t* up, size_t channels, size_t from, size_t to,
                         uint8_t* const* filtered, uint32_t* cost) {
   const __m128i zero = _mm_setzero_si128(), bias = _mm_set1_epi8(char(0x80)), one = _mm_set1_epi8(1);
   __m128i sums[5] = {zero, zero, zero, zero, zero};
   const auto load = [](const uint8_t* p) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p)); };
-  const auto abs16 = [&](__m128i v) { return _mm_max_epi16(v, _mm_sub_epi16(zero, v)); };
-  const auto paeth8 = [&](__m128i a, __m128i b, __m128i c) {  // eight 16-bit lanes
-    const __m128i pa = abs16(_mm_sub_epi16(b, c)), pb = abs16(_mm_sub_epi16(a, c)),
-                  pc = abs16(_mm_add_epi16(_mm_sub_epi16(b, c), _mm_sub_epi16(a, c)));
-    const __m128i c_not_b = _mm_cmpgt_epi16(pb, pc);
-    const __m128i b_or_c = _mm_or_si128(_mm_and_si128(c_not_b, c), _mm_andnot_si128(c_not_b, b));
-    const __m128i not_a = _mm_or_si128(_mm_cmpgt_epi16(pa, pb), _mm_cmpgt_epi16(pa, pc));
-    return _mm_or_si128(_mm_and_si128(not_a, b_or_c), _mm_andnot_si128(not_a, a));
+  const auto distance = [](__m128i x, __m128i y) { return _mm_or_si128(_mm_subs_epu8(x, y), _mm_subs_epu8(y, x)); };
+  const auto at_most = [](__m128i x, __m128i y) { return _mm_cmpeq_epi8(_mm_min_epu8(x, y), x); };  // unsigned x <= y
+  const auto choose = [](__m128i mask, __m128i yes, __m128i no) {
+    return _mm_or_si128(_mm_and_si128(mask, yes), _mm_andnot_si128(mask, no));
   };
   size_t x = from;
   for (; x + 16 <= to; x += 16) {
     const __m128i r = load(row + x), a = load(row + x - channels), b = load(up + x), c = load(up + x - channels);
     // (a + b) >> 1 without overflow: avg rounds up, so take off the carry of a ^ b.
     const __m128i average = _mm_sub_epi8(_mm_avg_epu8(a, b), _mm_and_si128(_mm_xor_si128(a, b), one));
-    const __m128i predicted = _mm_packus_epi16(
-        paeth8(_mm_unpacklo_epi8(a, zero), _mm_unpacklo_epi8(b, zero), _mm_unpacklo_epi8(c, zero)),
-        paeth8(_mm_unpackhi_epi8(a, zero), _mm_unpackhi_epi8(b, zero), _mm_unpackhi_epi8(c, zero)));
+    const __m128i pa = distance(b, c), pb = distance(a, c);
+    const __m128i one_side = _mm_cmpeq_epi8(at_most(c, a), at_most(c, b));
+    const __m128i pc = choose(one_side, _mm_adds_epu8(pa, pb), distance(pa, pb));
+    const __m128i predicted =
+        choose(_mm_and_si128(at_most(pa, pb), at_most(pa, pc)), a, choose(at_most(pb, pc), b, c));
     const __m128i f[5] = {r, _mm_sub_epi8(r, a), _mm_sub_epi8(r, b), _mm_sub_epi8(r, average), _mm_sub_epi8(r, predicted)};
     for (int i = 0; i < 5; ++i) {
       _mm_storeu_si128(reinterpret_cast<__m128i*>(filtered[i] + x), f[i]);
@@ -127,7 +128,8 @@ namespace {
 // The PNG of `height` rows of `stride` bytes each (`channels` bytes a pixel), with its
 // colour type and the chunks that go before the pixels (a palette).
 std::vector<uint8_t> encode_rows(int width, int height, const uint8_t* rows, size_t channels, uint8_t colour_type,
-                                 const std::vector<std::pair<const char*, std::vector<uint8_t>>>& before_pixels) {
+                                 const std::vector<std::pair<const char*, std::vector<uint8_t>>>& before_pixels,
+                                 PngDeflate how) {
   const size_t stride = size_t(width) * channels;
   thread_local std::vector<uint8_t> filtered, scratch, zeros, deflated;
   filtered.resize(size_t(height) * (stride + 1));
@@ -137,12 +139,18 @@ std::vector<uint8_t> encode_rows(int width, int height, const uint8_t* rows, siz
     filter_row(rows + size_t(y) * stride, y ? rows + size_t(y - 1) * stride : zeros.data(), stride, channels,
                scratch.data(), &filtered[size_t(y) * (stride + 1)]);
 
-  thread_local std::unique_ptr<libdeflate_compressor, CompressorFree> compressor(libdeflate_alloc_compressor(kDeflateLevel));
-  if (!compressor) throw Error("cannot encode PNG: out of memory");
-  deflated.resize(libdeflate_zlib_compress_bound(compressor.get(), filtered.size()));
-  const size_t deflated_size =
-      libdeflate_zlib_compress(compressor.get(), filtered.data(), filtered.size(), deflated.data(), deflated.size());
-  if (deflated_size == 0) throw Error("cannot encode PNG");
+  size_t deflated_size = 0;
+  if (how == PngDeflate::kRuns) {
+    deflated.clear();
+    deflate_runs(filtered, deflated);
+    deflated_size = deflated.size();
+  } else {
+    thread_local std::unique_ptr<libdeflate_compressor, CompressorFree> compressor(libdeflate_alloc_compressor(kDeflateLevel));
+    if (!compressor) throw Error("cannot encode PNG: out of memory");
+    deflated.resize(libdeflate_zlib_compress_bound(compressor.get(), filtered.size()));
+    deflated_size = libdeflate_zlib_compress(compressor.get(), filtered.data(), filtered.size(), deflated.data(), deflated.size());
+    if (deflated_size == 0) throw Error("cannot encode PNG");
+  }
 
   std::vector<uint8_t> out = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   out.reserve(1100 + deflated_size);
@@ -159,7 +167,7 @@ std::vector<uint8_t> encode_rows(int width, int height, const uint8_t* rows, siz
 
 }  // namespace
 
-std::vector<uint8_t> encode_png(const Image& image) {
+std::vector<uint8_t> encode_png(const Image& image, PngDeflate how) {
   if (image.width <= 0 || image.height <= 0) throw Error("cannot encode an empty image as PNG");
   uint32_t all = ~0u;  // the bits set in every pixel: opaque when all of alpha's are
   for (const uint32_t p : image.pixels) all &= p;
@@ -167,17 +175,18 @@ std::vector<uint8_t> encode_png(const Image& image) {
   const size_t channels = opaque ? 3 : 4;
   // Buffers kept from frame to frame: fresh ones of this size cost a page fault per 4 KB.
   thread_local std::vector<uint8_t> rows;
-  rows.resize(image.pixels.size() * channels);  // pixels as bytes, R G B (A)
-  for (size_t i = 0; i < image.pixels.size(); ++i) {
-    const uint32_t p = image.pixels[i];
-    uint8_t* o = &rows[i * channels];
-    o[0] = uint8_t(p), o[1] = uint8_t(p >> 8), o[2] = uint8_t(p >> 16);
-    if (channels == 4) o[3] = uint8_t(p >> 24);
+  rows.resize(image.pixels.size() * channels + 1);  // pixels as bytes, R G B (A); one byte of room
+  if (channels == 4) {
+    std::memcpy(rows.data(), image.pixels.data(), image.pixels.size() * 4);  // R, G, B, A in memory already
+  } else {  // each pixel's four bytes stored 3 apart, its alpha overwritten by the next one's red
+    uint8_t* o = rows.data();
+    for (const uint32_t p : image.pixels) std::memcpy(o, &p, 4), o += 3;
   }
-  return encode_rows(image.width, image.height, rows.data(), channels, opaque ? 2 : 6, {});  // RGB or RGBA
+  return encode_rows(image.width, image.height, rows.data(), channels, opaque ? 2 : 6, {}, how);  // RGB or RGBA
 }
 
-std::vector<uint8_t> encode_png(int width, int height, std::span<const uint8_t> indices, std::span<const uint32_t> palette) {
+std::vector<uint8_t> encode_png(int width, int height, std::span<const uint8_t> indices, std::span<const uint32_t> palette,
+                                PngDeflate how) {
   if (width <= 0 || height <= 0) throw Error("cannot encode an empty image as PNG");
   if (indices.size() != size_t(width) * size_t(height) || palette.empty() || palette.size() > 256)
     throw Error("cannot encode PNG: the indices do not fill the image, or the palette is not 1 to 256 colours");
@@ -190,7 +199,7 @@ std::vector<uint8_t> encode_png(int width, int height, std::span<const uint8_t> 
       if (i >= palette.size()) throw Error("cannot encode PNG: an index outside the palette");
   std::vector<std::pair<const char*, std::vector<uint8_t>>> chunks{{"PLTE", std::move(colours)}};
   if (!alphas.empty()) chunks.push_back({"tRNS", std::move(alphas)});
-  return encode_rows(width, height, indices.data(), 1, 3, chunks);
+  return encode_rows(width, height, indices.data(), 1, 3, chunks, how);
 }
 
 }  // namespace p3d::image

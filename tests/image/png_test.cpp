@@ -1,6 +1,6 @@
 // The PNG encoder against the decoder (stb_image, independent of it): every pixel
 // back exactly, opaque images as RGB and others as RGBA, 8-bit frames as palette
-// indices, any size; the same pixels give the same bytes.
+// indices, any size, deflated either way; the same pixels give the same bytes.
 #include <gtest/gtest.h>
 
 #include "engine/image/image.h"
@@ -33,11 +33,14 @@ Image picture(int w, int h) {
 
 uint8_t color_type(const std::vector<uint8_t>& png) { return png.at(25); }  // IHDR's colour type byte
 
+constexpr PngDeflate kBothWays[] = {PngDeflate::kRuns, PngDeflate::kSearch};
+
 TEST(Png, EncodesEveryPixelExactly) {
   for (const auto& [w, h] : {std::pair{1, 1}, {3, 2}, {17, 5}, {640, 400}, {1, 300}, {301, 1}}) {
-    for (bool opaque : {true, false}) {
+    for (const auto& [opaque, how] : {std::pair{true, PngDeflate::kRuns}, {false, PngDeflate::kRuns},
+                                     {true, PngDeflate::kSearch}, {false, PngDeflate::kSearch}}) {
       const Image img = noise(w, h, uint64_t(w * 1000 + h), opaque);
-      const std::vector<uint8_t> png = encode_png(img);
+      const std::vector<uint8_t> png = encode_png(img, how);
       EXPECT_EQ(color_type(png), opaque ? 2 : 6) << w << "x" << h;
       const Image back = decode_png(png, "x.png");
       ASSERT_EQ(back.width, w);
@@ -46,10 +49,12 @@ TEST(Png, EncodesEveryPixelExactly) {
     }
   }
   const Image art = picture(320, 200);
-  const std::vector<uint8_t> png = encode_png(art);
-  EXPECT_EQ(decode_png(png, "x.png").pixels, art.pixels);
-  EXPECT_LT(png.size(), art.pixels.size() * 3 / 4);  // it compresses
-  EXPECT_EQ(encode_png(art), png);                     // and deterministically
+  for (const PngDeflate how : kBothWays) {
+    const std::vector<uint8_t> png = encode_png(art, how);
+    EXPECT_EQ(decode_png(png, "x.png").pixels, art.pixels);
+    EXPECT_LT(png.size(), art.pixels.size() * 3 / 4);  // it compresses
+    EXPECT_EQ(encode_png(art, how), png);                // and deterministically
+  }
 }
 
 TEST(Png, AnEmptyImageIsAnError) { EXPECT_THROW(encode_png(Image(0, 0)), Error); }
@@ -79,10 +84,12 @@ TEST(Png, EncodesPaletteIndicesExactly) {
     for (const int colours : {1, 7, 256}) {
       for (bool opaque : {true, false}) {
         const Paletted p = paletted(w, h, colours, opaque, uint64_t(w * 1000 + h + colours));
-        const std::vector<uint8_t> png = encode_png(w, h, p.indices, p.palette);
-        EXPECT_EQ(color_type(png), 3) << w << "x" << h;
-        EXPECT_EQ(decode_png(png, "x.png").pixels, p.colours().pixels) << w << "x" << h << ", " << colours << " colours";
-        EXPECT_EQ(encode_png(w, h, p.indices, p.palette), png);
+        for (const PngDeflate how : kBothWays) {
+          const std::vector<uint8_t> png = encode_png(w, h, p.indices, p.palette, how);
+          EXPECT_EQ(color_type(png), 3) << w << "x" << h;
+          EXPECT_EQ(decode_png(png, "x.png").pixels, p.colours().pixels) << w << "x" << h << ", " << colours << " colours";
+          EXPECT_EQ(encode_png(w, h, p.indices, p.palette, how), png);
+        }
       }
     }
   }

@@ -1,0 +1,318 @@
+#include "engine/image/deflate_runs.h"
+
+#include <libdeflate.h>  // adler32
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstring>
+#include <memory>
+
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
+namespace p3d::image {
+
+namespace {
+
+constexpr int kLiteralLengthSymbols = 286, kEndOfBlock = 256, kMaxCodeBits = 15;
+constexpr int kCodeLengthSymbols = 19, kMaxCodeLengthBits = 7;
+constexpr size_t kMinRun = 3, kMaxRun = 258;
+// The order in which a block's header gives the code length code's lengths.
+constexpr uint8_t kCodeLengthOrder[kCodeLengthSymbols] = {16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14, 1, 15};
+
+// A match length's symbol (257..285) with its extra bits (RFC 1951, 3.2.5).
+struct LengthCode {
+  uint16_t symbol = 0;
+  uint8_t extra_bits = 0;
+  uint16_t extra = 0;
+};
+constexpr std::array<LengthCode, kMaxRun + 1> kLengthCodes = [] {
+  constexpr uint16_t base[29] = {3,  4,  5,  6,  7,  8,  9,  10, 11,  13,  15,  17,  19,  23, 27,
+                                 31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258};
+  constexpr uint8_t extra[29] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
+  std::array<LengthCode, kMaxRun + 1> codes{};
+  for (size_t length = kMinRun; length <= kMaxRun; ++length) {
+    int k = 28;
+    while (base[k] > length) --k;
+    codes[length] = {uint16_t(257 + k), extra[k], uint16_t(length - base[k])};
+  }
+  return codes;
+}();
+
+// Code lengths of at most max_bits for symbols of the given frequencies: a Huffman
+// code (two queues over the leaves in order of frequency), its lengths' histogram then
+// made to fit max_bits (by moving leaves up the tree until Kraft's sum is 1 again), the
+// shortest lengths given to the most frequent symbols. Always a complete code of two
+// symbols or more (decoders may refuse a lone code), so an unused symbol may get one.
+void huffman_lengths(const uint32_t* frequency, int symbols, int max_bits, uint8_t* lengths) {
+  std::fill(lengths, lengths + symbols, uint8_t(0));
+  std::array<uint16_t, kLiteralLengthSymbols> leaf{};  // symbols by frequency
+  int used = 0;
+  for (int s = 0; s < symbols; ++s)
+    if (frequency[s]) leaf[size_t(used++)] = uint16_t(s);
+  for (int s = 0; used < 2; ++s)
+    if (!frequency[s]) leaf[size_t(used++)] = uint16_t(s);  // its frequency counts as 0
+  std::sort(leaf.begin(), leaf.begin() + used, [&](uint16_t a, uint16_t b) {
+    return frequency[a] != frequency[b] ? frequency[a] < frequency[b] : a < b;
+  });
+  // Nodes 0..used-1 are the leaves, then each merge; a node's parent comes after it.
+  std::array<uint64_t, 2 * kLiteralLengthSymbols> weight{};
+  std::array<uint16_t, 2 * kLiteralLengthSymbols> parent{}, depth{};
+  for (int i = 0; i < used; ++i) weight[size_t(i)] = frequency[leaf[size_t(i)]];
+  int next_leaf = 0, next_inner = used;
+  auto smallest = [&](int made) {
+    return next_leaf < used && (next_inner >= made || weight[size_t(next_leaf)] <= weight[size_t(next_inner)])
+               ? next_leaf++
+               : next_inner++;
+  };
+  for (int made = used; made < 2 * used - 1; ++made) {
+    const int a = smallest(made), b = smallest(made);
+    weight[size_t(made)] = weight[size_t(a)] + weight[size_t(b)];
+    parent[size_t(a)] = parent[size_t(b)] = uint16_t(made);
+  }
+  std::array<int, kLiteralLengthSymbols + 1> count{};  // leaves by depth, the deepest clamped to max_bits
+  depth[size_t(2 * used - 2)] = 0;
+  for (int i = 2 * used - 3; i >= 0; --i) {
+    depth[size_t(i)] = uint16_t(depth[parent[size_t(i)]] + 1);
+    if (i < used) ++count[size_t(std::min<int>(depth[size_t(i)], max_bits))];
+  }
+  uint32_t kraft = 0;  // the sum of 2^(max_bits - length)
+  for (int bits = 1; bits <= max_bits; ++bits) kraft += uint32_t(count[size_t(bits)]) << (max_bits - bits);
+  while (kraft > (1u << max_bits)) {  // a leaf at max_bits moves under a shorter one, split in two
+    --count[size_t(max_bits)];
+    for (int bits = max_bits - 1; bits > 0; --bits)
+      if (count[size_t(bits)]) {
+        --count[size_t(bits)];
+        count[size_t(bits + 1)] += 2;
+        break;
+      }
+    --kraft;
+  }
+  int k = 0;  // the least frequent take the longest
+  for (int bits = max_bits; bits >= 1; --bits)
+    for (int c = 0; c < count[size_t(bits)]; ++c) lengths[leaf[size_t(k++)]] = uint8_t(bits);
+}
+
+// Canonical codes for the lengths (RFC 1951, 3.2.2), bit-reversed: deflate sends a
+// code's first bit first, and the bit writer fills bytes from their low bits.
+void canonical_codes(const uint8_t* lengths, int symbols, uint16_t* codes) {
+  auto reversed = [](uint32_t code, int n) {
+    uint32_t r = 0;
+    for (int i = 0; i < n; ++i, code >>= 1) r = r << 1 | (code & 1);
+    return r;
+  };
+  std::array<uint32_t, kMaxCodeBits + 2> count{}, next{};
+  for (int s = 0; s < symbols; ++s) ++count[lengths[s]];
+  count[0] = 0;
+  for (int bits = 1, code = 0; bits <= kMaxCodeBits; ++bits) next[size_t(bits)] = uint32_t(code = (code + int(count[size_t(bits) - 1])) << 1);
+  for (int s = 0; s < symbols; ++s) {
+    const int n = lengths[s];
+    if (!n) continue;
+    const uint32_t code = next[size_t(n)]++;
+    codes[s] = uint16_t(reversed(code, n));
+  }
+}
+
+// Bits into bytes, low bits first, without a branch: the buffer's eight bytes are
+// stored at each put and the whole bytes among them kept (a put adds at most 56 bits
+// to fewer than 8). The output needs 8 bytes of room past its end.
+class BitWriter {
+ public:
+  explicit BitWriter(uint8_t* out) : out_(out) {}
+  void put(uint64_t value, int n) {
+    bits_ |= value << count_;
+    count_ += n;
+    std::memcpy(out_, &bits_, 8);  // little-endian
+    const int bytes = count_ >> 3;
+    out_ += bytes;
+    bits_ >>= 8 * bytes;
+    count_ &= 7;
+  }
+  // Starts again at `out`, the whole bytes so far behind; returns where they ended.
+  uint8_t* rewind(uint8_t* out) {
+    uint8_t* end = out_;
+    out_ = out;
+    return end;
+  }
+  // The last bits, to the next byte, into out (room for one); returns where they ended.
+  uint8_t* finish_into(uint8_t* out) {
+    if (count_ > 0) *out++ = uint8_t(bits_);
+    return out;
+  }
+
+ private:
+  uint8_t* out_;
+  uint64_t bits_ = 0;
+  int count_ = 0;
+};
+
+// The bytes from `at` equal to the one before it, up to `limit`: eight at a time.
+inline size_t run_length(const uint8_t* at, size_t limit) {
+  const uint64_t repeated = uint64_t(at[-1]) * 0x0101010101010101ull;
+  size_t n = 0;
+  for (; n + 8 <= limit; n += 8) {
+    uint64_t eight;
+    std::memcpy(&eight, at + n, 8);
+    if (const uint64_t differ = eight ^ repeated) return n + size_t(std::countr_zero(differ) / 8);  // little-endian
+  }
+  while (n < limit && at[n] == at[-1]) ++n;
+  return n;
+}
+
+// The first j >= i where a run of kMinRun or more starts (bytes j, j+1 and j+2 equal to
+// byte j-1), or n: sixteen places at a time with SSE2.
+inline size_t next_run(const uint8_t* bytes, size_t i, size_t n) {
+  size_t j = std::max<size_t>(i, 1);
+#ifdef __SSE2__
+  const auto load = [&](size_t at) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(bytes + at)); };
+  for (; j + 18 <= n; j += 16) {
+    const __m128i before = load(j - 1), at = load(j), next = load(j + 1), after = load(j + 2);
+    const __m128i runs = _mm_and_si128(_mm_and_si128(_mm_cmpeq_epi8(at, before), _mm_cmpeq_epi8(next, at)),
+                                       _mm_cmpeq_epi8(after, next));
+    if (const int mask = _mm_movemask_epi8(runs)) return j + size_t(std::countr_zero(unsigned(mask)));
+  }
+#endif
+  for (; j + 2 < n; ++j)
+    if (bytes[j] == bytes[j - 1] && bytes[j + 1] == bytes[j - 1] && bytes[j + 2] == bytes[j - 1]) return j;
+  return n;
+}
+
+// A code length sequence (the literal/length lengths, then the distance lengths) as
+// the code length alphabet's symbols: 16 repeats the last length 3-6 times, 17 and 18
+// give 3-10 and 11-138 zeros.
+struct CodeLength {
+  uint8_t symbol, extra;
+};
+std::vector<CodeLength> code_length_symbols(const std::vector<uint8_t>& lengths) {
+  std::vector<CodeLength> out;
+  for (size_t k = 0; k < lengths.size();) {
+    const uint8_t length = lengths[k];
+    size_t run = 1;
+    while (k + run < lengths.size() && lengths[k + run] == length) ++run;
+    k += run;
+    if (length == 0) {
+      for (; run >= 11; run -= std::min<size_t>(run, 138)) out.push_back({18, uint8_t(std::min<size_t>(run, 138) - 11)});
+      if (run >= 3) out.push_back({17, uint8_t(run - 3)}), run = 0;
+    } else {
+      out.push_back({length, 0}), --run;
+      for (; run >= 3; run -= std::min<size_t>(run, 6)) out.push_back({16, uint8_t(std::min<size_t>(run, 6) - 3)});
+    }
+    for (; run > 0; --run) out.push_back({length, 0});
+  }
+  return out;
+}
+
+// Bytes [begin, end) of `bytes` as tokens: a literal (0..255), or 256 + a run's length
+// less 3 (a run may repeat the byte before `begin`); their symbols' frequencies counted.
+// `tokens` has room for end - begin + 4. Returns how many.
+size_t tokenize(const uint8_t* bytes, size_t begin, size_t end, uint16_t* tokens, uint32_t* frequency) {
+  // Literals counted four at a time, a table for each (a repeated byte waits on no one
+  // counter); the fifth counts what is not a literal.
+  std::array<std::array<uint32_t, 256>, 5> literal_counts{};
+  size_t count = 0;
+  for (size_t i = begin; i < end;) {
+    const size_t run_start = next_run(bytes, i, end);
+    for (; i + 4 <= run_start; i += 4, count += 4)
+      for (size_t k = 0; k < 4; ++k) tokens[count + k] = bytes[i + k], ++literal_counts[k][bytes[i + k]];
+    if (run_start == end) {
+      for (; i < end; ++i) tokens[count++] = bytes[i], ++literal_counts[0][bytes[i]];
+      break;
+    }
+    // Up to three literals before the run, without a branch on how many: the bytes to
+    // i + 3 lie within the run's first three.
+    const size_t literals = run_start - i;
+    for (size_t k = 0; k < 4; ++k) tokens[count + k] = bytes[i + k], ++literal_counts[k < literals ? k : 4][bytes[i + k]];
+    count += literals, i = run_start;
+    const size_t run = run_length(bytes + i, std::min(kMaxRun, end - i));
+    tokens[count++] = uint16_t(256 + run - kMinRun);
+    ++frequency[kLengthCodes[run].symbol];
+    i += run;
+  }
+  for (size_t b = 0; b < 256; ++b)
+    frequency[b] = literal_counts[0][b] + literal_counts[1][b] + literal_counts[2][b] + literal_counts[3][b];
+  return count;
+}
+
+// One block of dynamic Huffman codes: its header (the codes' lengths, themselves
+// Huffman coded), its tokens and its end.
+void write_block(const uint16_t* tokens, size_t count, std::array<uint32_t, kLiteralLengthSymbols>& frequency, bool last,
+                 BitWriter& bits) {
+  frequency[kEndOfBlock] = 1;
+  std::array<uint8_t, kLiteralLengthSymbols> lengths{};
+  std::array<uint16_t, kLiteralLengthSymbols> codes{};
+  huffman_lengths(frequency.data(), kLiteralLengthSymbols, kMaxCodeBits, lengths.data());
+  canonical_codes(lengths.data(), kLiteralLengthSymbols, codes.data());
+  int literal_symbols = kLiteralLengthSymbols;
+  while (literal_symbols > 257 && lengths[size_t(literal_symbols - 1)] == 0) --literal_symbols;
+  // Distance codes 0 (distance 1) and 1 (unused), one bit each: a complete code.
+  std::vector<uint8_t> sequence(lengths.begin(), lengths.begin() + literal_symbols);
+  sequence.insert(sequence.end(), {1, 1});
+  const std::vector<CodeLength> header = code_length_symbols(sequence);
+  std::array<uint32_t, kCodeLengthSymbols> header_frequency{};
+  for (const CodeLength& c : header) ++header_frequency[c.symbol];
+  std::array<uint8_t, kCodeLengthSymbols> header_lengths{};
+  std::array<uint16_t, kCodeLengthSymbols> header_codes{};
+  huffman_lengths(header_frequency.data(), kCodeLengthSymbols, kMaxCodeLengthBits, header_lengths.data());
+  canonical_codes(header_lengths.data(), kCodeLengthSymbols, header_codes.data());
+  int header_symbols = kCodeLengthSymbols;
+  while (header_symbols > 4 && header_lengths[kCodeLengthOrder[header_symbols - 1]] == 0) --header_symbols;
+
+  // Each token's bits at once: a literal's code, or a run's length code, extra bits and
+  // distance 1's code (0).
+  std::array<uint32_t, 512> token_bits{};
+  std::array<uint8_t, 512> token_bit_count{};
+  for (size_t b = 0; b < 256; ++b) token_bits[b] = codes[b], token_bit_count[b] = lengths[b];
+  for (size_t length = kMinRun; length <= kMaxRun; ++length) {
+    const LengthCode& c = kLengthCodes[length];
+    token_bits[256 + length - kMinRun] = codes[c.symbol] | uint32_t(c.extra) << lengths[c.symbol];
+    token_bit_count[256 + length - kMinRun] = uint8_t(lengths[c.symbol] + c.extra_bits + 1);
+  }
+
+  bits.put(last, 1);
+  bits.put(2, 2);  // dynamic Huffman codes
+  bits.put(uint32_t(literal_symbols - 257), 5);
+  bits.put(2 - 1, 5);
+  bits.put(uint32_t(header_symbols - 4), 4);
+  for (int k = 0; k < header_symbols; ++k) bits.put(header_lengths[kCodeLengthOrder[k]], 3);
+  constexpr int kExtraBits[kCodeLengthSymbols] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 3, 7};
+  for (const CodeLength& c : header) {
+    bits.put(header_codes[c.symbol], header_lengths[c.symbol]);
+    if (kExtraBits[c.symbol]) bits.put(c.extra, kExtraBits[c.symbol]);
+  }
+  size_t t = 0;
+  for (; t + 2 <= count; t += 2) {  // two tokens a put (at most 42 bits): half the writer's chain of dependences
+    const uint16_t a = tokens[t], b = tokens[t + 1];
+    bits.put(token_bits[a] | uint64_t(token_bits[b]) << token_bit_count[a], token_bit_count[a] + token_bit_count[b]);
+  }
+  if (t < count) bits.put(token_bits[tokens[t]], token_bit_count[tokens[t]]);
+  bits.put(codes[kEndOfBlock], lengths[kEndOfBlock]);
+}
+
+}  // namespace
+
+void deflate_runs(std::span<const uint8_t> in, std::vector<uint8_t>& out) {
+  // A block per kBlockBytes of input: its tokens and bits stay in the cache, and its
+  // codes follow the picture as it changes down the image.
+  constexpr size_t kBlockBytes = size_t(1) << 16;
+  constexpr size_t kBlockRoom = 1100 + 2 * kBlockBytes;  // a literal is at most 15 bits; a header under 1 KB
+  thread_local std::unique_ptr<uint16_t[]> tokens = std::make_unique_for_overwrite<uint16_t[]>(kBlockBytes + 4);
+  thread_local std::unique_ptr<uint8_t[]> buffer = std::make_unique_for_overwrite<uint8_t[]>(kBlockRoom);
+  out.insert(out.end(), {0x78, 0x01});  // deflate with a 32 KB window, the fastest level; a multiple of 31
+  BitWriter bits(buffer.get());
+  for (size_t begin = 0;;) {
+    const size_t end = std::min(in.size(), begin + kBlockBytes);
+    std::array<uint32_t, kLiteralLengthSymbols> frequency{};
+    const size_t count = tokenize(in.data(), begin, end, tokens.get(), frequency.data());
+    write_block(tokens.get(), count, frequency, end == in.size(), bits);
+    out.insert(out.end(), buffer.get(), bits.rewind(buffer.get()));  // the whole bytes; the rest stay in bits
+    if ((begin = end) == in.size()) break;
+  }
+  uint8_t tail[4];
+  out.insert(out.end(), tail, bits.finish_into(tail));
+  const uint32_t adler = libdeflate_adler32(1, in.data(), in.size());
+  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(uint8_t(adler >> shift));
+}
+
+}  // namespace p3d::image
