@@ -14,6 +14,7 @@
 #include "engine/render/renderer.h"
 #include "engine/util/file.h"
 #include "tools/cli.h"
+#include "tools/large_pages.h"
 
 using namespace p3d;
 
@@ -31,19 +32,57 @@ std::string columns_csv(const level::Level& level, const render::ColumnHits& hit
   return out;
 }
 
-// PNGs encoded on worker threads while the next frames render; kept in camera order, so
-// the outputs do not depend on the thread count. At most 2 x threads frames wait. The
-// workers live as long as the encoder, so each keeps its buffers and compressor from
-// frame to frame, and the frames' copies are recycled: a thread started for each frame
-// began them afresh (at 1920x1080 on two threads, 172,000 page faults and a third of
-// the time in memset and memcpy, slower than one thread).
-class PngEncoder {
+// A frame's PNG: a frame of a paletted level stays 8-bit (a paletted PNG, a quarter of
+// the bytes to filter).
+std::vector<uint8_t> png_of(const render::Frame& frame) {
+  return frame.indexed() ? image::encode_png(frame.width, frame.height, frame.indices, frame.palette)
+                         : image::encode_png(frame);
+}
+
+// What one camera makes: its PNG and, when asked for, its columns.
+struct Shot {
+  render::Camera camera;
+  std::filesystem::path png_path, csv_path;  // csv_path empty: no --columns
+  std::vector<uint8_t> png;
+  std::string csv;
+};
+
+// One camera rendered (on the renderer's threads) and encoded; its frame's statistics.
+render::RenderStats make_shot(render::Renderer& renderer, const level::Level& level, const level::State& state,
+                              render::Frame& frame, Shot& shot) {
+  render::Probe probe;
+  probe.want_columns = !shot.csv_path.empty();
+  const render::RenderStats stats = renderer.render(level, state, shot.camera, frame, &probe);
+  shot.png = png_of(frame);
+  if (probe.want_columns) shot.csv = columns_csv(level, probe.columns);
+  return stats;
+}
+
+// Whole frames rendered and encoded on worker threads, each with its own renderer and
+// frame, handed back in camera order, so the outputs do not depend on the thread count.
+// The cores share the frames' work evenly: a frame's strips drawn on every thread beside
+// encoder threads competed with them for the cores (on two threads at 3840x2160, 1.43
+// times one thread's speed, where whole frames give 1.65-1.9). At most 2 x threads
+// shots wait.
+class ShotWorkers {
  public:
-  explicit PngEncoder(int threads) : threads_(threads) {
-    if (threads_ > 1)
-      for (int i = 0; i < threads_; ++i) workers_.emplace_back([this] { work(); });
+  ShotWorkers(int threads, const level::Level& level, const level::State& state, const std::string& renderer,
+              const render::RendererOptions& options, int width, int height)
+      : threads_(threads) {
+    render::RendererOptions one = options;
+    one.threads = 1;
+    for (int i = 0; i < threads_; ++i) {
+      std::shared_ptr<render::Renderer> r = render::make_renderer(renderer, one);  // a name capture has checked
+      r->prepare(level);
+      workers_.emplace_back([=, this, &level, &state] {
+        large_pages_for_this_thread();  // its frame and buffers fault in 2 MB at a time, as the main thread's
+        render::Frame frame(width, height);
+        frame.keep_indices = true;
+        work(*r, level, state, frame);
+      });
+    }
   }
-  ~PngEncoder() {
+  ~ShotWorkers() {
     {
       const std::lock_guard lock(mutex_);
       stop_ = true;
@@ -51,20 +90,15 @@ class PngEncoder {
     work_ready_.notify_all();
     for (std::thread& t : workers_) t.join();
   }
-  PngEncoder(const PngEncoder&) = delete;
-  PngEncoder& operator=(const PngEncoder&) = delete;
+  ShotWorkers(const ShotWorkers&) = delete;
+  ShotWorkers& operator=(const ShotWorkers&) = delete;
 
-  void add(const std::filesystem::path& path, const render::Frame& frame, Outputs& outputs) {
-    if (threads_ <= 1) return outputs.write_now(path, encode(frame));
-    while (pending_.size() >= size_t(2 * threads_)) finish_oldest(outputs);
-    std::unique_ptr<Job> job = take_spare();
-    job->path = path;
-    render::Frame& copy = job->frame;  // what the PNG needs: the indices or the colours, into kept buffers
-    copy.width = frame.width, copy.height = frame.height;
-    copy.indices.assign(frame.indices.begin(), frame.indices.end());
-    copy.palette.assign(frame.palette.begin(), frame.palette.end());
-    if (frame.indexed()) copy.pixels.clear();
-    else copy.pixels.assign(frame.pixels.begin(), frame.pixels.end());
+  // Queues a shot; calls done(shot) for the oldest ones, in order, to make room.
+  template <typename Done>
+  void add(Shot shot, Done&& done) {
+    while (pending_.size() >= size_t(2 * threads_)) finish_oldest(done);
+    auto job = std::make_unique<Job>();
+    job->shot = std::move(shot);
     {
       const std::lock_guard lock(mutex_);
       queue_.push_back(job.get());
@@ -72,25 +106,19 @@ class PngEncoder {
     work_ready_.notify_one();
     pending_.push_back(std::move(job));
   }
-  void finish(Outputs& outputs) {
-    while (!pending_.empty()) finish_oldest(outputs);
+  template <typename Done>
+  void finish(Done&& done) {
+    while (!pending_.empty()) finish_oldest(done);
   }
 
  private:
   struct Job {
-    std::filesystem::path path;
-    render::Frame frame;
-    std::vector<uint8_t> bytes;
+    Shot shot;
     std::exception_ptr error;
     bool done = false;
   };
 
-  // A frame of a paletted level stays 8-bit: a paletted PNG, a quarter of the bytes to filter.
-  static std::vector<uint8_t> encode(const render::Frame& frame) {
-    return frame.indexed() ? image::encode_png(frame.width, frame.height, frame.indices, frame.palette)
-                           : image::encode_png(frame);
-  }
-  void work() {
+  void work(render::Renderer& renderer, const level::Level& level, const level::State& state, render::Frame& frame) {
     for (;;) {
       Job* job = nullptr;
       {
@@ -100,42 +128,33 @@ class PngEncoder {
         job = queue_.front();
         queue_.pop_front();
       }
-      std::vector<uint8_t> bytes;
       std::exception_ptr error;
       try {
-        bytes = encode(job->frame);
+        make_shot(renderer, level, state, frame, job->shot);
       } catch (...) {
         error = std::current_exception();
       }
       {
         const std::lock_guard lock(mutex_);
-        job->bytes = std::move(bytes), job->error = error, job->done = true;
+        job->error = error, job->done = true;
       }
       job_done_.notify_all();
     }
   }
-  void finish_oldest(Outputs& outputs) {
+  template <typename Done>
+  void finish_oldest(Done&& done) {
     Job& job = *pending_.front();
     {
       std::unique_lock lock(mutex_);
       job_done_.wait(lock, [&] { return job.done; });
     }
     if (job.error) std::rethrow_exception(job.error);
-    outputs.write_now(job.path, job.bytes);  // on disk while the next frames render, not held to the end
-    job.bytes.clear(), job.done = false;
-    spares_.push_back(std::move(pending_.front()));
+    done(job.shot);
     pending_.pop_front();
-  }
-  std::unique_ptr<Job> take_spare() {
-    if (spares_.empty()) return std::make_unique<Job>();
-    std::unique_ptr<Job> job = std::move(spares_.back());
-    spares_.pop_back();
-    return job;
   }
 
   int threads_;
   std::deque<std::unique_ptr<Job>> pending_;  // camera order; the main thread's
-  std::vector<std::unique_ptr<Job>> spares_;  // encoded and written: buffers to reuse
   std::mutex mutex_;                          // guards queue_, stop_ and each job's results
   std::condition_variable work_ready_, job_done_;
   std::deque<Job*> queue_;                    // jobs no worker has taken yet
@@ -211,45 +230,50 @@ int main(int argc, char** argv) {
     if (!renderer->supports(level))
       throw Error(opened.name + ": the " + renderer_name + " renderer cannot draw this level (it needs " +
                   std::string(renderer->needs()) + ")");
-    renderer->prepare(level);
     const level::State state = level::start_state(level, skill);
-    render::Frame frame(width, height);
-    frame.keep_indices = true;
-    render::Probe probe;
-    probe.want_columns = !columns.empty();
+    const bool many = !cameras.empty();
+    auto shot_of = [&](const render::CameraSpec& spec) {
+      cli::warn_if_outside("pseudo3d-capture", level, spec);
+      Shot shot{render::camera_at(level, spec.pos, spec.angle, spec.eye, spec.fov), output, {}, {}, {}};
+      if (many) shot.png_path = std::filesystem::path(output) / (spec.name + ".png");
+      if (!columns.empty())
+        shot.csv_path = many ? std::filesystem::path(columns) / (spec.name + ".csv") : std::filesystem::path(columns);
+      return shot;
+    };
     std::vector<std::string> json_frames;
     Outputs outputs;  // every frame, all or nothing
-    PngEncoder encoder(ropt.threads);
-    for (const render::CameraSpec& shot : shots) {
-      cli::warn_if_outside("pseudo3d-capture", level, shot);
-      const render::Camera camera = render::camera_at(level, shot.pos, shot.angle, shot.eye, shot.fov);
-      const auto start = std::chrono::steady_clock::now();
-      const render::RenderStats s = renderer->render(level, state, camera, frame, &probe);
-      double ms = cli::seconds_since(start) * 1000;
-
-      const bool many = !cameras.empty();
-      encoder.add(many ? std::filesystem::path(output) / (shot.name + ".png") : std::filesystem::path(output), frame,
-                  outputs);
-      if (!columns.empty())
-        outputs.add(many ? std::filesystem::path(columns) / (shot.name + ".csv") : std::filesystem::path(columns),
-                    columns_csv(level, probe.columns));
-      if (stats) {
-        std::vector<double> times{ms};  // median of a few more frames: one frame is too noisy to report
-        for (int i = 0; i < 4; ++i) {
-          const auto again = std::chrono::steady_clock::now();
-          renderer->render(level, state, camera, frame);
-          times.push_back(cli::seconds_since(again) * 1000);
+    auto write = [&](Shot& shot) {
+      outputs.write_now(shot.png_path, shot.png);  // on disk while the next frames render, not held to the end
+      if (!shot.csv_path.empty()) outputs.add(shot.csv_path, std::move(shot.csv));
+    };
+    if (many && !stats && ropt.threads > 1) {  // frames shared out whole
+      ShotWorkers workers(ropt.threads, level, state, renderer_name, ropt, width, height);
+      for (const render::CameraSpec& spec : shots) workers.add(shot_of(spec), write);
+      workers.finish(write);
+    } else {  // each frame's strips on every thread (--stats times them so)
+      renderer->prepare(level);
+      render::Frame frame(width, height);
+      frame.keep_indices = true;
+      for (const render::CameraSpec& spec : shots) {
+        Shot shot = shot_of(spec);
+        const render::RenderStats s = make_shot(*renderer, level, state, frame, shot);
+        write(shot);
+        if (!stats) continue;
+        std::vector<double> times;  // the median of five renders: one frame is too noisy to report
+        for (int i = 0; i < 5; ++i) {
+          const auto start = std::chrono::steady_clock::now();
+          renderer->render(level, state, shot.camera, frame);
+          times.push_back(cli::seconds_since(start) * 1000);
         }
         std::nth_element(times.begin(), times.begin() + 2, times.end());
-        ms = times[2];
-        const std::string name = shot.name.empty() ? "frame" : shot.name;
+        const double ms = times[2];
+        const std::string name = spec.name.empty() ? "frame" : spec.name;
         std::printf("%s stats: %s\n%s time: ms_per_frame=%s\n", name.c_str(), statdump(render::stat_fields(s)).c_str(),
                     name.c_str(), stat_number(std::round(ms * 1000) / 1000).c_str());
         json_frames.push_back("{\"name\": " + json_string(name) + ", \"stats\": " + stats_json(render::stat_fields(s)) +
                               ", \"time\": " + stats_json({{"ms_per_frame", std::round(ms * 1000) / 1000}}) + "}");
       }
     }
-    encoder.finish(outputs);
     if (!json.empty()) {
       std::string j = "{\"level\": " + json_string(opened.name) + ", \"renderer\": " + json_string(renderer_name) +
                       ", \"frames\": [\n";

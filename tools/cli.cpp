@@ -228,8 +228,8 @@ void add_renderer_options(App& app, render::RendererOptions& o) {
       ->capture_default_str();
   o.threads = int(std::max(1u, std::thread::hardware_concurrency()));
   app.add_option("--threads", o.threads,
-                 "threads drawing each frame (bsp: column strips; capture: also encoding PNGs); "
-                 "frames and statistics are the same for any count (default: every core)")
+                 "threads drawing each frame (bsp: column strips; capture --cameras: whole frames, each drawn "
+                 "and encoded by one thread); frames and statistics are the same for any count (default: every core)")
       ->check(Range(1, 256))
       ->capture_default_str();
 }

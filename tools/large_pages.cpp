@@ -10,6 +10,8 @@
 
 #include <cstdint>
 
+#include "tools/large_pages.h"
+
 namespace {
 
 // Address space only: a page is backed when first touched, as any allocation's.
@@ -19,6 +21,8 @@ constexpr size_t kArenaAlign = size_t(64) << 20;  // a multiple of mimalloc's se
 // Before main, so that all but the C++ runtime's first allocations come from the arena;
 // where the address space or the kernel's huge pages are not there, mimalloc maps its
 // own memory as usual.
+mi_arena_id_t arena_id;
+
 const bool huge_page_arena = [] {
   void* space = mmap(nullptr, kArenaBytes + kArenaAlign, PROT_READ | PROT_WRITE,
                      MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
@@ -31,13 +35,21 @@ const bool huge_page_arena = [] {
   // committed, mimalloc commits and decommits its ranges itself, so freed memory leaves
   // the process as it would under glibc (as committed, the hostile levels' peaks grew by
   // 40-150%).
-  mi_arena_id_t id;
   if (!mi_manage_os_memory_ex(arena, kArenaBytes, /*is_committed=*/false, /*is_large=*/false, /*is_zero=*/true,
-                              /*numa_node=*/-1, /*exclusive=*/true, &id))
+                              /*numa_node=*/-1, /*exclusive=*/true, &arena_id))
     return false;
-  mi_heap_t* heap = mi_heap_new_in_arena(id);
-  if (heap) mi_heap_set_default(heap);
-  return heap != nullptr;
+  return p3d::large_pages_for_this_thread();
 }();
 
 }  // namespace
+
+namespace p3d {
+
+// A thread's heap in the arena (mimalloc's heaps are each their thread's own).
+bool large_pages_for_this_thread() {
+  mi_heap_t* heap = mi_heap_new_in_arena(arena_id);
+  if (heap) mi_heap_set_default(heap);
+  return heap != nullptr;
+}
+
+}  // namespace p3d
