@@ -57,6 +57,7 @@ struct Settings {
   int cameras = 30;            // the wad section: random cameras per map
   int runs = 5;                // the wad section: compiles per map and tool (median)
   int peer_reps = 3;           // the doom section: Crispy Doom timings per demo (median); 0: ours only
+  int threads = 0;             // the doom, wad and capture sections' "every core": this many threads (0: every core)
   int width = 640, height = 400;
   int repeat = 3;              // renders per camera; the median of all frames is reported
   double budget_seconds = 2;   // per renderer and map: slow renderers render a prefix of the path
@@ -65,6 +66,9 @@ struct Settings {
   std::vector<std::string> renderers;
   std::string beside_mapc;     // the hostile section: another pseudo3d-mapc timed beside this one
 };
+
+// The thread count of "every core": --threads, or the machine's cores.
+int every_core(const Settings& s) { return s.threads > 0 ? s.threads : int(std::max(1u, std::thread::hardware_concurrency())); }
 
 struct Timing {
   double median_ms = 0;
@@ -519,7 +523,7 @@ void bench_wad(const Settings& s) {
   const std::string mapc = (own_directory() / "pseudo3d-mapc").string();
   report.print("\n### %s: every map compiled (whole process, median of %d) beside ZDBSP, and rendered\n\n",
               source.wads.back().filename().c_str(), s.runs);
-  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  const int cores = every_core(s);
   report.print("| map | lines | mapc ms | zdbsp ms | mapc / zdbsp | segs (2-sided x2) | zdbsp segs | segs / zdbsp | "
               "leaves | zdbsp subsectors | leaves / zdbsp | mean depth | zdbsp mean depth | depth / zdbsp | "
               "bsp ms/frame %dx%d | fps | sprites / frame | without things ms | with / without | "
@@ -877,7 +881,7 @@ void bench_doom_start_views(const Settings& s, int cores, bool crispy) {
 // Doom's rules); then ours on random cameras inside the map, at 640x400 on one thread
 // and on every core, and at 1920x1080.
 void bench_doom(const Settings& s) {
-  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  const int cores = every_core(s);
   std::vector<std::filesystem::path> iwads;
   if (!s.wads.iwad.empty()) iwads.push_back(s.wads.iwad);
   else
@@ -971,40 +975,76 @@ std::vector<uint8_t> stb_png(const image::Image& img) {  // the encoder we repla
   return out;
 }
 
-// The outpost path's frames: render, PNG encoding by ours and by stb_image_write (in one
-// run), and whole `capture --cameras` processes on one thread and on every core.
+// A frame's PNG deflated one way (the frame's indices when it kept them, else its colours).
+std::vector<uint8_t> frame_png(const render::Frame& frame, image::PngDeflate how) {
+  return frame.indexed() ? image::encode_png(frame.width, frame.height, frame.indices, frame.palette, how)
+                         : image::encode_png(frame, how);
+}
+
+// The outpost path's frames (RGB) and random views of freedoom2 MAP01 (8-bit, when
+// Freedoom is installed): render, then each PNG encoding in one run (ours deflating
+// runs, ours with libdeflate's search, stb_image_write); then whole `capture --cameras`
+// processes of the outpost on one thread and on every core.
 void bench_capture(const Settings& s) {
   const auto dir = std::filesystem::temp_directory_path() / ("p3d-bench-capture-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const auto maps = std::filesystem::path(s.source_dir) / "maps";
-  const level::Level level = bsp::build(map::load_map(maps / "outpost.map"), {});
-  const auto path = cameras_from(level, render::read_camera_list(maps / "outpost.path"));
-  auto renderer = render::make_renderer("bsp");
-  renderer->prepare(level);
-  const level::State state = level::start_state(level);
-  render::Frame frame(s.width, s.height);
-  double render_ms = 0, ours_ms = 0, stb_ms = 0, ours_bytes = 0, stb_bytes = 0;
-  for (const render::Camera& camera : path) {
-    auto t = Clock::now();
-    renderer->render(level, state, camera, frame);
-    render_ms += cli::seconds_since(t) * 1000;
-    t = Clock::now();
-    ours_bytes += double(image::encode_png(frame).size());
-    ours_ms += cli::seconds_since(t) * 1000;
-    t = Clock::now();
-    stb_bytes += double(stb_png(frame).size());
-    stb_ms += cli::seconds_since(t) * 1000;
+  struct Scene {
+    std::string name;
+    level::Level level;
+    std::vector<render::Camera> cameras;
+    bool indexed;
+  };
+  std::vector<Scene> scenes;
+  {
+    level::Level outpost = bsp::build(map::load_map(maps / "outpost.map"), {});
+    auto path = cameras_from(outpost, render::read_camera_list(maps / "outpost.path"));
+    scenes.push_back({"outpost path (RGB)", std::move(outpost), std::move(path), false});
   }
-  const double n = double(path.size());
-  report.print("\n### Capture: %zu frames of the outpost path, %dx%d\n\n", path.size(), s.width, s.height);
-  report.print("| step | ms/frame | KB/frame |\n|---|---:|---:|\n");
-  report.print("| render (bsp) | %s | |\n", fixed(render_ms / n, 2).c_str());
-  report.print("| PNG, ours (libdeflate) | %s | %s |\n", fixed(ours_ms / n, 2).c_str(), fixed(ours_bytes / n / 1024, 0).c_str());
-  report.print("| PNG, stb_image_write | %s | %s |\n", fixed(stb_ms / n, 2).c_str(), fixed(stb_bytes / n / 1024, 0).c_str());
-  report.print("| stb / ours | %s | %s |\n", fixed(stb_ms / ours_ms, 2).c_str(), fixed(stb_bytes / ours_bytes, 2).c_str());
+  const std::filesystem::path freedoom = "/usr/share/games/doom/freedoom2.wad";
+  if (std::filesystem::exists(freedoom)) {
+    level::Level level = bsp::build_wad_map(bsp::read_wads({freedoom}), "MAP01", {}, nullptr);
+    auto cameras = random_cameras(level, 100, 1);
+    scenes.push_back({"freedoom2 MAP01 (8-bit)", std::move(level), std::move(cameras), true});
+  }
+  report.print("\n### Capture: a frame's render and its PNG, %dx%d, one thread\n\n", s.width, s.height);
+  report.print("| frames | step | ms/frame | KB/frame | ÷ render (time) |\n|---|---|---:|---:|---:|\n");
+  for (const Scene& scene : scenes) {
+    auto renderer = render::make_renderer("bsp");
+    renderer->prepare(scene.level);
+    const level::State state = level::start_state(scene.level, s.skill);
+    render::Frame frame(s.width, s.height);
+    frame.keep_indices = scene.indexed;
+    double render_ms = 0, runs_ms = 0, search_ms = 0, stb_ms = 0, runs_bytes = 0, search_bytes = 0, stb_bytes = 0;
+    for (const render::Camera& camera : scene.cameras) {
+      auto t = Clock::now();
+      renderer->render(scene.level, state, camera, frame);
+      render_ms += cli::seconds_since(t) * 1000;
+      t = Clock::now();
+      runs_bytes += double(frame_png(frame, image::PngDeflate::kRuns).size());
+      runs_ms += cli::seconds_since(t) * 1000;
+      t = Clock::now();
+      search_bytes += double(frame_png(frame, image::PngDeflate::kSearch).size());
+      search_ms += cli::seconds_since(t) * 1000;
+      if (frame.indexed()) continue;  // stb_image_write writes no palette
+      t = Clock::now();
+      stb_bytes += double(stb_png(frame).size());
+      stb_ms += cli::seconds_since(t) * 1000;
+    }
+    const double n = double(scene.cameras.size());
+    auto row = [&](const char* step, double ms, double bytes) {
+      report.print("| %s | %s | %s | %s | %s |\n", scene.name.c_str(), step, fixed(ms / n, 2).c_str(),
+                   bytes > 0 ? fixed(bytes / n / 1024, 0).c_str() : "", fixed(ms / render_ms, 2).c_str());
+    };
+    row("render (bsp)", render_ms, 0);
+    row("PNG, ours: runs", runs_ms, runs_bytes);
+    row("PNG, ours: libdeflate level 1", search_ms, search_bytes);
+    if (stb_bytes > 0) row("PNG, stb_image_write", stb_ms, stb_bytes);
+  }
   const std::string capture = (own_directory() / "pseudo3d-capture").string();
-  const std::string cores = std::to_string(std::max(1u, std::thread::hardware_concurrency()));
-  report.print("\n| `pseudo3d-capture --cameras` (whole process) | seconds | frames/s |\n|---|---:|---:|\n");
+  const size_t frames = scenes.front().cameras.size();
+  const std::string cores = std::to_string(every_core(s));
+  report.print("\n| `pseudo3d-capture --cameras`, outpost path (whole process) | seconds | frames/s |\n|---|---:|---:|\n");
   for (const std::string& threads : {std::string("1"), cores}) {
     std::vector<double> runs;
     for (int r = 0; r < 3; ++r)
@@ -1012,7 +1052,8 @@ void bench_capture(const Settings& s) {
                                   "--size", std::to_string(s.width) + "x" + std::to_string(s.height), "--threads", threads,
                                   "-o", (dir / "frames").string()}));
     const double seconds = median(runs);
-    report.print("| --threads %s | %s | %s |\n", threads.c_str(), fixed(seconds, 2).c_str(), fixed(n / seconds, 0).c_str());
+    report.print("| --threads %s | %s | %s |\n", threads.c_str(), fixed(seconds, 2).c_str(),
+                 fixed(double(frames) / seconds, 0).c_str());
   }
   std::filesystem::remove_all(dir);
 }
@@ -1137,6 +1178,8 @@ int main(int argc, char** argv) {
   app.add_option("--beside", s.beside_mapc, "hostile: another pseudo3d-mapc (an older build) compiling each level just before this one")
       ->check(cli::existing_file());
   std::string json;
+  app.add_option("--threads", s.threads, "doom, wad and capture: the thread count timed beside one thread (default: every core)")
+      ->check(cli::Range(1, 256));
   app.add_option("--peer-reps", s.peer_reps, "doom: Crispy Doom's timings per demo (median); 0: ours only")
       ->check(cli::Range(0, 100))
       ->capture_default_str();
