@@ -115,6 +115,7 @@ bool check(const level::Level& level, const std::string& name) {
 wad::ImportOptions import_options(const Args& a) {
   wad::ImportOptions o;
   if (!a.all_warnings) o.max_warnings_per_kind = 5;
+  o.colours = !a.svg.empty();  // the .bsp keeps palette indices: colours only for --svg's view
   return o;
 }
 

@@ -157,6 +157,11 @@ class Builder {
   template <typename Picture>  // map::Texture or map::SpriteImage
   static level::Texture level_texture(const Picture& p, Picture* consumable) {
     const int w = p.image.width, h = p.image.height;
+    if (!p.opaque.empty()) {  // imported without colours: a level to be written only
+      if (consumable)
+        return level::make_texture_without_colours(p.name, w, h, std::move(consumable->indices), std::move(consumable->opaque));
+      return level::make_texture_without_colours(p.name, w, h, p.indices, p.opaque);
+    }
     if (!p.column_major)
       return level::make_texture(p.name, w, h, p.image.pixels.data(), p.indices.empty() ? nullptr : p.indices.data());
     if (consumable)

@@ -34,6 +34,10 @@ struct Texture {
   int width = 0, height = 0;
   std::vector<uint32_t> texels;   // column-major: texels[u * height + v], RGBA8; alpha 0 = transparent
   std::vector<uint8_t> indices;   // paletted levels: palette indices, laid out as texels; else empty
+  // A level made only to be written (pseudo3d-mapc: make_texture_without_colours) has
+  // no texels: this is 1 where a texel is drawn, laid out as indices. Renderers need
+  // the texels: such a level is read back before it is drawn.
+  std::vector<uint8_t> opaque;
   // Derived by make_texture:
   bool holes = false;             // some texel is transparent
   bool pow2_width = false, pow2_height = false;
@@ -367,6 +371,10 @@ Texture make_texture(const std::string& name, int width, int height, const uint3
 // The same from texels already column-major (as Texture keeps them; indices likewise, or empty).
 Texture make_texture_from_columns(std::string name, int width, int height, std::vector<uint32_t> texels,
                                   std::vector<uint8_t> indices = {});
+// A paletted texture without its colours, for a level that is only written: its
+// indices and `opaque` (1 where drawn), column-major; no texels (see Texture::opaque).
+Texture make_texture_without_colours(std::string name, int width, int height, std::vector<uint8_t> indices,
+                                     std::vector<uint8_t> opaque);
 
 // Walks the walls hit by the ray origin + s * dir (s > 0) in order of distance,
 // using the BSP (leaf by leaf, each leaf's hits sorted). visit(wall, s, t) returns

@@ -1,5 +1,6 @@
 // Level -> bytes, following format.h field by field.
 #include <cstring>
+#include <stdexcept>
 
 #include "engine/level/format.h"
 #include "engine/level/io.h"
@@ -28,10 +29,12 @@ void write_side(ByteWriter& out, const Side& s) {
 }
 
 // Palette indices, then one opacity bit per texel; or RGBA8: column-major, as a
-// Texture keeps them, so that each is one copy.
+// Texture keeps them, so that each is one copy. A texture without colours (only
+// paletted levels have them) gives its opacity from Texture::opaque.
 void write_texels(ByteWriter& out, const Texture& t, bool paletted) {
-  const size_t n = t.texels.size();
+  const size_t n = size_t(t.width) * size_t(t.height);
   if (!paletted) {
+    if (t.texels.size() != n) throw std::logic_error("write_texels: an RGBA level's texture without its colours");
     uint8_t* bytes = out.extend(n * 4);
     for (size_t p = 0; p < n; ++p) {
       const uint32_t c = t.texels[p];  // R,G,B,A byte order
@@ -47,16 +50,22 @@ void write_texels(ByteWriter& out, const Texture& t, bool paletted) {
     if (n % 8) bits[n / 8] = uint8_t((1u << (n % 8)) - 1);
     return;
   }
-  for (size_t byte = 0; byte < n / 8; ++byte) {
-    uint8_t b = 0;
-    for (size_t k = 0; k < 8; ++k) b |= uint8_t((t.texels[8 * byte + k] >> 24 != 0) << k);
-    bits[byte] = b;
-  }
-  if (n % 8) {
-    uint8_t b = 0;
-    for (size_t p = n / 8 * 8; p < n; ++p) b |= uint8_t((t.texels[p] >> 24 != 0) << (p % 8));
-    bits[n / 8] = b;
-  }
+  auto pack = [&](auto drawn) {
+    for (size_t byte = 0; byte < n / 8; ++byte) {
+      uint8_t b = 0;
+      for (size_t k = 0; k < 8; ++k) b |= uint8_t(drawn(8 * byte + k) << k);
+      bits[byte] = b;
+    }
+    if (n % 8) {
+      uint8_t b = 0;
+      for (size_t p = n / 8 * 8; p < n; ++p) b |= uint8_t(drawn(p) << (p % 8));
+      bits[n / 8] = b;
+    }
+  };
+  if (t.texels.empty())
+    pack([&](size_t p) { return t.opaque[p] != 0; });
+  else
+    pack([&](size_t p) { return (t.texels[p] >> 24) != 0; });
 }
 
 void write_payload(ByteWriter& out, const Level& level) {
@@ -208,7 +217,7 @@ void write_payload(ByteWriter& out, const Level& level) {
 // as write_payload writes them, their names, and the texels.
 size_t encoded_size_estimate(const Level& level) {
   size_t bytes = 4096 + level.title.size() + (level.palette.size() + level.light_maps.size()) * 4;
-  for (const Texture& t : level.textures) bytes += 16 + t.name.size() + t.texels.size() * (level.paletted() ? 2 : 4);
+  for (const Texture& t : level.textures) bytes += 16 + t.name.size() + size_t(t.width) * size_t(t.height) * (level.paletted() ? 2 : 4);
   for (const Sector& s : level.sectors) bytes += 48 + s.name.size();
   for (const SpriteFrame& f : level.sprite_frames) bytes += 64 + f.name.size();
   bytes += 12 * level.sprite_images.size() + format::kWallRecord * level.walls.size() + format::kLineRecord * level.free_lines.size() +

@@ -22,6 +22,9 @@ struct Texture {
   std::string name;
   image::Image image;             // RGBA; alpha 0 where transparent. Any size up to kMaxTextureSize
   std::vector<uint8_t> indices;   // paletted art (WAD levels): each pixel's palette index, laid out as image; else empty
+  // A picture imported without its colours (wad::ImportOptions::colours false): image
+  // has its size but no pixels, and this 1 where a pixel is drawn, laid out as indices.
+  std::vector<uint8_t> opaque;
   FileLoc loc;
   // image and indices hold columns one after another (pixel (x, y) at x * height + y),
   // as Doom's art and level::Texture keep them, not rows: image.at() does not apply.
@@ -94,6 +97,7 @@ struct SpriteImage {
   std::string name;
   image::Image image;            // RGBA; alpha 0 where transparent
   std::vector<uint8_t> indices;  // paletted art: each pixel's palette index, laid out as image; else empty
+  std::vector<uint8_t> opaque;   // as Texture::opaque
   int left = 0, top = 0;         // the thing's position lies `left` pixels right of the left edge, its feet `top` below the top
   bool column_major = false;     // as Texture::column_major
 };

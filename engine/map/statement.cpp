@@ -50,7 +50,7 @@ image::Image load_picture(const Statement& s, const std::string& kind, const std
 
 Texture load_texture(const Statement& s, const std::string& name, const std::filesystem::path& map_path,
                      std::string_view file_name, const LoadOptions& options) {
-  return {name, load_picture(s, "texture", name, map_path, file_name, options), {}, s.loc()};
+  return {name, load_picture(s, "texture", name, map_path, file_name, options), {}, {}, s.loc()};
 }
 
 void Sprites::statement(Statement& s, Source& source, const LoadOptions& options) {

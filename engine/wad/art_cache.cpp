@@ -9,11 +9,21 @@ namespace p3d::wad {
 
 ArtCache::ArtCache(const Stack& stack, bool shared) : stack_(stack), shared_(shared), art_(stack) {}
 
-ArtCache::Picture ArtCache::share(Entry& entry) const {
-  if (shared_) return coloured(*entry.picture, entry.picture->indices);
+ArtCache::Picture ArtCache::share(Entry& entry, bool colours) const {
+  if (shared_) return colours ? coloured(*entry.picture, entry.picture->indices) : uncoloured(*entry.picture);
   if (entry.handed_over) throw std::logic_error("ArtCache: a picture of a cache that is not shared was asked for twice");
   entry.handed_over = true;
-  return colour(std::move(*entry.picture));
+  return colours ? colour(std::move(*entry.picture)) : uncoloured(std::move(*entry.picture));
+}
+
+ArtCache::Picture ArtCache::uncoloured(IndexedImage img) {
+  Picture out;
+  out.colours.width = img.width, out.colours.height = img.height;
+  out.indices = std::move(img.indices);
+  out.opaque = std::move(img.opaque);
+  out.left = img.left_offset;
+  out.top = img.top_offset;
+  return out;
 }
 
 ArtCache::Picture ArtCache::colour(IndexedImage img) const {

@@ -34,10 +34,12 @@ class ArtCache {
   const Art& art() const { return art_; }
 
   // A picture in the level's colours: RGBA (alpha 0 where transparent) and palette
-  // indices, both a column after another.
+  // indices, both a column after another. Without colours (share's `colours` false),
+  // `colours` has the size but no pixels and `opaque` is 1 where a pixel is drawn.
   struct Picture {
     image::Image colours;
     std::vector<uint8_t> indices;
+    std::vector<uint8_t> opaque;
     int left = 0, top = 0;  // sprites: the origin's place (IndexedImage's offsets)
   };
   // A picture or why there is none: `problems` are warnings for every map that uses it
@@ -55,7 +57,7 @@ class ArtCache {
   // An entry's picture in colours for a level: from a copy of its indices, or from the
   // indices themselves in a cache that is not shared (each name is asked for once by one
   // import).
-  Picture share(Entry& entry) const;
+  Picture share(Entry& entry, bool colours = true) const;
 
   // The sprite lumps between S_START and S_END (and SS_), in the WADs' order, and the
   // positions among them of those whose names begin with `sprite` (4 letters).
@@ -75,6 +77,7 @@ class ArtCache {
 
  private:
   Picture coloured(const IndexedImage& img, std::vector<uint8_t> indices) const;
+  static Picture uncoloured(IndexedImage img);
 
   const Stack& stack_;
   const bool shared_;

@@ -94,6 +94,7 @@ class Importer {
     t.name = name;
     t.image = std::move(picture.colours);
     t.indices = std::move(picture.indices);
+    t.opaque = std::move(picture.opaque);
     t.column_major = true;
     t.loc = FileLoc{data_.where, 0};
     src_.textures.push_back(std::move(t));
@@ -110,7 +111,7 @@ class Importer {
     const bool found = entry && entry->picture;
     if (entry)
       for (const std::string& p : entry->problems) warn("broken patches", record, p);
-    const int index = found ? add_texture(name, cache_.share(*entry)) : map::kNone;
+    const int index = found ? add_texture(name, cache_.share(*entry, options_.colours)) : map::kNone;
     if (!found && must_exist) warn("unknown textures", record, "texture " + printable(name) + " does not exist (drawn as missing)");
     wall_textures_[name] = index;
     if (const std::string pair = doom::switch_partner(name); found && !pair.empty()) wall_texture(pair, record, false);
@@ -126,7 +127,7 @@ class Importer {
     for (const std::string& p : entry.problems) warn("broken flats", record, p);
     int index;
     if (entry.picture) {
-      index = add_texture(name, cache_.share(entry));
+      index = add_texture(name, cache_.share(entry, options_.colours));
     } else {
       warn("unknown flats", record, "flat " + printable(name) + " does not exist (drawn as a placeholder)");
       index = add_texture(name, cache_.colour(placeholder()));
@@ -535,11 +536,12 @@ class Importer {
     ArtCache::Entry& entry = cache_.sprite(lump);
     for (const std::string& p : entry.problems) warn("broken sprites", record, p + " (not drawn)");
     if (entry.picture) {
-      ArtCache::Picture picture = cache_.share(entry);
+      ArtCache::Picture picture = cache_.share(entry, options_.colours);
       map::SpriteImage out;
       out.name = lump.name;
       out.image = std::move(picture.colours);
       out.indices = std::move(picture.indices);
+      out.opaque = std::move(picture.opaque);
       out.column_major = true;
       out.left = picture.left;
       out.top = picture.top;

@@ -47,6 +47,10 @@ struct ImportOptions {
   // Pictures made once for many maps of the same Stack (see art_cache.h); when unset,
   // the import makes its own.
   std::shared_ptr<ArtCache> art_cache;
+  // False for a level that is only written (pseudo3d-mapc): its pictures keep their
+  // palette indices and which pixels are drawn, not their colours (a compiled level
+  // stores no more; reading it back colours them).
+  bool colours = true;
 };
 
 struct ImportResult {

@@ -10,6 +10,7 @@
 #include "engine/bsp/check.h"
 #include "engine/bsp/load.h"
 #include "engine/image/image.h"
+#include "engine/level/io.h"
 #include "engine/play/world.h"
 #include "engine/render/renderer.h"
 #include "engine/util/error.h"
@@ -662,6 +663,26 @@ TEST(Import, MaskedMiddlesShowWhatIsBehindAndAreNotTiled) {
   EXPECT_GT(mesh, 0);
   EXPECT_GT(through, 0);  // the holes show the room behind
   expect_sound(b.level, "masked");
+}
+
+// mapc imports a map without its pictures' colours (ImportOptions::colours false): the
+// compiled level it writes is the same, byte for byte, as from the coloured import,
+// holes (a masked middle, the things' sprites) and all, and reads back in colours.
+TEST(Import, ALevelImportedWithoutColoursWritesTheSameBytes) {
+  TestMap m = two_rooms();
+  m.sides[2].middle = "MESH";  // every other column transparent
+  const Stack stack = stack_of(m);
+  wad::ImportOptions plain;
+  plain.colours = false;
+  const level::Level coloured = bsp::build_wad_map(stack, "MAP01", {}, nullptr);
+  const level::Level uncoloured = bsp::build_wad_map(stack, "MAP01", {}, nullptr, nullptr, plain);
+  ASSERT_TRUE(std::any_of(uncoloured.textures.begin(), uncoloured.textures.end(),
+                          [](const level::Texture& t) { return t.holes && t.texels.empty() && !t.opaque.empty(); }));
+  const std::vector<uint8_t> bytes = level::encode(uncoloured);
+  EXPECT_EQ(bytes, level::encode(coloured));
+  const level::Level back = level::decode(bytes, "uncoloured");
+  ASSERT_EQ(back.textures.size(), coloured.textures.size());
+  for (size_t i = 0; i < back.textures.size(); ++i) EXPECT_EQ(back.textures[i].texels, coloured.textures[i].texels);
 }
 
 // Doom's COLORMAP maps indices to indices; our light maps hold its colours. The level
