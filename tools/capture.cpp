@@ -76,7 +76,7 @@ class ShotWorkers {
       r->prepare(level);
       workers_.emplace_back([=, this, &level, &state] {
         large_pages_for_this_thread();  // its frame and buffers fault in 2 MB at a time, as the main thread's
-        render::Frame frame(width, height);
+        render::Frame frame = render::Frame::without_pixels(width, height);
         frame.keep_indices = true;
         work(*r, level, state, frame);
       });
@@ -252,7 +252,7 @@ int main(int argc, char** argv) {
       workers.finish(write);
     } else {  // each frame's strips on every thread (--stats times them so)
       renderer->prepare(level);
-      render::Frame frame(width, height);
+      render::Frame frame = render::Frame::without_pixels(width, height);
       frame.keep_indices = true;
       for (const render::CameraSpec& spec : shots) {
         Shot shot = shot_of(spec);

@@ -20,6 +20,13 @@ using geom::Vec2;
 // a frame's time is then comparable with a Doom port's render-only time).
 struct Frame : image::Image {
   using image::Image::Image;
+  // A frame whose pixels are made by the first render that writes colours: one kept in
+  // palette indices never needs them (at 3840x2160, 33 MB not to fill).
+  static Frame without_pixels(int width, int height) {
+    Frame f;
+    f.width = width, f.height = height;
+    return f;
+  }
   bool keep_indices = false;
   // The width of Doom's screen this frame is a view window of (320: a smaller view of
   // Doom's 320x200 screen, drawn by vanilla's rules at its own width); 0: itself.

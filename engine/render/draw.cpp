@@ -87,6 +87,7 @@ void Canvas::prepare_frame(const level::Level& level, Frame& frame) {
     frame.palette = level.palette;
   } else {
     frame.indices.clear();
+    frame.pixels.resize(size_t(frame.width) * size_t(frame.height));  // a frame made without its colours
   }
 }
 

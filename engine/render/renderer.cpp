@@ -5,6 +5,7 @@
 namespace p3d::render {
 
 void Frame::resolve_colours() {
+  pixels.resize(indices.size());  // a frame made without_pixels gets them here
   for (size_t i = 0; i < indices.size(); ++i) pixels[i] = palette[indices[i]];
 }
 
