@@ -838,14 +838,14 @@ play::DoomDemo turn_in_place(const std::string& map) {
 }
 
 // Maps viewed from their start turning in place (Freedoom's E1M1, MAP01, MAP02, MAP10
-// and MAP15; with --iwad, its --map): Crispy Doom's render-only time on that demo beside
-// ours on the same views.
+// and MAP15; with --iwad, its --map or first map): Crispy Doom's render-only time on
+// that demo beside ours on the same views.
 void bench_doom_start_views(const Settings& s, int cores, bool crispy) {
   const std::filesystem::path games = "/usr/share/games/doom";
   std::vector<std::pair<std::filesystem::path, std::string>> maps = {
       {games / "freedoom1.wad", "E1M1"}, {games / "freedoom2.wad", "MAP01"}, {games / "freedoom2.wad", "MAP02"},
       {games / "freedoom2.wad", "MAP10"}, {games / "freedoom2.wad", "MAP15"}};
-  if (!s.wads.iwad.empty()) maps = {{s.wads.iwad, s.wads.map.empty() ? "MAP01" : s.wads.map}};
+  if (!s.wads.iwad.empty()) maps = {{s.wads.iwad, bsp::resolve_map_name(bsp::read_wads({s.wads.iwad}), s.wads.map)}};
   report.print("\n### Beside Crispy Doom at each map's start: render-only ms/frame, turning in place\n\n");
   report.print("Both engines play a demo that stands at the player start and turns left by 1/256 of a turn a tic\n"
                "(256 views), measured as in the table below.\n\n");
