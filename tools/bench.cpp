@@ -975,12 +975,6 @@ std::vector<uint8_t> stb_png(const image::Image& img) {  // the encoder we repla
   return out;
 }
 
-// A frame's PNG deflated one way (the frame's indices when it kept them, else its colours).
-std::vector<uint8_t> frame_png(const render::Frame& frame, image::PngDeflate how) {
-  return frame.indexed() ? image::encode_png(frame.width, frame.height, frame.indices, frame.palette, how)
-                         : image::encode_png(frame, how);
-}
-
 // The outpost path's frames (RGB) and random views of freedoom2 MAP01 (8-bit, when
 // Freedoom is installed): render, then each PNG encoding in one run (ours deflating
 // runs, ours with libdeflate's search, stb_image_write); then whole `capture --cameras`
@@ -1021,10 +1015,10 @@ void bench_capture(const Settings& s) {
       renderer->render(scene.level, state, camera, frame);
       render_ms += cli::seconds_since(t) * 1000;
       t = Clock::now();
-      runs_bytes += double(frame_png(frame, image::PngDeflate::kRuns).size());
+      runs_bytes += double(frame.png(image::PngDeflate::kRuns).size());
       runs_ms += cli::seconds_since(t) * 1000;
       t = Clock::now();
-      search_bytes += double(frame_png(frame, image::PngDeflate::kSearch).size());
+      search_bytes += double(frame.png(image::PngDeflate::kSearch).size());
       search_ms += cli::seconds_since(t) * 1000;
       if (frame.indexed()) continue;  // stb_image_write writes no palette
       t = Clock::now();

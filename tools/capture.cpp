@@ -32,13 +32,6 @@ std::string columns_csv(const level::Level& level, const render::ColumnHits& hit
   return out;
 }
 
-// A frame's PNG: a frame of a paletted level stays 8-bit (a paletted PNG, a quarter of
-// the bytes to filter).
-std::vector<uint8_t> png_of(const render::Frame& frame) {
-  return frame.indexed() ? image::encode_png(frame.width, frame.height, frame.indices, frame.palette)
-                         : image::encode_png(frame);
-}
-
 // What one camera makes: its PNG and, when asked for, its columns.
 struct Shot {
   render::Camera camera;
@@ -53,7 +46,7 @@ render::RenderStats make_shot(render::Renderer& renderer, const level::Level& le
   render::Probe probe;
   probe.want_columns = !shot.csv_path.empty();
   const render::RenderStats stats = renderer.render(level, state, shot.camera, frame, &probe);
-  shot.png = png_of(frame);
+  shot.png = frame.png();
   if (probe.want_columns) shot.csv = columns_csv(level, probe.columns);
   return stats;
 }

@@ -22,14 +22,7 @@ std::optional<BackScreen> BackScreen::load(const wad::Stack& wads, bool commerci
   if (!flat || flat->bytes.size() < size_t(kFlatSide * kFlatSide)) return std::nullopt;
   BackScreen b;
   b.flat_.assign(flat->bytes.begin(), flat->bytes.begin() + kFlatSide * kFlatSide);
-  for (size_t i = 0; i < 8; ++i)
-    if (const wad::Lump* lump = wads.find(kBorderNames[i])) {
-      try {
-        b.border_[i] = wad::decode_picture(lump->bytes, kBorderNames[i]);
-      } catch (const std::exception&) {
-        // a broken piece of the border is left out
-      }
-    }
+  for (size_t i = 0; i < 8; ++i) b.border_[i] = wad::find_picture(wads, kBorderNames[i]);  // broken: left out
   return b;
 }
 

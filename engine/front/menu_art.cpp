@@ -16,15 +16,7 @@ bool MenuArt::complete() const { return font_ && picture("M_DOOM") && picture("M
 
 const wad::IndexedImage* MenuArt::picture(const std::string& name) const {
   auto [it, fresh] = pictures_.try_emplace(name);
-  if (fresh) {
-    if (const wad::Lump* lump = wads_.find(name)) {
-      try {
-        it->second = wad::decode_picture(lump->bytes, name);
-      } catch (const std::exception&) {
-        // a broken picture is left out, as a missing one
-      }
-    }
-  }
+  if (fresh) it->second = wad::find_picture(wads_, name);  // a broken picture is left out, as a missing one
   return it->second ? &*it->second : nullptr;
 }
 

@@ -15,14 +15,8 @@ std::optional<HudFont> HudFont::load(const wad::Stack& wads) {
   for (char c = kFirst; c <= kLast; ++c) {
     char name[9];
     std::snprintf(name, sizeof name, "STCFN%03d", int(c));
-    const wad::Lump* lump = wads.find(name);
-    if (!lump) continue;
-    try {
-      font.glyphs_[size_t(c - kFirst)] = wad::decode_picture(lump->bytes, name);
-      any = true;
-    } catch (const std::exception&) {
-      // a broken letter is drawn as a space, as a missing one
-    }
+    font.glyphs_[size_t(c - kFirst)] = wad::find_picture(wads, name);  // broken or missing: drawn as a space
+    any = any || font.glyphs_[size_t(c - kFirst)];
   }
   if (!any) return std::nullopt;
   if (const auto& a = font.glyphs_[size_t('A' - kFirst)]) font.height_ = a->height;

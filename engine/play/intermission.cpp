@@ -15,7 +15,6 @@ constexpr int kMatrixX = 42, kMatrixY = 68, kSpacingX = 40, kSpacingY = 33, kTot
 constexpr int kKillersX = 10, kKillersY = 100, kVictimsX = 5, kVictimsY = 50;
 constexpr int kNetStatsY = 50, kNetSpacingX = 64;  // NG_STATSY, NG_SPACINGX
 
-
 }  // namespace
 
 int par_seconds(int episode, int map) {

@@ -47,7 +47,6 @@ constexpr int kKeyY[3] = {171, 181, 191};
 constexpr int kAmmoCountX = 288, kMaxAmmoX = 314;
 constexpr int kAmmoCountY[4] = {173, 179, 191, 185};
 
-
 }  // namespace
 
 FaceInput face_input(const Player& player) {

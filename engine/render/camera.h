@@ -36,6 +36,9 @@ struct Frame : image::Image {
   bool indexed() const { return !indices.empty(); }
   // Writes the pixels from the indices (nothing when not indexed).
   void resolve_colours();
+  // The frame as a PNG: a paletted one when it kept its indices (a quarter of the bytes
+  // to filter), else its colours.
+  std::vector<uint8_t> png(image::PngDeflate how = image::PngDeflate::kRuns) const;
 };
 
 constexpr double kEyeHeight = 41;  // Doom's view height above the floor

@@ -34,7 +34,7 @@ IndexedImage decode_picture(std::span<const uint8_t> bytes, const std::string& w
 
 class Stack;
 // The picture lump `name` of the WADs, decoded; none when it is missing or broken (the
-// status bar and the intermission leave such a piece out, as Doom would not start).
+// status bar, the intermission, the menus and the HUD font leave such a piece out).
 std::optional<IndexedImage> find_picture(const Stack& wads, const std::string& name);
 
 // Whether a lump looks like a picture (a plausible header and column offsets); used
