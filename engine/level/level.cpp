@@ -7,6 +7,7 @@
 #include <atomic>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -52,22 +53,6 @@ void transparent_rows(const uint32_t* column, int height, std::vector<uint64_t>&
     if (!(column[y] >> 24)) words[size_t(y) / 64] |= uint64_t(1) << (y % 64);
 }
 
-// The same from a column's opacity bytes (0 where transparent).
-void transparent_rows(const uint8_t* opaque, int height, std::vector<uint64_t>& words) {
-  words.assign(size_t(height + 63) / 64, 0);
-  int y = 0;
-#ifdef __SSE2__
-  const __m128i zero = _mm_setzero_si128();
-  for (; y + 16 <= height; y += 16) {  // sixteen rows share a word: 64 is a multiple of 16
-    const __m128i bytes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(opaque + y));
-    const int clear = _mm_movemask_epi8(_mm_cmpeq_epi8(bytes, zero));
-    words[size_t(y) / 64] |= uint64_t(unsigned(clear)) << (y % 64);
-  }
-#endif
-  for (; y < height; ++y)
-    if (!opaque[y]) words[size_t(y) / 64] |= uint64_t(1) << (y % 64);
-}
-
 // The first row from `y` on whose transparent bit is `bit`; `height` if none.
 int next_row(const std::vector<uint64_t>& words, int y, int height, bool bit) {
   for (size_t w = size_t(y) / 64; w < words.size(); ++w) {
@@ -94,8 +79,8 @@ Texture make_texture(const std::string& name, int width, int height, const uint3
 
 namespace {
 
-// A texture's size, indices and either texels or opacity; its runs of opaque texels
-// and whether it has holes derived from them.
+// A texture's size, indices and either texels or opacity; whether it has holes, and
+// (with texels, to be drawn) its runs of opaque texels.
 Texture make_texture(std::string name, int width, int height, std::vector<uint32_t> texels, std::vector<uint8_t> indices,
                      std::vector<uint8_t> opaque) {
   Texture t;
@@ -109,13 +94,14 @@ Texture make_texture(std::string name, int width, int height, std::vector<uint32
   t.opaque = std::move(opaque);
   static_assert(limits::kMaxTextureSize <= UINT16_MAX, "a run's rows are 16-bit");
   t.run_start.reserve(size_t(width) + 1);
+  if (t.texels.empty()) {  // only written: the writer needs to know of holes, not where they are
+    t.holes = std::memchr(t.opaque.data(), 0, t.opaque.size()) != nullptr;
+    return t;
+  }
   std::vector<uint64_t> transparent;
   for (int x = 0; x < width; ++x) {
     t.run_start.push_back(uint32_t(t.runs.size()));
-    if (t.texels.empty())
-      transparent_rows(t.opaque.data() + size_t(x) * size_t(height), height, transparent);
-    else
-      transparent_rows(t.column(x), height, transparent);
+    transparent_rows(t.column(x), height, transparent);
     for (int y = 0; y < height;) {
       const int first = next_row(transparent, y, height, false);
       if (first == height) break;

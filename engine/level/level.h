@@ -35,8 +35,8 @@ struct Texture {
   std::vector<uint32_t> texels;   // column-major: texels[u * height + v], RGBA8; alpha 0 = transparent
   std::vector<uint8_t> indices;   // paletted levels: palette indices, laid out as texels; else empty
   // A level made only to be written (pseudo3d-mapc: make_texture_without_colours) has
-  // no texels: this is 1 where a texel is drawn, laid out as indices. Renderers need
-  // the texels: such a level is read back before it is drawn.
+  // no texels: this is 1 where a texel is drawn, laid out as indices, and its runs are
+  // not derived. Renderers need the texels: such a level is read back before it is drawn.
   std::vector<uint8_t> opaque;
   // Derived by make_texture:
   bool holes = false;             // some texel is transparent
