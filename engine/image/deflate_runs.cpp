@@ -17,8 +17,16 @@ namespace p3d::image {
 namespace {
 
 constexpr int kLiteralLengthSymbols = 286, kEndOfBlock = 256, kMaxCodeBits = 15;
+// The literal/length codes are kept to 14 bits (deflate allows 15) so that four
+// literals fit one put of the bit writer; a frame's rarest bytes lose a bit at most.
+constexpr int kMaxLiteralBits = 14;
 constexpr int kCodeLengthSymbols = 19, kMaxCodeLengthBits = 7;
 constexpr size_t kMinRun = 3, kMaxRun = 258;
+// The shortest run sent as a match. A filtered frame's short runs are mostly zeros,
+// whose literal codes are a bit or two: as literals they take fewer bits than a
+// match's length and distance codes (eight: 2% smaller files than three, and a fifth
+// fewer runs to find).
+constexpr size_t kShortestMatch = 8;
 // The order in which a block's header gives the code length code's lengths.
 constexpr uint8_t kCodeLengthOrder[kCodeLengthSymbols] = {16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14, 1, 15};
 
@@ -161,21 +169,27 @@ inline size_t run_length(const uint8_t* at, size_t limit) {
   return n;
 }
 
-// The first j >= i where a run of kMinRun or more starts (bytes j, j+1 and j+2 equal to
-// byte j-1), or n: sixteen places at a time with SSE2.
+// The first j >= i where a run of kShortestMatch or more starts (bytes j to j + 7 equal
+// to byte j - 1), or n: sixteen places at a time with SSE2.
 inline size_t next_run(const uint8_t* bytes, size_t i, size_t n) {
+  static_assert(kShortestMatch == 8, "the runs of equal bytes are found by doubling to eight");
   size_t j = std::max<size_t>(i, 1);
 #ifdef __SSE2__
   const auto load = [&](size_t at) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(bytes + at)); };
-  for (; j + 18 <= n; j += 16) {
-    const __m128i before = load(j - 1), at = load(j), next = load(j + 1), after = load(j + 2);
-    const __m128i runs = _mm_and_si128(_mm_and_si128(_mm_cmpeq_epi8(at, before), _mm_cmpeq_epi8(next, at)),
-                                       _mm_cmpeq_epi8(after, next));
-    if (const int mask = _mm_movemask_epi8(runs)) return j + size_t(std::countr_zero(unsigned(mask)));
+  for (; j + 32 <= n; j += 16) {  // bit k of `same`: byte j + k equals the one before it
+    const uint32_t same = uint32_t(_mm_movemask_epi8(_mm_cmpeq_epi8(load(j), load(j - 1)))) |
+                          uint32_t(_mm_movemask_epi8(_mm_cmpeq_epi8(load(j + 16), load(j + 15)))) << 16;
+    uint32_t runs = same & same >> 1;  // bit k: bytes j + k to j + k + 7 each equal the one before
+    runs &= runs >> 2;
+    runs &= runs >> 4;
+    if (runs & 0xFFFF) return j + size_t(std::countr_zero(runs));
   }
 #endif
-  for (; j + 2 < n; ++j)
-    if (bytes[j] == bytes[j - 1] && bytes[j + 1] == bytes[j - 1] && bytes[j + 2] == bytes[j - 1]) return j;
+  for (; j + kShortestMatch <= n; ++j) {
+    size_t k = 0;
+    while (k < kShortestMatch && bytes[j + k] == bytes[j - 1]) ++k;
+    if (k == kShortestMatch) return j;
+  }
   return n;
 }
 
@@ -204,31 +218,33 @@ std::vector<CodeLength> code_length_symbols(const std::vector<uint8_t>& lengths)
   return out;
 }
 
-// Bytes [begin, end) of `bytes` as tokens: a literal (0..255), or 256 + a run's length
-// less 3 (a run may repeat the byte before `begin`); their symbols' frequencies counted.
-// `tokens` has room for end - begin + 4. Returns how many.
-size_t tokenize(const uint8_t* bytes, size_t begin, size_t end, uint16_t* tokens, uint32_t* frequency) {
-  // Literals counted four at a time, a table for each (a repeated byte waits on no one
-  // counter); the fifth counts what is not a literal.
-  std::array<std::array<uint32_t, 256>, 5> literal_counts{};
-  size_t count = 0;
-  for (size_t i = begin; i < end;) {
-    const size_t run_start = next_run(bytes, i, end);
-    for (; i + 4 <= run_start; i += 4, count += 4)
-      for (size_t k = 0; k < 4; ++k) tokens[count + k] = bytes[i + k], ++literal_counts[k][bytes[i + k]];
-    if (run_start == end) {
-      for (; i < end; ++i) tokens[count++] = bytes[i], ++literal_counts[0][bytes[i]];
-      break;
-    }
-    // Up to three literals before the run, without a branch on how many: the bytes to
-    // i + 3 lie within the run's first three.
-    const size_t literals = run_start - i;
-    for (size_t k = 0; k < 4; ++k) tokens[count + k] = bytes[i + k], ++literal_counts[k < literals ? k : 4][bytes[i + k]];
-    count += literals, i = run_start;
-    const size_t run = run_length(bytes + i, std::min(kMaxRun, end - i));
-    tokens[count++] = uint16_t(256 + run - kMinRun);
-    ++frequency[kLengthCodes[run].symbol];
-    i += run;
+// A run of a block: `length` bytes from `at` repeating the byte before them.
+struct Run {
+  size_t at, length;
+};
+
+// The runs of bytes [begin, end) (a run may repeat the byte before `begin`), and the
+// frequencies of the block's symbols: its literals (every byte outside a run) and its
+// runs' length codes. `runs` has room for (end - begin) / kShortestMatch + 1. Returns
+// how many runs.
+size_t find_runs(const uint8_t* bytes, size_t begin, size_t end, Run* runs, uint32_t* frequency) {
+  // The literals counted four at a time, a table for each (a repeated byte waits on no
+  // one counter).
+  std::array<std::array<uint32_t, 256>, 4> literal_counts{};
+  const auto count_literals = [&](size_t from, size_t to) {
+    for (; from + 4 <= to; from += 4)
+      for (size_t k = 0; k < 4; ++k) ++literal_counts[k][bytes[from + k]];
+    for (; from < to; ++from) ++literal_counts[0][bytes[from]];
+  };
+  size_t count = 0, i = begin;
+  for (;;) {
+    const size_t at = next_run(bytes, i, end);
+    count_literals(i, at);
+    if (at == end) break;
+    const size_t length = run_length(bytes + at, std::min(kMaxRun, end - at));
+    runs[count++] = {at, length};
+    ++frequency[kLengthCodes[length].symbol];
+    i = at + length;
   }
   for (size_t b = 0; b < 256; ++b)
     frequency[b] = literal_counts[0][b] + literal_counts[1][b] + literal_counts[2][b] + literal_counts[3][b];
@@ -236,13 +252,13 @@ size_t tokenize(const uint8_t* bytes, size_t begin, size_t end, uint16_t* tokens
 }
 
 // One block of dynamic Huffman codes: its header (the codes' lengths, themselves
-// Huffman coded), its tokens and its end.
-void write_block(const uint16_t* tokens, size_t count, std::array<uint32_t, kLiteralLengthSymbols>& frequency, bool last,
-                 BitWriter& bits) {
+// Huffman coded), its literals and runs, and its end.
+void write_block(const uint8_t* bytes, size_t begin, size_t end, const Run* runs, size_t run_count,
+                 std::array<uint32_t, kLiteralLengthSymbols>& frequency, bool last, BitWriter& bits) {
   frequency[kEndOfBlock] = 1;
   std::array<uint8_t, kLiteralLengthSymbols> lengths{};
   std::array<uint16_t, kLiteralLengthSymbols> codes{};
-  huffman_lengths(frequency.data(), kLiteralLengthSymbols, kMaxCodeBits, lengths.data());
+  huffman_lengths(frequency.data(), kLiteralLengthSymbols, kMaxLiteralBits, lengths.data());
   canonical_codes(lengths.data(), kLiteralLengthSymbols, codes.data());
   int literal_symbols = kLiteralLengthSymbols;
   while (literal_symbols > 257 && lengths[size_t(literal_symbols - 1)] == 0) --literal_symbols;
@@ -259,15 +275,13 @@ void write_block(const uint16_t* tokens, size_t count, std::array<uint32_t, kLit
   int header_symbols = kCodeLengthSymbols;
   while (header_symbols > 4 && header_lengths[kCodeLengthOrder[header_symbols - 1]] == 0) --header_symbols;
 
-  // Each token's bits at once: a literal's code, or a run's length code, extra bits and
-  // distance 1's code (0).
-  std::array<uint32_t, 512> token_bits{};
-  std::array<uint8_t, 512> token_bit_count{};
-  for (size_t b = 0; b < 256; ++b) token_bits[b] = codes[b], token_bit_count[b] = lengths[b];
-  for (size_t length = kMinRun; length <= kMaxRun; ++length) {
+  // A run's bits at once: its length's code and extra bits, and distance 1's code (0).
+  std::array<uint32_t, kMaxRun + 1> run_bits{};
+  std::array<uint8_t, kMaxRun + 1> run_bit_count{};
+  for (size_t length = kShortestMatch; length <= kMaxRun; ++length) {
     const LengthCode& c = kLengthCodes[length];
-    token_bits[256 + length - kMinRun] = codes[c.symbol] | uint32_t(c.extra) << lengths[c.symbol];
-    token_bit_count[256 + length - kMinRun] = uint8_t(lengths[c.symbol] + c.extra_bits + 1);
+    run_bits[length] = codes[c.symbol] | uint32_t(c.extra) << lengths[c.symbol];
+    run_bit_count[length] = uint8_t(lengths[c.symbol] + c.extra_bits + 1);
   }
 
   bits.put(last, 1);
@@ -281,31 +295,43 @@ void write_block(const uint16_t* tokens, size_t count, std::array<uint32_t, kLit
     bits.put(header_codes[c.symbol], header_lengths[c.symbol]);
     if (kExtraBits[c.symbol]) bits.put(c.extra, kExtraBits[c.symbol]);
   }
-  size_t t = 0;
-  for (; t + 2 <= count; t += 2) {  // two tokens a put (at most 42 bits): half the writer's chain of dependences
-    const uint16_t a = tokens[t], b = tokens[t + 1];
-    bits.put(token_bits[a] | uint64_t(token_bits[b]) << token_bit_count[a], token_bit_count[a] + token_bit_count[b]);
+  // Literals four to a put (at most 56 bits): a quarter of the writer's chain of dependences.
+  const auto literals = [&](size_t from, size_t to) {
+    for (; from + 4 <= to; from += 4) {
+      const uint8_t* b = bytes + from;
+      const uint64_t low = codes[b[0]] | uint64_t(codes[b[1]]) << lengths[b[0]];
+      const uint64_t high = codes[b[2]] | uint64_t(codes[b[3]]) << lengths[b[2]];
+      const int low_bits = lengths[b[0]] + lengths[b[1]];
+      bits.put(low | high << low_bits, low_bits + lengths[b[2]] + lengths[b[3]]);
+    }
+    for (; from < to; ++from) bits.put(codes[bytes[from]], lengths[bytes[from]]);
+  };
+  size_t i = begin;
+  for (size_t r = 0; r < run_count; ++r) {
+    literals(i, runs[r].at);
+    bits.put(run_bits[runs[r].length], run_bit_count[runs[r].length]);
+    i = runs[r].at + runs[r].length;
   }
-  if (t < count) bits.put(token_bits[tokens[t]], token_bit_count[tokens[t]]);
+  literals(i, end);
   bits.put(codes[kEndOfBlock], lengths[kEndOfBlock]);
 }
 
 }  // namespace
 
 void deflate_runs(std::span<const uint8_t> in, std::vector<uint8_t>& out) {
-  // A block per kBlockBytes of input: its tokens and bits stay in the cache, and its
+  // A block per kBlockBytes of input: its runs and bits stay in the cache, and its
   // codes follow the picture as it changes down the image.
   constexpr size_t kBlockBytes = size_t(1) << 16;
-  constexpr size_t kBlockRoom = 1100 + 2 * kBlockBytes;  // a literal is at most 15 bits; a header under 1 KB
-  thread_local std::unique_ptr<uint16_t[]> tokens = std::make_unique_for_overwrite<uint16_t[]>(kBlockBytes + 4);
+  constexpr size_t kBlockRoom = 1100 + 2 * kBlockBytes;  // a literal is at most 14 bits; a header under 1 KB
+  thread_local std::unique_ptr<Run[]> runs = std::make_unique_for_overwrite<Run[]>(kBlockBytes / kShortestMatch + 1);
   thread_local std::unique_ptr<uint8_t[]> buffer = std::make_unique_for_overwrite<uint8_t[]>(kBlockRoom);
   out.insert(out.end(), {0x78, 0x01});  // deflate with a 32 KB window, the fastest level; a multiple of 31
   BitWriter bits(buffer.get());
   for (size_t begin = 0;;) {
     const size_t end = std::min(in.size(), begin + kBlockBytes);
     std::array<uint32_t, kLiteralLengthSymbols> frequency{};
-    const size_t count = tokenize(in.data(), begin, end, tokens.get(), frequency.data());
-    write_block(tokens.get(), count, frequency, end == in.size(), bits);
+    const size_t run_count = find_runs(in.data(), begin, end, runs.get(), frequency.data());
+    write_block(in.data(), begin, end, runs.get(), run_count, frequency, end == in.size(), bits);
     out.insert(out.end(), buffer.get(), bits.rewind(buffer.get()));  // the whole bytes; the rest stay in bits
     if ((begin = end) == in.size()) break;
   }

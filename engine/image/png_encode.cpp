@@ -47,74 +47,123 @@ inline uint8_t paeth(int a, int b, int c) {  // a: left, b: up, c: up-left
   return uint8_t(pa <= pb && pa <= pc ? a : pb <= pc ? b : c);
 }
 
-// The five filters of bytes [from, to) of a row that have a left neighbour, and their
-// summed magnitudes.
-void filter_span(const uint8_t* row, const uint8_t* up, size_t channels, size_t from, size_t to, uint8_t* const* filtered,
-                 uint32_t* cost) {
-  for (size_t x = from; x < to; ++x) {
-    const int a = row[x - channels], b = up[x], c = up[x - channels];
-    const uint8_t f[5] = {row[x], uint8_t(row[x] - a), uint8_t(row[x] - b), uint8_t(row[x] - ((a + b) >> 1)),
-                          uint8_t(row[x] - paeth(a, b, c))};
-    for (int i = 0; i < 5; ++i) filtered[i][x] = f[i], cost[i] += magnitude(f[i]);
+// PNG's five filters of one byte, given its left (a), up (b) and up-left (c) neighbours.
+inline uint8_t filtered_byte(int type, int r, int a, int b, int c) {
+  switch (type) {
+    case 0: return uint8_t(r);
+    case 1: return uint8_t(r - a);
+    case 2: return uint8_t(r - b);
+    case 3: return uint8_t(r - ((a + b) >> 1));
+    default: return uint8_t(r - paeth(a, b, c));
   }
 }
 
+// Byte x of a row's neighbours: left, up and up-left (0 off the row's start).
+struct Neighbours {
+  int a, b, c;
+};
+inline Neighbours neighbours(const uint8_t* row, const uint8_t* up, size_t channels, size_t x) {
+  return x < channels ? Neighbours{0, up[x], 0} : Neighbours{row[x - channels], up[x], up[x - channels]};
+}
+
 #ifdef __SSE2__
-// filter_span sixteen bytes at a time (SSE2 is part of x86-64), the magnitudes summed
-// by psadbw against 128 (|v ^ 128 - 128| is the magnitude of v as a signed byte).
-// Paeth's distances stay in bytes: pa = |b - c| and pb = |a - c| as unsigned
-// differences, and pc = |(a - c) + (b - c)| their sum (saturated: 255 still orders
-// after both) where a and b lie on one side of c, else the difference of the two.
-// Returns where it stopped.
-size_t filter_span_sse2(const uint8_t* row, const uint8_t* up, size_t channels, size_t from, size_t to,
-                        uint8_t* const* filtered, uint32_t* cost) {
-  const __m128i zero = _mm_setzero_si128(), bias = _mm_set1_epi8(char(0x80)), one = _mm_set1_epi8(1);
-  __m128i sums[5] = {zero, zero, zero, zero, zero};
-  const auto load = [](const uint8_t* p) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p)); };
-  const auto distance = [](__m128i x, __m128i y) { return _mm_or_si128(_mm_subs_epu8(x, y), _mm_subs_epu8(y, x)); };
-  const auto at_most = [](__m128i x, __m128i y) { return _mm_cmpeq_epi8(_mm_min_epu8(x, y), x); };  // unsigned x <= y
-  const auto choose = [](__m128i mask, __m128i yes, __m128i no) {
-    return _mm_or_si128(_mm_and_si128(mask, yes), _mm_andnot_si128(mask, no));
-  };
-  size_t x = from;
-  for (; x + 16 <= to; x += 16) {
-    const __m128i r = load(row + x), a = load(row + x - channels), b = load(up + x), c = load(up + x - channels);
-    // (a + b) >> 1 without overflow: avg rounds up, so take off the carry of a ^ b.
-    const __m128i average = _mm_sub_epi8(_mm_avg_epu8(a, b), _mm_and_si128(_mm_xor_si128(a, b), one));
+// Sixteen bytes at a time (SSE2 is part of x86-64). Paeth's distances stay in bytes:
+// pa = |b - c| and pb = |a - c| as unsigned differences, and pc = |(a - c) + (b - c)|
+// their sum (saturated: 255 still orders after both) where a and b lie on one side of
+// c, else the difference of the two.
+struct Sixteen {
+  __m128i r, a, b, c;
+  Sixteen(const uint8_t* row, const uint8_t* up, size_t channels, size_t x) {
+    const auto load = [](const uint8_t* p) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p)); };
+    r = load(row + x), a = load(row + x - channels), b = load(up + x), c = load(up + x - channels);
+  }
+  __m128i filtered(int type) const {
+    switch (type) {
+      case 0: return r;
+      case 1: return _mm_sub_epi8(r, a);
+      case 2: return _mm_sub_epi8(r, b);
+      case 3: return _mm_sub_epi8(r, average());
+      default: return _mm_sub_epi8(r, paeth_predictor());
+    }
+  }
+  // (a + b) >> 1 without overflow: avg rounds up, so take off the carry of a ^ b.
+  __m128i average() const {
+    return _mm_sub_epi8(_mm_avg_epu8(a, b), _mm_and_si128(_mm_xor_si128(a, b), _mm_set1_epi8(1)));
+  }
+  __m128i paeth_predictor() const {
+    const auto distance = [](__m128i x, __m128i y) { return _mm_or_si128(_mm_subs_epu8(x, y), _mm_subs_epu8(y, x)); };
+    const auto at_most = [](__m128i x, __m128i y) { return _mm_cmpeq_epi8(_mm_min_epu8(x, y), x); };  // unsigned x <= y
+    const auto choose = [](__m128i mask, __m128i yes, __m128i no) {
+      return _mm_or_si128(_mm_and_si128(mask, yes), _mm_andnot_si128(mask, no));
+    };
     const __m128i pa = distance(b, c), pb = distance(a, c);
     const __m128i one_side = _mm_cmpeq_epi8(at_most(c, a), at_most(c, b));
     const __m128i pc = choose(one_side, _mm_adds_epu8(pa, pb), distance(pa, pb));
-    const __m128i predicted =
-        choose(_mm_and_si128(at_most(pa, pb), at_most(pa, pc)), a, choose(at_most(pb, pc), b, c));
-    const __m128i f[5] = {r, _mm_sub_epi8(r, a), _mm_sub_epi8(r, b), _mm_sub_epi8(r, average), _mm_sub_epi8(r, predicted)};
-    for (int i = 0; i < 5; ++i) {
-      _mm_storeu_si128(reinterpret_cast<__m128i*>(filtered[i] + x), f[i]);
-      sums[i] = _mm_add_epi64(sums[i], _mm_sad_epu8(_mm_xor_si128(f[i], bias), bias));
-    }
+    return choose(_mm_and_si128(at_most(pa, pb), at_most(pa, pc)), a, choose(at_most(pb, pc), b, c));
+  }
+};
+
+// The summed magnitudes of the five filters of bytes [channels, stride) of a row
+// (stride >= channels + 16), added to cost: by psadbw against 128 (|v ^ 128 - 128| is
+// the magnitude of v as a signed byte).
+void filter_costs_sse2(const uint8_t* row, const uint8_t* up, size_t channels, size_t stride, uint32_t* cost) {
+  const __m128i zero = _mm_setzero_si128(), bias = _mm_set1_epi8(char(0x80));
+  __m128i sums[5] = {zero, zero, zero, zero, zero};
+  // `counted` is 0xFF where a byte was counted already: its filtered bytes count as 0.
+  const auto add = [&](const Sixteen& s, __m128i counted) {
+    const __m128i f[5] = {s.r, _mm_sub_epi8(s.r, s.a), _mm_sub_epi8(s.r, s.b), _mm_sub_epi8(s.r, s.average()),
+                          _mm_sub_epi8(s.r, s.paeth_predictor())};
+    for (int i = 0; i < 5; ++i)
+      sums[i] = _mm_add_epi64(sums[i], _mm_sad_epu8(_mm_xor_si128(_mm_andnot_si128(counted, f[i]), bias), bias));
+  };
+  size_t x = channels;
+  for (; x + 16 <= stride; x += 16) add(Sixteen(row, up, channels, x), zero);
+  if (x < stride) {  // the last sixteen, overlapping the bytes before them
+    const size_t last = stride - 16;
+    alignas(16) uint8_t counted[16];
+    for (size_t k = 0; k < 16; ++k) counted[k] = last + k < x ? 0xFF : 0;
+    add(Sixteen(row, up, channels, last), _mm_load_si128(reinterpret_cast<const __m128i*>(counted)));
   }
   for (int i = 0; i < 5; ++i) cost[i] += uint32_t(_mm_cvtsi128_si32(sums[i]) + _mm_cvtsi128_si32(_mm_srli_si128(sums[i], 8)));
-  return x;
+}
+
+// Bytes [channels, stride) of a row filtered by `type` into out (stride >= channels + 16).
+void apply_filter_sse2(int type, const uint8_t* row, const uint8_t* up, size_t channels, size_t stride, uint8_t* out) {
+  const auto store = [&](size_t x) {
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + x), Sixteen(row, up, channels, x).filtered(type));
+  };
+  size_t x = channels;
+  for (; x + 16 <= stride; x += 16) store(x);
+  if (x < stride) store(stride - 16);  // the same bytes again where they overlap
 }
 #endif
 
 // One row, filtered into out[0] (the filter type) and out[1..stride]; `up` is the row
-// above (zeros for the first).
-void filter_row(const uint8_t* row, const uint8_t* up, size_t stride, size_t channels, uint8_t* scratch, uint8_t* out) {
-  uint8_t* filtered[5];
-  for (int f = 0; f < 5; ++f) filtered[f] = scratch + size_t(f) * stride;
+// above (zeros for the first). The filter is the one whose bytes' magnitudes sum least
+// (the first of equals); only its bytes are written.
+void filter_row(const uint8_t* row, const uint8_t* up, size_t stride, size_t channels, uint8_t* out) {
   uint32_t cost[5] = {0, 0, 0, 0, 0};  // a row is at most 2^31 / 128 bytes (PNG's width limit times 4)
-  for (size_t x = 0; x < channels; ++x) {  // no left neighbour: a = c = 0
-    const uint8_t f[5] = {row[x], row[x], uint8_t(row[x] - up[x]), uint8_t(row[x] - (up[x] >> 1)), uint8_t(row[x] - up[x])};
-    for (int i = 0; i < 5; ++i) filtered[i][x] = f[i], cost[i] += magnitude(f[i]);
-  }
-  size_t x = channels;
+  bool wide = false;
 #ifdef __SSE2__
-  x = filter_span_sse2(row, up, channels, x, stride, filtered, cost);
+  wide = stride >= channels + 16;
 #endif
-  filter_span(row, up, channels, x, stride, filtered, cost);
-  const int best = int(std::min_element(cost, cost + 5) - cost);  // the first of equals
+  for (size_t x = 0; x < (wide ? channels : stride); ++x) {
+    const auto [a, b, c] = neighbours(row, up, channels, x);
+    for (int type = 0; type < 5; ++type) cost[type] += magnitude(filtered_byte(type, row[x], a, b, c));
+  }
+#ifdef __SSE2__
+  if (wide) filter_costs_sse2(row, up, channels, stride, cost);
+#endif
+  const int best = int(std::min_element(cost, cost + 5) - cost);
   out[0] = uint8_t(best);
-  std::memcpy(out + 1, filtered[best], stride);
+  uint8_t* bytes = out + 1;
+  for (size_t x = 0; x < (wide ? channels : stride); ++x) {
+    const auto [a, b, c] = neighbours(row, up, channels, x);
+    bytes[x] = filtered_byte(best, row[x], a, b, c);
+  }
+#ifdef __SSE2__
+  if (wide) apply_filter_sse2(best, row, up, channels, stride, bytes);
+#endif
 }
 
 struct CompressorFree {
@@ -131,13 +180,12 @@ std::vector<uint8_t> encode_rows(int width, int height, const uint8_t* rows, siz
                                  const std::vector<std::pair<const char*, std::vector<uint8_t>>>& before_pixels,
                                  PngDeflate how) {
   const size_t stride = size_t(width) * channels;
-  thread_local std::vector<uint8_t> filtered, scratch, zeros, deflated;
+  thread_local std::vector<uint8_t> filtered, zeros, deflated;
   filtered.resize(size_t(height) * (stride + 1));
-  scratch.resize(5 * stride);
   zeros.assign(stride, 0);
   for (int y = 0; y < height; ++y)
     filter_row(rows + size_t(y) * stride, y ? rows + size_t(y - 1) * stride : zeros.data(), stride, channels,
-               scratch.data(), &filtered[size_t(y) * (stride + 1)]);
+               &filtered[size_t(y) * (stride + 1)]);
 
   size_t deflated_size = 0;
   if (how == PngDeflate::kRuns) {
