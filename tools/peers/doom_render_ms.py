@@ -2,9 +2,12 @@
 """Render-only ms/frame of Crispy Doom (or Chocolate Doom) on one of an IWAD's demos.
 
   tools/peers/doom_render_ms.py [--port crispy|chocolate] [--iwad PATH] [--demo demo3|FILE.lmp] [--res 640|320] [--reps 3]
+                                [--instructions]
 
 Prints one line: `port iwad demo res frames render_ms_per_frame`. Needs the port's
 Debian package, the IWAD and a C compiler; no display (SDL's dummy driver).
+--instructions counts instead (valgrind's callgrind, once: the counts do not vary) and
+prints `render_instructions_per_frame`, by the same subtractions.
 
 Method: `-timedemo` reports gametics and realtics (1/35 s). tick_dilate.c makes the
 port's clock run 100x fast, so a realtic is 0.286 ms. A timedemo starts with a screen
@@ -36,7 +39,10 @@ def main():
     ap.add_argument("--demo", default="demo3", help="a demo lump of the IWAD, or a demo file")
     ap.add_argument("--res", default="640", choices=["640", "320"])
     ap.add_argument("--reps", type=int, default=3)
+    ap.add_argument("--instructions", action="store_true", help="count instructions (callgrind) instead of timing")
     a = ap.parse_args()
+    if a.instructions:
+        a.reps = 1
     if a.port == "chocolate" and a.res == "640":
         raise SystemExit("Chocolate Doom draws 320x200 only")
     binary = shutil.which(f"{a.port}-doom") or f"/usr/games/{a.port}-doom"
@@ -60,13 +66,19 @@ def main():
             env = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
             env.update(HOME=os.path.join(run, "home"), SDL_VIDEODRIVER="dummy", LD_PRELOAD=shim,
                        TICKS_DILATE=str(DILATION))
-            p = subprocess.run([binary, "-iwad", a.iwad, "-timedemo", demo_arg, "-nosound", "-nograbmouse", "-nogui",
+            counter = ["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null"] if a.instructions else []
+            p = subprocess.run(counter + [binary, "-iwad", a.iwad, "-timedemo", demo_arg, "-nosound", "-nograbmouse", "-nogui",
                                 "-config", os.path.join(run, "base.cfg"), "-extraconfig",
                                 os.path.join(run, "extra.cfg"), "-window", "-geometry", "640x480", "-" + mode],
-                               cwd=run, env=env, capture_output=True, text=True, timeout=600)
+                               cwd=run, env=env, capture_output=True, text=True, timeout=3600)
             m = re.search(r"timed (\d+) gametics in (\d+) realtics", p.stdout + p.stderr)
             if not m:
                 raise SystemExit(f"{binary}: no 'timed' line: {(p.stdout + p.stderr)[-300:]}")
+            if a.instructions:
+                counted = re.search(r"Collected : (\d+)", p.stderr)
+                if not counted:
+                    raise SystemExit(f"valgrind: no instruction count: {p.stderr[-300:]}")
+                return int(m.group(1)), int(counted.group(1))
             return int(m.group(1)), int(m.group(2))
 
         realtics = {}
@@ -82,8 +94,12 @@ def main():
         frames = tics - 2
         drawn = med[("demo", "noblit")] - med[("calibration", "noblit")]
         undrawn = med[("demo", "nodraw")] - med[("calibration", "nodraw")]
-        print(f"{a.port} {os.path.basename(a.iwad)} {os.path.basename(a.demo)} {a.res} frames={frames} "
-              f"render_ms_per_frame={(drawn - undrawn) * MS_PER_REALTIC / frames:.4f}")
+        if a.instructions:
+            print(f"{a.port} {os.path.basename(a.iwad)} {os.path.basename(a.demo)} {a.res} frames={frames} "
+                  f"render_instructions_per_frame={(drawn - undrawn) / frames:.0f}")
+        else:
+            print(f"{a.port} {os.path.basename(a.iwad)} {os.path.basename(a.demo)} {a.res} frames={frames} "
+                  f"render_ms_per_frame={(drawn - undrawn) * MS_PER_REALTIC / frames:.4f}")
     finally:
         shutil.rmtree(work, ignore_errors=True)
 
