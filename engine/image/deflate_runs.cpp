@@ -56,15 +56,16 @@ constexpr std::array<LengthCode, kMaxRun + 1> kLengthCodes = [] {
 // symbols or more (decoders may refuse a lone code), so an unused symbol may get one.
 void huffman_lengths(const uint32_t* frequency, int symbols, int max_bits, uint8_t* lengths) {
   std::fill(lengths, lengths + symbols, uint8_t(0));
-  std::array<uint16_t, kLiteralLengthSymbols> leaf{};  // symbols by frequency
+  // Symbols by frequency, then by symbol: sorted as one key each, frequency above symbol.
+  std::array<uint64_t, kLiteralLengthSymbols> by_frequency{};
   int used = 0;
   for (int s = 0; s < symbols; ++s)
-    if (frequency[s]) leaf[size_t(used++)] = uint16_t(s);
+    if (frequency[s]) by_frequency[size_t(used++)] = uint64_t(frequency[s]) << 16 | uint64_t(s);
   for (int s = 0; used < 2; ++s)
-    if (!frequency[s]) leaf[size_t(used++)] = uint16_t(s);  // its frequency counts as 0
-  std::sort(leaf.begin(), leaf.begin() + used, [&](uint16_t a, uint16_t b) {
-    return frequency[a] != frequency[b] ? frequency[a] < frequency[b] : a < b;
-  });
+    if (!frequency[s]) by_frequency[size_t(used++)] = uint64_t(s);  // its frequency counts as 0
+  std::sort(by_frequency.begin(), by_frequency.begin() + used);
+  std::array<uint16_t, kLiteralLengthSymbols> leaf{};
+  for (int i = 0; i < used; ++i) leaf[size_t(i)] = uint16_t(by_frequency[size_t(i)]);
   // Nodes 0..used-1 are the leaves, then each merge; a node's parent comes after it.
   std::array<uint64_t, 2 * kLiteralLengthSymbols> weight{};
   std::array<uint16_t, 2 * kLiteralLengthSymbols> parent{}, depth{};
@@ -254,7 +255,8 @@ size_t find_runs(const uint8_t* bytes, size_t begin, size_t end, Run* runs, uint
 // One block of dynamic Huffman codes: its header (the codes' lengths, themselves
 // Huffman coded), its literals and runs, and its end.
 void write_block(const uint8_t* bytes, size_t begin, size_t end, const Run* runs, size_t run_count,
-                 std::array<uint32_t, kLiteralLengthSymbols>& frequency, bool last, BitWriter& bits) {
+                 std::array<uint32_t, kLiteralLengthSymbols>& frequency, bool last, BitWriter& writer) {
+  BitWriter bits = writer;  // a local copy, kept in registers: `writer` may be memory the compiler must update
   frequency[kEndOfBlock] = 1;
   std::array<uint8_t, kLiteralLengthSymbols> lengths{};
   std::array<uint16_t, kLiteralLengthSymbols> codes{};
@@ -314,6 +316,7 @@ void write_block(const uint8_t* bytes, size_t begin, size_t end, const Run* runs
   }
   literals(i, end);
   bits.put(codes[kEndOfBlock], lengths[kEndOfBlock]);
+  writer = bits;
 }
 
 }  // namespace
