@@ -13,7 +13,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
-#include <type_traits>
 
 #include "engine/image/deflate_runs.h"
 #include "engine/image/image.h"
@@ -111,21 +110,19 @@ void filter_costs_sse2(const uint8_t* row, const uint8_t* up, size_t channels, s
   const __m128i zero = _mm_setzero_si128(), bias = _mm_set1_epi8(char(0x80));
   __m128i sums[5] = {zero, zero, zero, zero, zero};
   // `counted` is 0xFF where a byte was counted already: its filtered bytes count as 0.
-  const auto add = [&](const Sixteen& s, auto mask, __m128i counted) {
+  const auto add = [&](const Sixteen& s, __m128i counted) {
     const __m128i f[5] = {s.r, _mm_sub_epi8(s.r, s.a), _mm_sub_epi8(s.r, s.b), _mm_sub_epi8(s.r, s.average()),
                           _mm_sub_epi8(s.r, s.paeth_predictor())};
-    for (int i = 0; i < 5; ++i) {
-      const __m128i uncounted = decltype(mask)::value ? _mm_andnot_si128(counted, f[i]) : f[i];
-      sums[i] = _mm_add_epi64(sums[i], _mm_sad_epu8(_mm_xor_si128(uncounted, bias), bias));
-    }
+    for (int i = 0; i < 5; ++i)
+      sums[i] = _mm_add_epi64(sums[i], _mm_sad_epu8(_mm_xor_si128(_mm_andnot_si128(counted, f[i]), bias), bias));
   };
   size_t x = channels;
-  for (; x + 16 <= stride; x += 16) add(Sixteen(row, up, channels, x), std::false_type{}, zero);
+  for (; x + 16 <= stride; x += 16) add(Sixteen(row, up, channels, x), zero);
   if (x < stride) {  // the last sixteen, overlapping the bytes before them
     const size_t last = stride - 16;
     alignas(16) uint8_t counted[16];
     for (size_t k = 0; k < 16; ++k) counted[k] = last + k < x ? 0xFF : 0;
-    add(Sixteen(row, up, channels, last), std::true_type{}, _mm_load_si128(reinterpret_cast<const __m128i*>(counted)));
+    add(Sixteen(row, up, channels, last), _mm_load_si128(reinterpret_cast<const __m128i*>(counted)));
   }
   for (int i = 0; i < 5; ++i) cost[i] += uint32_t(_mm_cvtsi128_si32(sums[i]) + _mm_cvtsi128_si32(_mm_srli_si128(sums[i], 8)));
 }
