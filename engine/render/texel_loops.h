@@ -3,6 +3,7 @@
 // column stepping through a texture that repeats vertically, and a flat's row.
 #pragma once
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 
@@ -46,17 +47,20 @@ template <typename Pixel, typename Source>
 inline void wrapped_column(Pixel* out, size_t pitch, int count, int64_t v, int64_t step, int64_t period,
                            const Source& texel) {
   if ((period & (period - 1)) == 0) {
-    const uint32_t row_mask = uint32_t((period >> 16) - 1);
-    const uint32_t step32 = uint32_t(step);
-    uint32_t v32 = uint32_t(v);
+    // The row is bits [16, 16 + k) of v for 2^k rows. Shifted to the top of 32 bits, v
+    // wraps alike and a row is one shift, with no mask: 6 instructions a pixel, not 7.
+    const int k = std::countr_zero(uint64_t(period)) - 16, drop = 16 - k;
+    const uint32_t step32 = uint32_t(step) << drop;
+    uint32_t v32 = uint32_t(v) << drop;
+    const auto row = [k](uint32_t at) { return size_t(uint64_t(at) >> (32 - k)); };  // k = 0: row 0
     int i = 0;
     for (; i + 4 <= count; i += 4, out += 4 * pitch, v32 += 4 * step32) {  // unrolled: a wall is most of a frame
-      out[0] = texel((v32 >> 16) & row_mask);
-      out[pitch] = texel(((v32 + step32) >> 16) & row_mask);
-      out[2 * pitch] = texel(((v32 + 2 * step32) >> 16) & row_mask);
-      out[3 * pitch] = texel(((v32 + 3 * step32) >> 16) & row_mask);
+      out[0] = texel(row(v32));
+      out[pitch] = texel(row(v32 + step32));
+      out[2 * pitch] = texel(row(v32 + 2 * step32));
+      out[3 * pitch] = texel(row(v32 + 3 * step32));
     }
-    for (; i < count; ++i, out += pitch, v32 += step32) *out = texel((v32 >> 16) & row_mask);
+    for (; i < count; ++i, out += pitch, v32 += step32) *out = texel(row(v32));
     return;
   }
   for (int i = 0; i < count; ++i, out += pitch) {
