@@ -395,5 +395,34 @@ TEST_F(LevelIo, PalettedLevelsAndDoomDataRoundTrip) {
   EXPECT_EQ(back.things.back().flags, 16u);
 }
 
+// A texture kept without colours (a level only written: indices and opacity bytes)
+// writes the bytes its coloured twin writes, at sizes whose texels are not a multiple
+// of the sixteen the opacity bits are packed by, with holes and without.
+TEST_F(LevelIo, ATextureWithoutColoursWritesItsTwinsBytes) {
+  Level coloured = *level_;
+  coloured.palette.resize(limits::kPaletteSize);
+  for (int i = 0; i < limits::kPaletteSize; ++i) coloured.palette[size_t(i)] = image::rgba(i, 255 - i, i / 2);
+  coloured.light_maps.assign(size_t(limits::kStoredMaps) * limits::kPaletteSize, coloured.palette[0]);
+  Level uncoloured = coloured;
+  coloured.textures.clear();
+  uncoloured.textures.clear();
+  const std::pair<int, int> sizes[] = {{1, 1}, {3, 5}, {17, 3}, {16, 1}, {33, 7}, {64, 64}, {5, 13}};
+  for (const bool holes : {true, false})
+    for (const auto& [w, h] : sizes) {
+      const size_t n = size_t(w) * size_t(h);
+      std::vector<uint32_t> texels(n);
+      std::vector<uint8_t> indices(n), opaque(n);
+      for (size_t p = 0; p < n; ++p) {
+        indices[p] = uint8_t(p * 31 % 256);
+        opaque[p] = holes && (p * 7 % 5 == 0) ? 0 : 1;
+        texels[p] = opaque[p] ? coloured.palette[indices[p]] : 0u;
+      }
+      coloured.textures.push_back(make_texture_from_columns("t", w, h, texels, indices));
+      uncoloured.textures.push_back(make_texture_without_colours("t", w, h, indices, opaque));
+      EXPECT_EQ(uncoloured.textures.back().holes, coloured.textures.back().holes) << w << "x" << h;
+    }
+  EXPECT_EQ(encode(uncoloured), encode(coloured));
+}
+
 }  // namespace
 }  // namespace p3d::level
