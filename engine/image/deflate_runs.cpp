@@ -24,8 +24,8 @@ constexpr int kCodeLengthSymbols = 19, kMaxCodeLengthBits = 7;
 constexpr size_t kMinRun = 3, kMaxRun = 258;
 // The shortest run sent as a match. A filtered frame's short runs are mostly zeros,
 // whose literal codes are a bit or two: as literals they take fewer bits than a
-// match's length and distance codes (eight: 2% smaller files than three, and a fifth
-// fewer runs to find).
+// match's length and distance codes (eight rather than three: a Doom frame's PNG 7%
+// smaller, an RGB frame's 2%; four: in between, and slower).
 constexpr size_t kShortestMatch = 8;
 // The order in which a block's header gives the code length code's lengths.
 constexpr uint8_t kCodeLengthOrder[kCodeLengthSymbols] = {16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14, 1, 15};

@@ -92,12 +92,12 @@ Texture make_texture(std::string name, int width, int height, std::vector<uint32
   t.texels = std::move(texels);
   t.indices = std::move(indices);
   t.opaque = std::move(opaque);
-  static_assert(limits::kMaxTextureSize <= UINT16_MAX, "a run's rows are 16-bit");
-  t.run_start.reserve(size_t(width) + 1);
   if (t.texels.empty()) {  // only written: the writer needs to know of holes, not where they are
     t.holes = std::memchr(t.opaque.data(), 0, t.opaque.size()) != nullptr;
     return t;
   }
+  static_assert(limits::kMaxTextureSize <= UINT16_MAX, "a run's rows are 16-bit");
+  t.run_start.reserve(size_t(width) + 1);
   std::vector<uint64_t> transparent;
   for (int x = 0; x < width; ++x) {
     t.run_start.push_back(uint32_t(t.runs.size()));

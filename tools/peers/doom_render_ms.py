@@ -81,7 +81,7 @@ def main():
                 return int(m.group(1)), int(counted.group(1))
             return int(m.group(1)), int(m.group(2))
 
-        realtics = {}
+        measured = {}  # realtics, or instructions
         tics = 0
         for _ in range(a.reps):
             for kind, arg in (("demo", os.path.abspath(a.demo) if os.path.isfile(a.demo) else a.demo),
@@ -89,17 +89,14 @@ def main():
                 for mode in ("noblit", "nodraw"):
                     gametics, r = timedemo(arg, mode)
                     tics = gametics if kind == "demo" else tics
-                    realtics.setdefault((kind, mode), []).append(r)
-        med = {k: statistics.median(v) for k, v in realtics.items()}
+                    measured.setdefault((kind, mode), []).append(r)
+        med = {k: statistics.median(v) for k, v in measured.items()}
         frames = tics - 2
         drawn = med[("demo", "noblit")] - med[("calibration", "noblit")]
         undrawn = med[("demo", "nodraw")] - med[("calibration", "nodraw")]
-        if a.instructions:
-            print(f"{a.port} {os.path.basename(a.iwad)} {os.path.basename(a.demo)} {a.res} frames={frames} "
-                  f"render_instructions_per_frame={(drawn - undrawn) / frames:.0f}")
-        else:
-            print(f"{a.port} {os.path.basename(a.iwad)} {os.path.basename(a.demo)} {a.res} frames={frames} "
+        result = (f"render_instructions_per_frame={(drawn - undrawn) / frames:.0f}" if a.instructions else
                   f"render_ms_per_frame={(drawn - undrawn) * MS_PER_REALTIC / frames:.4f}")
+        print(f"{a.port} {os.path.basename(a.iwad)} {os.path.basename(a.demo)} {a.res} frames={frames} {result}")
     finally:
         shutil.rmtree(work, ignore_errors=True)
 
