@@ -3,42 +3,38 @@
 //   scaling     compile time and frame time as generated maps grow from 1k to 1M walls
 //   grids       grid ray casting against open distance: mazes and open arenas
 //   strategies  tree size, depth, build time and frame time per BSP strategy
-//   hostile, capture, threads, wad, doom: see main's help and the README
+//   hostile, capture, threads: see main's help and the README
+//   wad, doom   beside ZDBSP and Crispy Doom (bench_wad.cpp, bench_doom.cpp)
 //   play        Doom's rules: every monster awake on every Freedoom map, Doom's demos (bench_play.cpp)
 // Timings are wall-clock medians; compare ratios within one run. --json writes the
 // tables as JSON, --plots draws the scaling, threads and doom tables as SVG charts.
-#include <fcntl.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <functional>
 #include <array>
+#include <atomic>
 #include <cctype>
 #include <cmath>
-#include <cstdarg>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <thread>
 
+#include <stb_image_write.h>
+
 #include "engine/bsp/build.h"
 #include "engine/bsp/load.h"
-#include "engine/play/demo.h"
-#include "engine/play/world.h"
-#include "engine/util/rng.h"
-#include "engine/util/thread_pool.h"
-#include <stb_image_write.h>
-#include "engine/wad/write.h"
 #include "engine/level/io.h"
 #include "engine/map/generate.h"
 #include "engine/render/camera_file.h"
 #include "engine/render/renderer.h"
 #include "engine/util/file.h"
-#include "tools/cli.h"
+#include "engine/util/thread_pool.h"
+#include "tools/bench_common.h"
 #include "tools/bench_play.h"
 #include "tools/bench_report.h"
+#include "tools/cli.h"
 #include "tools/plot_svg.h"
 
 using namespace p3d;
@@ -46,29 +42,9 @@ using namespace p3d::bench;
 using tools::BarChart;
 using tools::LineChart;
 using tools::LineSeries;
-using Clock = std::chrono::steady_clock;
 
 namespace {
 
-
-struct Settings {
-  cli::LevelArgs wads;         // the wad section: --iwad, --file, --map
-  int skill = level::kDefaultSkill;
-  int cameras = 30;            // the wad section: random cameras per map
-  int runs = 5;                // the wad section: compiles per map and tool (median)
-  int peer_reps = 3;           // the doom section: Crispy Doom timings per demo (median); 0: ours only
-  int threads = 0;             // the doom, wad and capture sections' "every core": this many threads (0: every core)
-  int width = 640, height = 400;
-  int repeat = 3;              // renders per camera; the median of all frames is reported
-  double budget_seconds = 2;   // per renderer and map: slow renderers render a prefix of the path
-  std::string source_dir = cli::bundled_maps_dir().parent_path().string();
-  std::vector<size_t> sizes = {1000, 10000, 100000, 1000000};
-  std::vector<std::string> renderers;
-  std::string beside_mapc;     // the hostile section: another pseudo3d-mapc timed beside this one
-};
-
-// The thread count of "every core": --threads, or the machine's cores.
-int every_core(const Settings& s) { return s.threads > 0 ? s.threads : int(std::max(1u, std::thread::hardware_concurrency())); }
 
 struct Timing {
   double median_ms = 0;
@@ -323,274 +299,6 @@ void bench_strategies(const Settings& s) {
     }
 }
 
-// ---- wad: every map of WADs compiled beside ZDBSP, and rendered ---------------
-
-// Runs a program with its output discarded: its wall time, peak memory and exit status.
-struct Measured {
-  double seconds = 0;
-  double cpu_seconds = 0;  // user + system
-  double peak_mb = 0;
-  int status = 0;
-};
-Measured run_measured(const std::vector<std::string>& args) {
-  std::vector<char*> argv;
-  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  const auto start = Clock::now();
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    const int null = ::open("/dev/null", O_WRONLY);
-    ::dup2(null, 1);
-    ::dup2(null, 2);
-    ::execvp(argv[0], argv.data());
-    ::_exit(127);
-  }
-  // A child's peak RSS counts the forked copy of this process before its exec (Linux
-  // keeps the high-water mark across exec): main runs the hostile section first, while
-  // bench is still small.
-  int status = 0;
-  rusage usage{};
-  if (pid < 0 || ::wait4(pid, &status, 0, &usage) < 0 || !WIFEXITED(status)) throw Error(args[0] + " did not finish");
-  const auto seconds = [](const timeval& t) { return double(t.tv_sec) + double(t.tv_usec) / 1e6; };
-  return {cli::seconds_since(start), seconds(usage.ru_utime) + seconds(usage.ru_stime), double(usage.ru_maxrss) / 1024,
-          WEXITSTATUS(status)};
-}
-
-// A child's wall time; it must succeed.
-double run_process(const std::vector<std::string>& args) {
-  const Measured m = run_measured(args);
-  if (m.status != 0) throw Error(args[0] + " failed (" + args.back() + ")");
-  return m.seconds;
-}
-
-std::filesystem::path own_directory() { return std::filesystem::read_symlink("/proc/self/exe").parent_path(); }
-
-bool on_path(const std::string& program) {
-  for (const char* dir : {"/usr/bin", "/usr/local/bin", "/usr/games"})
-    if (std::filesystem::exists(std::filesystem::path(dir) / program)) return true;
-  return false;
-}
-
-// ZDBSP's nodes for one map: segs, subsectors (as our leaves) and their mean depth.
-struct PeerTree {
-  size_t segs = 0, subsectors = 0;
-  double mean_depth = 0;
-};
-PeerTree read_peer_tree(const std::filesystem::path& wad_path, const std::string& map) {
-  const wad::Wad w(read_file_bytes(wad_path), wad_path.string());
-  wad::Stack stack;
-  stack.add(w);
-  const auto lumps = stack.map(map);
-  const wad::Lump *segs = lumps ? lumps->find("SEGS") : nullptr, *nodes = lumps ? lumps->find("NODES") : nullptr;
-  if (!segs || !nodes || nodes->bytes.size() % 28) throw Error(wad_path.string() + ": no vanilla nodes for " + map);
-  PeerTree t;
-  t.segs = segs->bytes.size() / 12;
-  const size_t n = nodes->bytes.size() / 28;
-  auto child = [&](size_t node, int k) {
-    const size_t at = node * 28 + 24 + 2 * size_t(k);
-    return uint16_t(nodes->bytes[at] | nodes->bytes[at + 1] << 8);
-  };
-  size_t leaves = 0, depth_sum = 0;
-  std::vector<std::pair<size_t, size_t>> stack_nodes{{n - 1, 1}};  // the root is the last node
-  while (!stack_nodes.empty()) {
-    const auto [node, depth] = stack_nodes.back();
-    stack_nodes.pop_back();
-    for (int k = 0; k < 2; ++k) {
-      const uint16_t c = child(node, k);
-      if (c & 0x8000) {
-        ++leaves, depth_sum += depth;
-      } else if (c < n) {
-        stack_nodes.push_back({c, depth + 1});
-      }
-    }
-  }
-  t.subsectors = leaves;
-  t.mean_depth = leaves ? double(depth_sum) / double(leaves) : 0;
-  return t;
-}
-
-// The bsp renderer with every thing drawn and with none, camera by camera in turn
-// (interleaved, so the machine's noise falls on both alike): the median with things,
-// and the cost of things as a paired ratio: each camera's fastest render with things,
-// summed, over the same without.
-struct SpriteCost {
-  double with_things_ms = 0, without_things_ms = 0, ratio = 0, sprites = 0;
-};
-SpriteCost time_sprites(const level::Level& level, const std::vector<render::Camera>& cameras, int skill,
-                        const Settings& s) {
-  const level::State with = level::start_state(level, skill);
-  level::State without = with;
-  without.things.clear();
-  auto r = render::make_renderer("bsp");
-  render::Frame frame(s.width, s.height);
-  std::vector<double> a, b;
-  SpriteCost cost;
-  double fastest_with = 0, fastest_without = 0;
-  r->render(level, with, cameras.front(), frame);  // warm-up
-  for (const render::Camera& c : cameras) {
-    double best_a = INFINITY, best_b = INFINITY;
-    for (int i = 0; i < s.repeat; ++i) {
-      auto t0 = Clock::now();
-      cost.sprites += double(r->render(level, with, c, frame).sprites_drawn);
-      a.push_back(cli::seconds_since(t0) * 1000);
-      t0 = Clock::now();
-      r->render(level, without, c, frame);
-      b.push_back(cli::seconds_since(t0) * 1000);
-      best_a = std::min(best_a, a.back()), best_b = std::min(best_b, b.back());
-    }
-    fastest_with += best_a, fastest_without += best_b;
-  }
-  cost.with_things_ms = median(a);
-  cost.without_things_ms = median(b);
-  cost.ratio = fastest_with / fastest_without;
-  cost.sprites /= double(a.size());
-  return cost;
-}
-
-// Cameras at random points inside sectors, looking anywhere, eye 41 above the floor.
-std::vector<render::Camera> random_cameras(const level::Level& level, int count, uint64_t seed) {
-  Rng rng(seed);
-  std::vector<render::Camera> out;
-  for (int attempt = 0; int(out.size()) < count && attempt < count * 1000; ++attempt) {
-    const geom::Vec2 p{rng.uniform(level.bounds.min.x, level.bounds.max.x), rng.uniform(level.bounds.min.y, level.bounds.max.y)};
-    const int sector = level::sector_at_brute_force(level, p);  // inside a sector (Doom's rule gives one to any point)
-    if (sector == level::kNone) continue;
-    const level::Sector& s = level.sectors[size_t(sector)];
-    if (s.ceiling - s.floor < 56) continue;  // not inside a closed door or a crusher
-    out.push_back(render::camera_at(level, p, rng.uniform(0, 360)));
-  }
-  return out;
-}
-
-
-// The bsp renderer's ms/frame on the cameras at w x h, on one thread and on `cores`, interleaved camera
-// by camera so that the machine's noise falls on both alike; medians. Each timed frame follows an
-// untimed one of the same camera and renderer, as frames follow each other in a game or a timedemo:
-// a pool worker asleep since the other renderer's frame (a wake-up costs tens of microseconds
-// here) is woken by the untimed frame. keep_indices: a paletted level's frames stay
-// 8-bit (Doom's screen before its blit), else they are resolved to colours.
-std::pair<double, double> time_threads(const level::Level& level, const level::State& state,
-                                       const std::vector<render::Camera>& cameras, int w, int h, int cores, int repeat,
-                                       bool keep_indices = false) {
-  auto one = render::make_renderer("bsp", {.threads = 1});
-  auto all = render::make_renderer("bsp", {.threads = cores});
-  render::Frame frame(w, h);
-  frame.keep_indices = keep_indices;
-  std::vector<double> ms1, msn;
-  for (int pass = 0; pass < 1 + repeat; ++pass)
-    for (const render::Camera& camera : cameras)
-      for (auto [r, out] : {std::pair{one.get(), &ms1}, std::pair{all.get(), &msn}}) {
-        r->render(level, state, camera, frame);
-        const auto t0 = Clock::now();
-        r->render(level, state, camera, frame);
-        if (pass > 0) out->push_back(cli::seconds_since(t0) * 1000);  // pass 0 warms up
-      }
-  return {median(ms1), median(msn)};
-}
-
-// Every map of a WAD at once: `pseudo3d-mapc --all` beside ZDBSP rebuilding the
-// whole WAD's nodes, whole processes, interleaved, median of `runs`.
-void bench_whole_wad(const std::filesystem::path& wad, const std::string& mapc, bool zdbsp,
-                     const std::filesystem::path& dir, int runs) {
-  const std::vector<std::string> ours = {mapc, "--iwad", wad.string(), "--all", "-o", (dir / "all").string()};
-  const std::vector<std::string> peer = {"zdbsp", "-o", (dir / "all.wad").string(), wad.string()};
-  std::vector<double> ours_s, ours_cpu, peer_s, peer_cpu;
-  for (int r = 0; r < runs; ++r) {
-    const Measured o = run_measured(ours);
-    if (o.status != 0) throw Error(mapc + " --all failed (" + wad.string() + ")");
-    ours_s.push_back(o.seconds), ours_cpu.push_back(o.cpu_seconds);
-    if (!zdbsp) continue;
-    const Measured p = run_measured(peer);
-    if (p.status != 0) throw Error("zdbsp failed (" + wad.string() + ")");
-    peer_s.push_back(p.seconds), peer_cpu.push_back(p.cpu_seconds);
-  }
-  const auto peer_cell = [&](double v, int digits) { return zdbsp ? fixed(v, digits) : std::string("n/a"); };
-  report.print("\n#### %s: the whole WAD at once (`pseudo3d-mapc --all` beside ZDBSP rebuilding every map's nodes)\n\n",
-               wad.filename().c_str());
-  report.print("| WAD | mapc --all s | CPU s | zdbsp s | CPU s | mapc / zdbsp | CPU: mapc / zdbsp |\n|---|---:|---:|---:|---:|---:|---:|\n");
-  const double os = median(ours_s), oc = median(ours_cpu), ps = zdbsp ? median(peer_s) : 0, pc = zdbsp ? median(peer_cpu) : 0;
-  report.print("| %s | %s | %s | %s | %s | %s | %s |\n", wad.filename().c_str(), fixed(os, 2).c_str(), fixed(oc, 2).c_str(),
-               peer_cell(ps, 2).c_str(), peer_cell(pc, 2).c_str(), peer_cell(os / ps, 2).c_str(), peer_cell(oc / pc, 2).c_str());
-}
-
-void bench_wad(const Settings& s) {
-  const bsp::LevelSource source = cli::level_source(s.wads);
-  const wad::Stack wads = bsp::read_wads(source.wads);
-  const std::vector<std::string> maps = s.wads.map.empty() ? wads.map_names() : std::vector<std::string>{wad::normalize_name(s.wads.map)};
-  const bool zdbsp = on_path("zdbsp");
-  const auto dir = std::filesystem::temp_directory_path() / ("p3d-bench-wad-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const std::string mapc = (own_directory() / "pseudo3d-mapc").string();
-  report.print("\n### %s: every map compiled (whole process, median of %d) beside ZDBSP, and rendered\n\n",
-              source.wads.back().filename().c_str(), s.runs);
-  const int cores = every_core(s);
-  report.print("| map | lines | mapc ms | zdbsp ms | mapc / zdbsp | segs (2-sided x2) | zdbsp segs | segs / zdbsp | "
-              "leaves | zdbsp subsectors | leaves / zdbsp | mean depth | zdbsp mean depth | depth / zdbsp | "
-              "bsp ms/frame %dx%d | fps | sprites / frame | without things ms | with / without | "
-              "%d threads ms | 1920x1080, %d threads ms |\n",
-              s.width, s.height, cores, cores);
-  report.print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  std::vector<double> time_ratios, seg_ratios, leaf_ratios, depth_ratios, frame_ms, sprite_ratios, threads_ms, hd_ms;
-  for (const std::string& map : maps) {
-    bsp::Stats stats;
-    const level::Level level = bsp::build_wad_map(wads, map, {}, nullptr, &stats);
-    size_t segs = 0;
-    for (const level::Fragment& f : level.fragments) segs += level.walls[f.wall].two_sided() ? 2 : 1;
-
-    std::vector<std::string> ours = {mapc, "--iwad", source.wads.front().string()};
-    for (size_t i = 1; i < source.wads.size(); ++i) ours.insert(ours.end(), {"--file", source.wads[i].string()});
-    ours.insert(ours.end(), {"--map", map, "-o", (dir / "out.bsp").string()});
-    const auto single = dir / "single.wad", built = dir / "built.wad";
-    write_file_atomically(single, wad::map_without_nodes(*wads.map(map)));
-    const std::vector<std::string> peer = {"zdbsp", "-o", built.string(), single.string()};
-    std::vector<double> ours_s, peer_s;
-    for (int r = 0; r < s.runs; ++r) {  // interleaved: the machine's noise hits both alike
-      ours_s.push_back(run_process(ours));
-      if (zdbsp) peer_s.push_back(run_process(peer));
-    }
-    const double ours_ms = median(ours_s) * 1000, peer_ms = zdbsp ? median(peer_s) * 1000 : 0;
-    const PeerTree tree = zdbsp ? read_peer_tree(built, map) : PeerTree{};
-
-    const auto cameras = random_cameras(level, s.cameras, 1);
-    const SpriteCost t = time_sprites(level, cameras, s.skill, s);
-    frame_ms.push_back(t.with_things_ms);
-    sprite_ratios.push_back(t.ratio);
-    const level::State state = level::start_state(level, s.skill);  // things drawn, as t.with_things_ms
-    threads_ms.push_back(time_threads(level, state, cameras, s.width, s.height, cores, s.repeat).second);
-    hd_ms.push_back(time_threads(level, state, cameras, 1920, 1080, cores, s.repeat).second);
-    if (zdbsp) {
-      time_ratios.push_back(ours_ms / peer_ms), seg_ratios.push_back(double(segs) / double(tree.segs));
-      leaf_ratios.push_back(double(stats.leaves) / double(tree.subsectors));
-      depth_ratios.push_back(stats.mean_depth / tree.mean_depth);
-    }
-    const auto peer_cell = [&](const std::string& text) { return zdbsp ? text : std::string("n/a"); };
-    report.print("| %s | %zu | %s | %s | %s | %zu | %s | %s | %zu | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
-                map.c_str(), stats.walls, fixed(ours_ms, 1).c_str(), peer_cell(fixed(peer_ms, 1)).c_str(),
-                peer_cell(fixed(ours_ms / peer_ms, 2)).c_str(), segs, peer_cell(std::to_string(tree.segs)).c_str(),
-                peer_cell(fixed(double(segs) / double(tree.segs), 3)).c_str(), stats.leaves,
-                peer_cell(std::to_string(tree.subsectors)).c_str(),
-                peer_cell(fixed(double(stats.leaves) / double(tree.subsectors), 3)).c_str(), fixed(stats.mean_depth, 2).c_str(),
-                peer_cell(fixed(tree.mean_depth, 2)).c_str(), peer_cell(fixed(stats.mean_depth / tree.mean_depth, 3)).c_str(),
-                fixed(t.with_things_ms, 3).c_str(),
-                fixed(1000 / t.with_things_ms, 0).c_str(), fixed(t.sprites, 1).c_str(),
-                fixed(t.without_things_ms, 3).c_str(), fixed(t.ratio, 2).c_str(), fixed(threads_ms.back(), 3).c_str(),
-                fixed(hd_ms.back(), 3).c_str());
-    std::fflush(stdout);
-  }
-  const auto peer_mean = [&](const std::vector<double>& v) { return zdbsp ? fixed(geomean(v), 3) : std::string("n/a"); };
-  report.print("| geomean | | | | %s | | | %s | | | %s | | | %s | %s | | | | %s | %s | %s |\n",
-              zdbsp ? fixed(geomean(time_ratios), 2).c_str() : "n/a", peer_mean(seg_ratios).c_str(),
-              peer_mean(leaf_ratios).c_str(), peer_mean(depth_ratios).c_str(), fixed(geomean(frame_ms), 3).c_str(),
-              fixed(geomean(sprite_ratios), 2).c_str(), fixed(geomean(threads_ms), 3).c_str(), fixed(geomean(hd_ms), 3).c_str());
-  if (zdbsp && !maps.empty()) {
-    const auto worst = [](const std::vector<double>& v) { return fixed(*std::max_element(v.begin(), v.end()), 3); };
-    report.print("| worst map | | | | | | | %s | | | %s | | | %s | | | | | | | |\n", worst(seg_ratios).c_str(),
-                worst(leaf_ratios).c_str(), worst(depth_ratios).c_str());
-  }
-  if (s.wads.map.empty() && source.wads.size() == 1) bench_whole_wad(source.wads.front(), mapc, zdbsp, dir, s.runs);
-  std::filesystem::remove_all(dir);
-}
-
 // ---- hostile ------------------------------------------------------------------
 
 // Levels built to defeat a compiler: convex sectors of 100,000 and 1,000,000 walls (a
@@ -759,208 +467,6 @@ void bench_threads(const Settings& s) {
     us.push_back(cli::seconds_since(t0) * 1e6);
   }
   report.print("\nA dispatch of 8 empty strips to the pool: median %s us.\n", fixed(median(us), 1).c_str());
-}
-
-// ---- doom: beside Crispy Doom ---------------------------------------------------
-
-// The map a demo lump plays: its header holds skill, episode and map (after a version
-// byte since Doom 1.4).
-std::string demo_map(const wad::Lump& demo, bool numbered_maps) {
-  const std::span<const uint8_t> d = demo.bytes;
-  const size_t at = !d.empty() && d[0] >= 104 ? 2 : 1;
-  if (d.size() < at + 2) throw Error(demo.name + ": not a demo");
-  char name[16];
-  if (numbered_maps) std::snprintf(name, sizeof name, "MAP%02d", d[at + 1]);
-  else std::snprintf(name, sizeof name, "E%dM%d", d[at], d[at + 1]);
-  return name;
-}
-
-// Crispy Doom's render-only ms/frame on a demo (a lump of the IWAD or a .lmp file), by
-// tools/peers/doom_render_ms.py; 0 when it cannot run.
-double crispy_ms(const Settings& s, const std::filesystem::path& iwad, const std::string& demo) {
-  static std::map<std::string, double> measured;  // each demo once per run, for both tables
-  const std::string key = iwad.string() + ":" + demo;
-  if (const auto it = measured.find(key); it != measured.end()) return it->second;
-  double& ms = measured[key];
-  const auto script = std::filesystem::path(s.source_dir) / "tools" / "peers" / "doom_render_ms.py";
-  const std::string command = "python3 '" + script.string() + "' --port crispy --iwad '" + iwad.string() + "' --demo '" +
-                              demo + "' --res 640 --reps " + std::to_string(s.peer_reps) + " 2>/dev/null";
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return 0;
-  std::string out;
-  char buffer[256];
-  while (std::fgets(buffer, sizeof buffer, pipe)) out += buffer;
-  if (::pclose(pipe) != 0) return 0;
-  const size_t at = out.find("render_ms_per_frame=");
-  return ms = at == std::string::npos ? 0 : std::atof(out.c_str() + at + 20);
-}
-
-// The demo replayed by Doom's rules (the same path as Crispy's -timedemo, tic for tic),
-// each tic's view rendered as Crispy draws it above its status bar (640x336, 8-bit):
-// the mean ms/frame on one thread and on `cores`. Each pass replays the whole demo on
-// one thread count, so each frame follows the tic before's as in Crispy's timedemo; the
-// median of `passes` passes for each count, the counts taking turns.
-std::pair<double, double> time_demo_views(const wad::Stack& wads, const level::Level& level, const std::string& map,
-                                          const play::DoomDemo& doom, int cores, int passes) {
-  play::GameOptions o = play::game_options_for(wads, map, doom.skill);
-  o.fast = doom.fast, o.respawn = doom.respawn, o.no_monsters = doom.no_monsters;
-  const play::Demo demo = play::demo_from_doom(doom, level);
-  auto mean_ms = [&](int threads) {
-    play::World world(play::map_from_wads(wads, map, level), level, o, play::Random{});
-    auto renderer = render::make_renderer("bsp", {.threads = threads});
-    render::Frame frame(640, 336);
-    frame.keep_indices = true;
-    double ms = 0;
-    for (const play::DemoTic& t : demo.tics) {
-      world.tick(t.cmd);
-      const play::Mobj& mo = *world.player().mo;
-      const render::Camera camera{{play::to_double(mo.x), play::to_double(mo.y)},
-                                  play::to_double(world.player().view_z), double(mo.angle) * (360.0 / 4294967296.0), 90};
-      const auto t0 = Clock::now();
-      renderer->render(level, world.state(), camera, frame);
-      ms += cli::seconds_since(t0) * 1000;
-    }
-    return ms / double(std::max<size_t>(1, demo.tics.size()));
-  };
-  std::vector<double> one, all;
-  for (int pass = 0; pass < passes; ++pass) one.push_back(mean_ms(1)), all.push_back(mean_ms(cores));
-  return {median(one), median(all)};
-}
-
-// A demo that stands at the map's start and turns in place, left, by Doom's smallest
-// turn a tic (1/256 of a turn): a full turn in 256 tics, each tic a new view.
-play::DoomDemo turn_in_place(const std::string& map) {
-  play::DoomDemo demo;
-  if (std::sscanf(map.c_str(), "MAP%d", &demo.map) != 1 && std::sscanf(map.c_str(), "E%dM%d", &demo.episode, &demo.map) != 2)
-    throw Error(map + ": not a map name");
-  demo.commands.assign(256, play::DoomTic{.turn = 256});
-  return demo;
-}
-
-// Maps viewed from their start turning in place (Freedoom's E1M1, MAP01, MAP02, MAP10
-// and MAP15; with --iwad, its --map or first map): Crispy Doom's render-only time on
-// that demo beside ours on the same views.
-void bench_doom_start_views(const Settings& s, int cores, bool crispy) {
-  const std::filesystem::path games = "/usr/share/games/doom";
-  std::vector<std::pair<std::filesystem::path, std::string>> maps = {
-      {games / "freedoom1.wad", "E1M1"}, {games / "freedoom2.wad", "MAP01"}, {games / "freedoom2.wad", "MAP02"},
-      {games / "freedoom2.wad", "MAP10"}, {games / "freedoom2.wad", "MAP15"}};
-  if (!s.wads.iwad.empty()) maps = {{s.wads.iwad, bsp::resolve_map_name(bsp::read_wads({s.wads.iwad}), s.wads.map)}};
-  report.print("\n### Beside Crispy Doom at each map's start: render-only ms/frame, turning in place\n\n");
-  report.print("Both engines play a demo that stands at the player start and turns left by 1/256 of a turn a tic\n"
-               "(256 views), measured as in the table below.\n\n");
-  report.print("| iwad | map | tics | Crispy 640x400 | ours, 1 thread | ÷ Crispy | ours, %d threads | ÷ Crispy |\n"
-               "|---|---|---:|---:|---:|---:|---:|---:|\n", cores);
-  const auto dir = std::filesystem::temp_directory_path() / ("p3d-bench-doom-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  std::vector<double> ratio1, ration;
-  for (const auto& [iwad, map] : maps) {
-    if (!std::filesystem::exists(iwad)) continue;
-    const wad::Stack wads = bsp::read_wads({iwad});
-    if (!wads.map(map)) continue;
-    const play::DoomDemo demo = turn_in_place(map);
-    const auto file = dir / ("turn" + map + ".lmp");  // Doom names the demo's lump after the file
-    write_file_atomically(file, play::encode_doom_demo(demo));
-    const level::Level level = bsp::build_wad_map(wads, map, {}, nullptr);
-    const double peer = crispy ? crispy_ms(s, iwad, file.string()) : 0;
-    const auto [one, all] = time_demo_views(wads, level, map, demo, cores, s.repeat);
-    if (peer > 0) ratio1.push_back(one / peer), ration.push_back(all / peer);
-    report.print("| %s | %s | %zu | %s | %s | %s | %s | %s |\n", iwad.filename().c_str(), map.c_str(), demo.tic_count(),
-                 peer > 0 ? fixed(peer, 3).c_str() : "n/a", fixed(one, 3).c_str(),
-                 peer > 0 ? fixed(one / peer, 2).c_str() : "n/a", fixed(all, 3).c_str(),
-                 peer > 0 ? fixed(all / peer, 2).c_str() : "n/a");
-    std::fflush(stdout);
-  }
-  std::filesystem::remove_all(dir);
-  report.print("| geomean | | | | | %s | | %s |\n", ratio1.empty() ? "n/a" : fixed(geomean(ratio1), 2).c_str(),
-               ration.empty() ? "n/a" : fixed(geomean(ration), 2).c_str());
-}
-
-// For every demo of the IWADs (Freedoom's eight by default), the map it plays: Crispy
-// Doom's render time on the demo beside ours on the same views (the demo replayed by
-// Doom's rules); then ours on random cameras inside the map, at 640x400 on one thread
-// and on every core, and at 1920x1080.
-void bench_doom(const Settings& s) {
-  const int cores = every_core(s);
-  std::vector<std::filesystem::path> iwads;
-  if (!s.wads.iwad.empty()) iwads.push_back(s.wads.iwad);
-  else
-    for (const char* name : {"freedoom1.wad", "freedoom2.wad"})
-      if (std::filesystem::exists(std::filesystem::path("/usr/share/games/doom") / name))
-        iwads.push_back(std::filesystem::path("/usr/share/games/doom") / name);
-  if (iwads.empty()) return report.print("\n### Beside Crispy Doom: no IWAD (apt-get install freedoom, or --iwad)\n");
-  const bool crispy = s.peer_reps > 0 && on_path("crispy-doom");
-  bench_doom_start_views(s, cores, crispy);
-  if (!s.wads.map.empty()) return;  // one map's start: the demos play others
-  report.print("\n### Beside Crispy Doom on the same views: render-only ms/frame along each demo\n\n");
-  report.print("Both engines play the demo (ours by Doom's rules, in sync with Doom) and draw every tic's view, 640x400\n"
-               "hires: Crispy's render-only time (its -timedemo drawn without blit, less the game without drawing), ours\n"
-               "the mean of every tic's view above the status bar (640x336) in Doom's 8-bit screen.\n\n");
-  report.print("| iwad | demo | map | tics | Crispy 640x400 | ours, 1 thread | ÷ Crispy | ours, %d threads | ÷ Crispy |\n"
-               "|---|---|---|---:|---:|---:|---:|---:|---:|\n", cores);
-  std::vector<double> same1, samen;
-  for (const auto& iwad : iwads) {
-    const wad::Stack wads = bsp::read_wads({iwad});
-    const bool numbered = wads.map("MAP01").has_value();
-    for (int n = 1; n <= 4; ++n) {
-      const std::string demo = "demo" + std::to_string(n);
-      const wad::Lump* lump = wads.find(demo);
-      if (!lump) continue;
-      const std::string map = demo_map(*lump, numbered);
-      if (!wads.map(map)) continue;
-      const play::DoomDemo doom = play::decode_doom_demo(lump->bytes, demo);
-      const level::Level level = bsp::build_wad_map(wads, map, {}, nullptr);
-      const double peer = crispy ? crispy_ms(s, iwad, demo) : 0;
-      const auto [one, all] = time_demo_views(wads, level, map, doom, cores, s.repeat);
-      if (peer > 0) same1.push_back(one / peer), samen.push_back(all / peer);
-      report.print("| %s | %s | %s | %zu | %s | %s | %s | %s | %s |\n", iwad.filename().c_str(), demo.c_str(), map.c_str(),
-                   doom.tic_count(), peer > 0 ? fixed(peer, 3).c_str() : "n/a", fixed(one, 3).c_str(),
-                   peer > 0 ? fixed(one / peer, 2).c_str() : "n/a", fixed(all, 3).c_str(),
-                   peer > 0 ? fixed(all / peer, 2).c_str() : "n/a");
-    }
-  }
-  report.print("| geomean | | | | | | %s | | %s |\n", same1.empty() ? "n/a" : fixed(geomean(same1), 2).c_str(),
-               samen.empty() ? "n/a" : fixed(geomean(samen), 2).c_str());
-
-  report.print("\n### Beside Crispy Doom: render-only ms/frame, things drawn (%d random cameras per map; Crispy on the map's demo)\n\n",
-               s.cameras);
-  report.print("Ours as Crispy's render-only time counts its own: the frame drawn into Doom's 8-bit screen, before the\n"
-               "blit to colours. The last three columns: the same frames resolved to 32-bit colours by the renderer,\n"
-               "as the game shows them.\n\n");
-  report.print("| iwad | demo | map | Crispy 640x400 | ours 640x400, 1 thread | ÷ Crispy | ours, %d threads | ÷ Crispy | "
-               "ours 1920x1080, %d threads | in colours: 1 thread | %d threads | 1920x1080 |\n"
-               "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n", cores, cores, cores);
-  std::vector<double> ratio1, ration, hd, hd_rgba;
-  for (const auto& iwad : iwads) {
-    const wad::Stack wads = bsp::read_wads({iwad});
-    const bool numbered = wads.map("MAP01").has_value();
-    for (int n = 1; n <= 4; ++n) {
-      const std::string demo = "demo" + std::to_string(n);
-      const wad::Lump* lump = wads.find(demo);
-      if (!lump) continue;
-      const std::string map = demo_map(*lump, numbered);
-      if (!wads.map(map)) continue;
-      const level::Level level = bsp::build_wad_map(wads, map, {}, nullptr);
-      const level::State state = level::start_state(level, s.skill);
-      const auto cameras = random_cameras(level, s.cameras, 1);
-      const double peer = crispy ? crispy_ms(s, iwad, demo) : 0;
-      const auto [one, all] = time_threads(level, state, cameras, 640, 400, cores, s.repeat, true);
-      const double big = time_threads(level, state, cameras, 1920, 1080, cores, s.repeat, true).second;
-      const auto [one_rgba, all_rgba] = time_threads(level, state, cameras, 640, 400, cores, s.repeat);
-      const double big_rgba = time_threads(level, state, cameras, 1920, 1080, cores, s.repeat).second;
-      hd.push_back(big), hd_rgba.push_back(big_rgba);
-      if (peer > 0) ratio1.push_back(one / peer), ration.push_back(all / peer);
-      report.print("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", iwad.filename().c_str(), demo.c_str(),
-                   map.c_str(), peer > 0 ? fixed(peer, 3).c_str() : "n/a", fixed(one, 3).c_str(),
-                   peer > 0 ? fixed(one / peer, 2).c_str() : "n/a", fixed(all, 3).c_str(),
-                   peer > 0 ? fixed(all / peer, 2).c_str() : "n/a", fixed(big, 3).c_str(), fixed(one_rgba, 3).c_str(),
-                   fixed(all_rgba, 3).c_str(), fixed(big_rgba, 3).c_str());
-      std::fflush(stdout);
-    }
-  }
-  report.print("| geomean | | | | | %s | | %s | %s | | | %s |\n", ratio1.empty() ? "n/a" : fixed(geomean(ratio1), 2).c_str(),
-               ration.empty() ? "n/a" : fixed(geomean(ration), 2).c_str(), fixed(geomean(hd), 3).c_str(),
-               fixed(geomean(hd_rgba), 3).c_str());
 }
 
 // ---- capture ------------------------------------------------------------------

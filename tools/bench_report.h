@@ -1,5 +1,6 @@
 // bench's shared pieces: the report (markdown tables, kept for --json) and the small
-// statistics every section uses. Sections live in bench.cpp and bench_play.cpp.
+// statistics every section uses. Sections live in bench.cpp, bench_wad.cpp,
+// bench_doom.cpp and bench_play.cpp; what they share besides, in bench_common.h.
 #pragma once
 
 #include <algorithm>
