@@ -20,6 +20,7 @@ constexpr int kLiteralLengthSymbols = 286, kEndOfBlock = 256, kMaxCodeBits = 15;
 // The literal/length codes are kept to 14 bits (deflate allows 15) so that four
 // literals fit one put of the bit writer; a frame's rarest bytes lose a bit at most.
 constexpr int kMaxLiteralBits = 14;
+static_assert(4 * kMaxLiteralBits + 7 <= 64, "four literals and the bits of a partial byte fit 64 bits");
 constexpr int kCodeLengthSymbols = 19, kMaxCodeLengthBits = 7;
 constexpr size_t kMinRun = 3, kMaxRun = 258;
 // The shortest run sent as a match. A filtered frame's short runs are mostly zeros,

@@ -23,6 +23,7 @@ seed grid tests/fuzz/seeds/room.grid tests/bad/*.grid
 seed demo tests/fuzz/seeds/walk.demo maps/*.demo
 seed cameras maps/*.cameras maps/*.path maps/*.route
 seed png maps/textures/lantern.png maps/textures/lamp.png maps/textures/hazard.png tests/bad/fake.png
+seed encode maps/textures/lamp.png  # any bytes: its first two choose the image's shape
 seed wad tests/fuzz/seeds/map01.wad
 seed udmf tests/fuzz/seeds/textmap.udmf
 seed lmp tests/fuzz/seeds/walk.lmp tests/fuzz/seeds/old.lmp
@@ -34,7 +35,7 @@ seed net tests/fuzz/seeds/game.net tests/fuzz/seeds/server.net
 mkdir -p "$work/bsp"
 $build/tools/pseudo3d-mapc tests/fuzz/seeds/room.map -o "$work/bsp/room.bsp" >/dev/null
 $build/tools/pseudo3d-mapc tests/fuzz/seeds/room.grid -o "$work/bsp/grid.bsp" >/dev/null
-targets=(map grid bsp demo cameras png wad udmf lmp dmx mus save world net)
+targets=(map grid bsp demo cameras png encode wad udmf lmp dmx mus save world net)
 fuzz() {  # fuzz TARGET: runs it, leaves its table row in $build/fuzz_TARGET.row
   local target=$1 log="$build/fuzz_$1.log" crashes=0
   rm -rf "$build/crashes/$target" && mkdir -p "$build/crashes/$target"

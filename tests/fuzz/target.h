@@ -1,5 +1,5 @@
-// The fuzz targets live in one binary (their headers compiled once, not thirteen
-// times): each file names its target with P3D_FUZZ_TARGET(name) { body over data, size }
+// The fuzz targets live in one binary (their headers compiled once, not once a
+// target): each file names its target with P3D_FUZZ_TARGET(name) { body over data, size }
 // and the binary runs the one its name says (build-sanitize/tests/fuzz/fuzz_NAME, a link
 // to it) or P3D_FUZZ_TARGET names (fuzz_main.cpp).
 #pragma once

@@ -1,6 +1,7 @@
 // The run-length deflater against libdeflate's decompressor (an independent inflater
 // that refuses what RFC 1950/1951 do not allow): every input back exactly, runs of
-// every length, skewed frequencies whose Huffman code must be cut to 14 bits.
+// every length, skewed frequencies, and codes cut to 14 bits whose longest literals go
+// four to a put of the bit writer.
 #include <libdeflate.h>
 
 #include <gtest/gtest.h>
@@ -50,8 +51,9 @@ TEST(DeflateRuns, EveryInputComesBackExactly) {
   expect_round_trip(mixed, "mixed");
 }
 
-TEST(DeflateRuns, SkewedFrequenciesKeepCodesWithin14Bits) {
-  // Symbol k appearing Fibonacci(k) times: an unlimited Huffman code would be 24 deep.
+TEST(DeflateRuns, SkewedFrequenciesComeBack) {
+  // Symbol k appearing Fibonacci(k) times, shuffled: three blocks, each with codes from
+  // 1 to 14 bits long.
   std::vector<uint8_t> skewed;
   uint64_t a = 1, b = 1;
   for (int symbol = 0; symbol < 25; ++symbol, std::swap(a, b), b += a)
@@ -59,6 +61,27 @@ TEST(DeflateRuns, SkewedFrequenciesKeepCodesWithin14Bits) {
   Rng rng(3);
   for (size_t i = skewed.size(); i > 1; --i) std::swap(skewed[i - 1], skewed[rng.below(i)]);  // no runs to speak of
   expect_round_trip(skewed, "Fibonacci frequencies");
+}
+
+TEST(DeflateRuns, LiteralsOfTheLongestCodesComeBackFourToAPut) {
+  // Symbol k (k = 0..15) appearing 2^k times, 64 KB in all (one block): unlimited, the
+  // rarest codes would be 16 bits long; cut to 14, the four rarest symbols take 14 bits
+  // each. They come first, fifteen in a row with no two alike (no runs): the bit writer
+  // puts four such literals at once, 56 bits.
+  std::vector<uint8_t> bytes;
+  for (int k : {3, 2, 3, 1, 3, 2, 3, 0, 3, 2, 3, 1, 3, 2, 3}) bytes.push_back(uint8_t(k * 16));
+  std::vector<uint8_t> others;
+  for (int k = 4; k < 15; ++k) others.insert(others.end(), size_t(1) << k, uint8_t(k * 16));
+  Rng rng(5);
+  for (size_t i = others.size(); i > 1; --i) std::swap(others[i - 1], others[rng.below(i)]);
+  size_t most = size_t(1) << 15;  // the commonest symbol between the others: no runs
+  for (const uint8_t o : others) {
+    bytes.push_back(o);
+    if (most) bytes.push_back(15 * 16), --most;
+  }
+  bytes.insert(bytes.end(), most, uint8_t(15 * 16));
+  ASSERT_EQ(bytes.size(), size_t(65535));
+  expect_round_trip(bytes, "powers of two, the rarest first");
 }
 
 TEST(DeflateRuns, RunsCompress) {

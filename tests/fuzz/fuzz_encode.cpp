@@ -1,0 +1,57 @@
+// The PNG encoder, both ways of deflating, against stb_image's decoder (an inflater of
+// its own): every image comes back pixel for pixel. The first two bytes choose the width,
+// whether the image is paletted or opaque, how it deflates and how many times each byte
+// repeats (runs, for deflate_runs' matches); the rest are its pixels.
+#include <cstdlib>
+
+#include "engine/image/image.h"
+#include "engine/util/error.h"
+#include "tests/fuzz/target.h"
+
+using namespace p3d;
+
+namespace {
+
+// A distinct colour for each index, some of them not opaque.
+uint32_t palette_colour(size_t i) { return image::rgba(int(i), int(255 - i), int(i * 7 % 256), i % 5 ? 255 : int(i)); }
+
+}  // namespace
+
+P3D_FUZZ_TARGET(encode) {
+  if (size < 3) return 0;
+  const int width = 1 + int(data[0]) * 3 % 300;  // past 16 and 48 bytes a row: the filters' SSE2 steps
+  const bool paletted = data[1] & 1, opaque = data[1] & 2;
+  const image::PngDeflate how = data[1] & 4 ? image::PngDeflate::kSearch : image::PngDeflate::kRuns;
+  const size_t repeat = 1 + (data[1] >> 3) % 12;
+  std::vector<uint8_t> bytes;
+  for (size_t i = 2; i < size; ++i) bytes.insert(bytes.end(), repeat, data[i]);
+
+  std::vector<uint32_t> expected;
+  std::vector<uint8_t> png;
+  if (paletted) {
+    const size_t colours = 1 + bytes[0];
+    const size_t height = (bytes.size() - 1) / size_t(width);
+    if (height == 0) return 0;
+    std::vector<uint32_t> palette;
+    for (size_t i = 0; i < colours; ++i) palette.push_back(palette_colour(i));
+    std::vector<uint8_t> indices(size_t(width) * height);
+    for (size_t p = 0; p < indices.size(); ++p) {
+      indices[p] = uint8_t(bytes[1 + p] % colours);
+      expected.push_back(palette[indices[p]]);
+    }
+    png = image::encode_png(width, int(height), indices, palette, how);
+  } else {
+    const size_t height = bytes.size() / 4 / size_t(width);
+    if (height == 0) return 0;
+    image::Image img(width, int(height));
+    for (size_t p = 0; p < img.pixels.size(); ++p) {
+      const uint8_t* b = &bytes[4 * p];
+      img.pixels[p] = image::rgba(b[0], b[1], b[2], opaque ? 255 : b[3]);
+    }
+    expected = img.pixels;
+    png = image::encode_png(img, how);
+  }
+  const image::Image back = image::decode_png(png, "encoded");
+  if (back.width != width || back.pixels != expected) std::abort();  // not what was encoded
+  return 0;
+}
