@@ -45,7 +45,6 @@ using tools::LineSeries;
 
 namespace {
 
-
 struct Timing {
   double median_ms = 0;
   size_t frames = 0;
@@ -53,7 +52,6 @@ struct Timing {
   double pixels = 0;         // mean per frame
   double steps_per_ray = 0;  // mean (ray-based renderers)
 };
-
 
 Timing time_renderer(render::Renderer& r, const level::Level& level, const std::vector<render::Camera>& path,
                      const Settings& s) {
@@ -109,7 +107,6 @@ std::vector<map::Texture> bundled_textures(const Settings& s) {
     textures.push_back({name, image::load_png(std::filesystem::path(s.source_dir) / "maps/textures" / (std::string(name) + ".png")), {}});
   return textures;
 }
-
 
 std::string count_text(size_t n) {
   if (n >= 1000000 && n % 1000000 == 0) return std::to_string(n / 1000000) + "M";

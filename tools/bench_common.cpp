@@ -71,7 +71,6 @@ std::vector<render::Camera> random_cameras(const level::Level& level, int count,
   return out;
 }
 
-
 // The bsp renderer's ms/frame on the cameras at w x h, on one thread and on `cores`, interleaved camera
 // by camera so that the machine's noise falls on both alike; medians. Each timed frame follows an
 // untimed one of the same camera and renderer, as frames follow each other in a game or a timedemo:
