@@ -33,6 +33,23 @@ std::string demo_map(const wad::Lump& demo, bool numbered_maps) {
   return name;
 }
 
+// Calls visit(iwad, wads, demo, lump, map) for each demo lump of the IWADs (DEMO1 to
+// DEMO4) whose map the IWAD holds.
+template <typename Visit>
+void for_each_demo_map(const std::vector<std::filesystem::path>& iwads, const Visit& visit) {
+  for (const auto& iwad : iwads) {
+    const wad::Stack wads = bsp::read_wads({iwad});
+    const bool numbered = wads.map("MAP01").has_value();
+    for (int n = 1; n <= 4; ++n) {
+      const std::string demo = "demo" + std::to_string(n);
+      const wad::Lump* lump = wads.find(demo);
+      if (!lump) continue;
+      const std::string map = demo_map(*lump, numbered);
+      if (wads.map(map)) visit(iwad, wads, demo, *lump, map);
+    }
+  }
+}
+
 // Crispy Doom's render-only ms/frame on a demo (a lump of the IWAD or a .lmp file), by
 // tools/peers/doom_render_ms.py; 0 when it cannot run.
 double crispy_ms(const Settings& s, const std::filesystem::path& iwad, const std::string& demo) {
@@ -159,26 +176,18 @@ void bench_doom(const Settings& s) {
   report.print("| iwad | demo | map | tics | Crispy 640x400 | ours, 1 thread | ÷ Crispy | ours, %d threads | ÷ Crispy |\n"
                "|---|---|---|---:|---:|---:|---:|---:|---:|\n", cores);
   std::vector<double> same1, samen;
-  for (const auto& iwad : iwads) {
-    const wad::Stack wads = bsp::read_wads({iwad});
-    const bool numbered = wads.map("MAP01").has_value();
-    for (int n = 1; n <= 4; ++n) {
-      const std::string demo = "demo" + std::to_string(n);
-      const wad::Lump* lump = wads.find(demo);
-      if (!lump) continue;
-      const std::string map = demo_map(*lump, numbered);
-      if (!wads.map(map)) continue;
-      const play::DoomDemo doom = play::decode_doom_demo(lump->bytes, demo);
-      const level::Level level = bsp::build_wad_map(wads, map, {}, nullptr);
-      const double peer = crispy ? crispy_ms(s, iwad, demo) : 0;
-      const auto [one, all] = time_demo_views(wads, level, map, doom, cores, s.repeat);
-      if (peer > 0) same1.push_back(one / peer), samen.push_back(all / peer);
-      report.print("| %s | %s | %s | %zu | %s | %s | %s | %s | %s |\n", iwad.filename().c_str(), demo.c_str(), map.c_str(),
-                   doom.tic_count(), peer > 0 ? fixed(peer, 3).c_str() : "n/a", fixed(one, 3).c_str(),
-                   peer > 0 ? fixed(one / peer, 2).c_str() : "n/a", fixed(all, 3).c_str(),
-                   peer > 0 ? fixed(all / peer, 2).c_str() : "n/a");
-    }
-  }
+  for_each_demo_map(iwads, [&](const std::filesystem::path& iwad, const wad::Stack& wads, const std::string& demo,
+                               const wad::Lump& lump, const std::string& map) {
+    const play::DoomDemo doom = play::decode_doom_demo(lump.bytes, demo);
+    const level::Level level = bsp::build_wad_map(wads, map, {}, nullptr);
+    const double peer = crispy ? crispy_ms(s, iwad, demo) : 0;
+    const auto [one, all] = time_demo_views(wads, level, map, doom, cores, s.repeat);
+    if (peer > 0) same1.push_back(one / peer), samen.push_back(all / peer);
+    report.print("| %s | %s | %s | %zu | %s | %s | %s | %s | %s |\n", iwad.filename().c_str(), demo.c_str(), map.c_str(),
+                 doom.tic_count(), peer > 0 ? fixed(peer, 3).c_str() : "n/a", fixed(one, 3).c_str(),
+                 peer > 0 ? fixed(one / peer, 2).c_str() : "n/a", fixed(all, 3).c_str(),
+                 peer > 0 ? fixed(all / peer, 2).c_str() : "n/a");
+  });
   report.print("| geomean | | | | | | %s | | %s |\n", same1.empty() ? "n/a" : fixed(geomean(same1), 2).c_str(),
                samen.empty() ? "n/a" : fixed(geomean(samen), 2).c_str());
 
@@ -191,33 +200,25 @@ void bench_doom(const Settings& s) {
                "ours 1920x1080, %d threads | in colours: 1 thread | %d threads | 1920x1080 |\n"
                "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n", cores, cores, cores);
   std::vector<double> ratio1, ration, hd, hd_rgba;
-  for (const auto& iwad : iwads) {
-    const wad::Stack wads = bsp::read_wads({iwad});
-    const bool numbered = wads.map("MAP01").has_value();
-    for (int n = 1; n <= 4; ++n) {
-      const std::string demo = "demo" + std::to_string(n);
-      const wad::Lump* lump = wads.find(demo);
-      if (!lump) continue;
-      const std::string map = demo_map(*lump, numbered);
-      if (!wads.map(map)) continue;
-      const level::Level level = bsp::build_wad_map(wads, map, {}, nullptr);
-      const level::State state = level::start_state(level, s.skill);
-      const auto cameras = random_cameras(level, s.cameras, 1);
-      const double peer = crispy ? crispy_ms(s, iwad, demo) : 0;
-      const auto [one, all] = time_threads(level, state, cameras, 640, 400, cores, s.repeat, true);
-      const double big = time_threads(level, state, cameras, 1920, 1080, cores, s.repeat, true).second;
-      const auto [one_rgba, all_rgba] = time_threads(level, state, cameras, 640, 400, cores, s.repeat);
-      const double big_rgba = time_threads(level, state, cameras, 1920, 1080, cores, s.repeat).second;
-      hd.push_back(big), hd_rgba.push_back(big_rgba);
-      if (peer > 0) ratio1.push_back(one / peer), ration.push_back(all / peer);
-      report.print("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", iwad.filename().c_str(), demo.c_str(),
-                   map.c_str(), peer > 0 ? fixed(peer, 3).c_str() : "n/a", fixed(one, 3).c_str(),
-                   peer > 0 ? fixed(one / peer, 2).c_str() : "n/a", fixed(all, 3).c_str(),
-                   peer > 0 ? fixed(all / peer, 2).c_str() : "n/a", fixed(big, 3).c_str(), fixed(one_rgba, 3).c_str(),
-                   fixed(all_rgba, 3).c_str(), fixed(big_rgba, 3).c_str());
-      std::fflush(stdout);
-    }
-  }
+  for_each_demo_map(iwads, [&](const std::filesystem::path& iwad, const wad::Stack& wads, const std::string& demo,
+                               const wad::Lump&, const std::string& map) {
+    const level::Level level = bsp::build_wad_map(wads, map, {}, nullptr);
+    const level::State state = level::start_state(level, s.skill);
+    const auto cameras = random_cameras(level, s.cameras, 1);
+    const double peer = crispy ? crispy_ms(s, iwad, demo) : 0;
+    const auto [one, all] = time_threads(level, state, cameras, 640, 400, cores, s.repeat, true);
+    const double big = time_threads(level, state, cameras, 1920, 1080, cores, s.repeat, true).second;
+    const auto [one_rgba, all_rgba] = time_threads(level, state, cameras, 640, 400, cores, s.repeat);
+    const double big_rgba = time_threads(level, state, cameras, 1920, 1080, cores, s.repeat).second;
+    hd.push_back(big), hd_rgba.push_back(big_rgba);
+    if (peer > 0) ratio1.push_back(one / peer), ration.push_back(all / peer);
+    report.print("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", iwad.filename().c_str(), demo.c_str(),
+                 map.c_str(), peer > 0 ? fixed(peer, 3).c_str() : "n/a", fixed(one, 3).c_str(),
+                 peer > 0 ? fixed(one / peer, 2).c_str() : "n/a", fixed(all, 3).c_str(),
+                 peer > 0 ? fixed(all / peer, 2).c_str() : "n/a", fixed(big, 3).c_str(), fixed(one_rgba, 3).c_str(),
+                 fixed(all_rgba, 3).c_str(), fixed(big_rgba, 3).c_str());
+    std::fflush(stdout);
+  });
   report.print("| geomean | | | | | %s | | %s | %s | | | %s |\n", ratio1.empty() ? "n/a" : fixed(geomean(ratio1), 2).c_str(),
                ration.empty() ? "n/a" : fixed(geomean(ration), 2).c_str(), fixed(geomean(hd), 3).c_str(),
                fixed(geomean(hd_rgba), 3).c_str());
