@@ -1,5 +1,5 @@
 // A zlib stream (RFC 1950/1951) made of runs and literals only: each byte repeating
-// the one before it eight times or more becomes a match at distance 1 (as zlib's Z_RLE
+// the one before it sixteen times or more becomes a match at distance 1 (as zlib's Z_RLE
 // strategy, with longer runs), everything else a literal, a block of Huffman codes
 // for each 64 KB.
 // A filtered PNG row of a rendered frame is mostly runs (the Up and Sub filters turn a

@@ -46,8 +46,8 @@ TEST(DeflateRuns, EveryInputComesBackExactly) {
   std::vector<uint8_t> runs;  // a run of every length from 1 to 600, byte values alternating
   for (size_t n = 1; n <= 600; ++n) runs.insert(runs.end(), n, uint8_t(n % 2 ? 3 : 200));
   expect_round_trip(runs, "runs of every length");
-  std::vector<uint8_t> mixed;  // runs short and long (from 8) among literals, every byte value
-  for (int i = 0; i < 50000; ++i) mixed.insert(mixed.end(), size_t(1 + rng.below(12)), uint8_t(rng.below(256)));
+  std::vector<uint8_t> mixed;  // runs short and long (from 16) among literals, every byte value
+  for (int i = 0; i < 50000; ++i) mixed.insert(mixed.end(), size_t(1 + rng.below(24)), uint8_t(rng.below(256)));
   expect_round_trip(mixed, "mixed");
 }
 
