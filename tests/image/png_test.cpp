@@ -1,7 +1,12 @@
 // The PNG encoder against the decoder (stb_image, independent of it): every pixel
 // back exactly, opaque images as RGB and others as RGBA, 8-bit frames as palette
 // indices, any size, deflated either way; the same pixels give the same bytes.
+#include <libdeflate.h>
+
 #include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
 
 #include "engine/image/image.h"
 #include "engine/util/error.h"
@@ -96,6 +101,79 @@ TEST(Png, EncodesPaletteIndicesExactly) {
   // A quarter of the bytes to compress: an 8-bit frame's PNG is smaller than its colours'.
   const Paletted p = paletted(320, 200, 256, true, 5);
   EXPECT_LT(encode_png(320, 200, p.indices, p.palette).size(), encode_png(p.colours()).size());
+}
+
+// The filter type of each row of a PNG: its IDAT chunks inflated (libdeflate).
+std::vector<int> row_filters(const std::vector<uint8_t>& png, int width, int height, size_t channels) {
+  const auto be32 = [&](size_t at) { return uint32_t(png[at]) << 24 | uint32_t(png[at + 1]) << 16 | png[at + 2] << 8 | png[at + 3]; };
+  std::vector<uint8_t> idat;
+  for (size_t at = 8; at + 12 <= png.size(); at += 12 + be32(at))
+    if (std::string(png.begin() + long(at) + 4, png.begin() + long(at) + 8) == "IDAT")
+      idat.insert(idat.end(), png.begin() + long(at) + 8, png.begin() + long(at + 8 + be32(at)));
+  const size_t stride = size_t(width) * channels + 1;
+  std::vector<uint8_t> rows(stride * size_t(height));
+  libdeflate_decompressor* d = libdeflate_alloc_decompressor();
+  const libdeflate_result r = libdeflate_zlib_decompress(d, idat.data(), idat.size(), rows.data(), rows.size(), nullptr);
+  libdeflate_free_decompressor(d);
+  EXPECT_EQ(r, LIBDEFLATE_SUCCESS);
+  std::vector<int> filters;
+  for (int y = 0; y < height; ++y) filters.push_back(rows[size_t(y) * stride]);
+  return filters;
+}
+
+// Indices and a grey palette as a PNG, checked to come back exactly; its rows' filters.
+std::vector<int> encoded_filters(int width, int height, const std::vector<uint8_t>& indices) {
+  std::vector<uint32_t> palette(256);
+  for (size_t i = 0; i < palette.size(); ++i) palette[i] = 0xFF000000u | uint32_t(i * 0x010101u);
+  const std::vector<uint8_t> png = encode_png(width, height, indices, palette);
+  const Image back = decode_png(png, "x.png");
+  for (size_t i = 0; i < indices.size(); ++i) EXPECT_EQ(back.pixels[i], palette[indices[i]]) << "width " << width;
+  return row_filters(png, width, height, 1);
+}
+
+// Widths around the encoder's steps of sixteen bytes (costed in samples, written whole).
+constexpr int kFilterWidths[] = {5, 17, 31, 32, 33, 48, 49, 64, 65, 100, 301};
+
+// Rows made for None, Sub, Up and Average in turn (each filter's bytes all zero, the
+// others' not), between rows of noise: each is chosen, and comes back.
+TEST(Png, EachFilterIsChosenWhereItIsBest) {
+  for (const int width : kFilterWidths) {
+    Rng rng{uint64_t(width)};
+    const int height = 8;
+    std::vector<uint8_t> indices(size_t(width * height));
+    const auto at = [&](int x, int y) -> uint8_t& { return indices[size_t(y * width + x)]; };
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const int a = x ? at(x - 1, y) : 0, b = y ? at(x, y - 1) : 0;
+        const int filter = y % 2 ? y / 2 : -1;  // odd rows: None, Sub, Up, Average; even rows: noise
+        const int first = 1 + int(rng.below(255));  // Sub's row: one value, not zero (None would tie)
+        at(x, y) = uint8_t(filter == 0 ? 0 : filter == 1 ? (x ? a : first) : filter == 2 ? b : filter == 3 ? (a + b) / 2
+                                                                                                   : int(rng.below(256)));
+      }
+    const std::vector<int> filters = encoded_filters(width, height, indices);
+    for (int y = 1; y < height; y += 2) EXPECT_EQ(filters[size_t(y)], y / 2) << "width " << width << ", row " << y;
+  }
+}
+
+// Paeth, the filter a rendered frame's rows choose most, is written on the way as the
+// rows are costed: overlapping flat rectangles (walls, sprites) choose it in some rows
+// and another filter in others, and every row comes back.
+TEST(Png, PaethRowsAndOthersComeBack) {
+  for (const int width : kFilterWidths) {
+    Rng rng{uint64_t(width)};
+    const int height = 40;
+    std::vector<uint8_t> indices(size_t(width * height));
+    for (int k = 0; k < 60; ++k) {
+      const int x0 = int(rng.below(uint64_t(width))), y0 = int(rng.below(height));
+      const int x1 = std::min(width, x0 + 1 + int(rng.below(uint64_t(width))));
+      const int y1 = std::min(height, y0 + 1 + int(rng.below(height)));
+      const uint8_t v = uint8_t(rng.below(256));
+      for (int y = y0; y < y1; ++y) std::fill_n(indices.begin() + y * width + x0, x1 - x0, v);
+    }
+    const std::vector<int> filters = encoded_filters(width, height, indices);
+    EXPECT_NE(std::count(filters.begin(), filters.end(), 4), 0) << "width " << width;
+    EXPECT_NE(std::count(filters.begin(), filters.end(), 4), height) << "width " << width;
+  }
 }
 
 TEST(Png, PaletteIndicesThatDoNotFitAreAnError) {
