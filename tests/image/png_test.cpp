@@ -9,6 +9,7 @@
 #include <string>
 
 #include "engine/image/image.h"
+#include "engine/image/png_filters.h"
 #include "engine/util/error.h"
 #include "engine/util/rng.h"
 
@@ -174,6 +175,47 @@ TEST(Png, PaethRowsAndOthersComeBack) {
     EXPECT_NE(std::count(filters.begin(), filters.end(), 4), 0) << "width " << width;
     EXPECT_NE(std::count(filters.begin(), filters.end(), 4), height) << "width " << width;
   }
+}
+
+// A filtered row put back (PNG's reconstruction, written here apart from the encoder).
+std::vector<uint8_t> unfiltered(const uint8_t* filtered, const std::vector<uint8_t>& up, size_t channels) {
+  const int type = filtered[0];
+  std::vector<uint8_t> row(up.size());
+  for (size_t x = 0; x < row.size(); ++x) {
+    const int a = x >= channels ? row[x - channels] : 0, b = up[x], c = x >= channels ? up[x - channels] : 0;
+    const int pa = std::abs(b - c), pb = std::abs(a - c), pc = std::abs(a + b - 2 * c);
+    const int predicted = type == 0 ? 0 : type == 1 ? a : type == 2 ? b : type == 3 ? (a + b) / 2
+                        : pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
+    row[x] = uint8_t(filtered[x + 1] + predicted);
+  }
+  return row;
+}
+
+// The filters' loops sixteen and thirty-two bytes wide (where this processor has AVX2)
+// write the same bytes, which put the rows back; rows too short for either are filtered
+// a byte at a time. Widths around each step, one to four bytes a pixel.
+TEST(Png, FiltersWriteTheSameBytesAtEveryWidth) {
+  std::vector<FilterLanes> widths = {FilterLanes::kSixteen};
+  if (widest_filter_lanes() == FilterLanes::kThirtyTwo) widths.push_back(FilterLanes::kThirtyTwo);
+  Rng rng{3};
+  for (const size_t channels : {size_t(1), size_t(3), size_t(4)})
+    for (size_t stride = channels; stride <= 200 * channels; stride += channels) {
+      std::vector<uint8_t> up(stride), row(stride);
+      for (size_t x = 0; x < stride; ++x) {
+        up[x] = uint8_t(rng.below(4) ? x / 7 : rng.below(256));  // flat stretches, steps and noise
+        row[x] = uint8_t(rng.below(3) ? up[x] + x / 11 : rng.below(256));
+      }
+      std::vector<uint8_t> first(stride + 1);
+      filter_row(row.data(), up.data(), stride, channels, first.data(), FilterLanes::kOne);
+      EXPECT_EQ(unfiltered(first.data(), up, channels), row) << "a byte at a time, stride " << stride;
+      for (size_t k = 0; k < widths.size(); ++k) {
+        std::vector<uint8_t> out(stride + 1);
+        filter_row(row.data(), up.data(), stride, channels, out.data(), widths[k]);
+        EXPECT_EQ(unfiltered(out.data(), up, channels), row) << "stride " << stride << ", " << channels << " a pixel";
+        if (k == 0) first = out;
+        else EXPECT_EQ(out, first) << "stride " << stride << ", " << channels << " a pixel";
+      }
+    }
 }
 
 TEST(Png, PaletteIndicesThatDoNotFitAreAnError) {
