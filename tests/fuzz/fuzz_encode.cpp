@@ -2,6 +2,7 @@
 // its own): every image comes back pixel for pixel. The first two bytes choose the width,
 // whether the image is paletted or opaque, how it deflates and how many times each byte
 // repeats (runs, for deflate_runs' matches); the rest are its pixels.
+#include <algorithm>
 #include <cstdlib>
 
 #include "engine/image/image.h"
@@ -17,6 +18,9 @@ uint32_t palette_colour(size_t i) { return image::rgba(int(i), int(255 - i), int
 
 }  // namespace
 
+// Rows enough for any step of the encoder; decode_png reads sides up to 16384 only.
+constexpr size_t kMaxRows = 4096;
+
 P3D_FUZZ_TARGET(encode) {
   if (size < 3) return 0;
   const int width = 1 + int(data[0]) * 3 % 300;  // past 16 and 48 bytes a row: the filters' SSE2 steps
@@ -30,7 +34,7 @@ P3D_FUZZ_TARGET(encode) {
   std::vector<uint8_t> png;
   if (paletted) {
     const size_t colours = 1 + bytes[0];
-    const size_t height = (bytes.size() - 1) / size_t(width);
+    const size_t height = std::min(kMaxRows, (bytes.size() - 1) / size_t(width));
     if (height == 0) return 0;
     std::vector<uint32_t> palette;
     for (size_t i = 0; i < colours; ++i) palette.push_back(palette_colour(i));
@@ -41,7 +45,7 @@ P3D_FUZZ_TARGET(encode) {
     }
     png = image::encode_png(width, int(height), indices, palette, how);
   } else {
-    const size_t height = bytes.size() / 4 / size_t(width);
+    const size_t height = std::min(kMaxRows, bytes.size() / 4 / size_t(width));
     if (height == 0) return 0;
     image::Image img(width, int(height));
     for (size_t p = 0; p < img.pixels.size(); ++p) {
