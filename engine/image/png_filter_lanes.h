@@ -87,9 +87,10 @@ size_t cost_steps(const uint8_t* row, const uint8_t* up, size_t channels, size_t
 // Ops::kBytes); the last step overlaps the one before it.
 template <typename Ops>
 void apply(int type, const uint8_t* row, const uint8_t* up, size_t channels, size_t stride, uint8_t* out) {
+  const auto store = [&](size_t x) { Ops::store(out + x, Pixels<Ops>::at(row, up, channels, x).filtered(type)); };
   size_t x = channels;
-  for (; x + Ops::kBytes <= stride; x += Ops::kBytes) Ops::store(out + x, Pixels<Ops>::at(row, up, channels, x).filtered(type));
-  if (x < stride) Ops::store(out + stride - Ops::kBytes, Pixels<Ops>::at(row, up, channels, stride - Ops::kBytes).filtered(type));
+  for (; x + Ops::kBytes <= stride; x += Ops::kBytes) store(x);
+  if (x < stride) store(stride - Ops::kBytes);
 }
 
 }  // namespace p3d::image::lanes

@@ -76,7 +76,9 @@ struct Sse2 {
   static V add64(V x, V y) { return _mm_add_epi64(x, y); }
   static V load_spread(const uint8_t* p) { return load(p); }  // a vector holds one sixteen
   static void store_spread(uint8_t* p, V v) { store(p, v); }
-  static uint32_t total(V sums) { return uint32_t(_mm_cvtsi128_si32(sums) + _mm_cvtsi128_si32(_mm_srli_si128(sums, 8))); }
+  static uint32_t total(V sums) {
+    return uint32_t(_mm_cvtsi128_si32(sums) + _mm_cvtsi128_si32(_mm_srli_si128(sums, 8)));
+  }
 };
 
 // The costs over the sample of bytes [channels, stride) (stride >= channels + 16),
@@ -120,7 +122,8 @@ FilterLanes widest_filter_lanes() {
 // sample of a long row's bytes); only its bytes are written. Sampling every other
 // sixteen bytes takes half the work and chooses nearly as well: a Doom frame's PNG 9%
 // faster to make and 0.3-1% bigger (a quarter of the row: 1-2% bigger for 5% more).
-void filter_row(const uint8_t* row, const uint8_t* up, size_t stride, size_t channels, uint8_t* out, FilterLanes lanes) {
+void filter_row(const uint8_t* row, const uint8_t* up, size_t stride, size_t channels, uint8_t* out,
+                FilterLanes lanes) {
   uint32_t cost[5] = {0, 0, 0, 0, 0};  // a row is at most 2^31 / 128 bytes (PNG's width limit times 4)
   bool wide = false, widest = false;
 #ifdef __SSE2__

@@ -106,7 +106,9 @@ TEST(Png, EncodesPaletteIndicesExactly) {
 
 // The filter type of each row of a PNG: its IDAT chunks inflated (libdeflate).
 std::vector<int> row_filters(const std::vector<uint8_t>& png, int width, int height, size_t channels) {
-  const auto be32 = [&](size_t at) { return uint32_t(png[at]) << 24 | uint32_t(png[at + 1]) << 16 | png[at + 2] << 8 | png[at + 3]; };
+  const auto be32 = [&](size_t at) {
+    return uint32_t(png[at]) << 24 | uint32_t(png[at + 1]) << 16 | uint32_t(png[at + 2]) << 8 | png[at + 3];
+  };
   std::vector<uint8_t> idat;
   for (size_t at = 8; at + 12 <= png.size(); at += 12 + be32(at))
     if (std::string(png.begin() + long(at) + 4, png.begin() + long(at) + 8) == "IDAT")
@@ -114,7 +116,8 @@ std::vector<int> row_filters(const std::vector<uint8_t>& png, int width, int hei
   const size_t stride = size_t(width) * channels + 1;
   std::vector<uint8_t> rows(stride * size_t(height));
   libdeflate_decompressor* d = libdeflate_alloc_decompressor();
-  const libdeflate_result r = libdeflate_zlib_decompress(d, idat.data(), idat.size(), rows.data(), rows.size(), nullptr);
+  const libdeflate_result r =
+      libdeflate_zlib_decompress(d, idat.data(), idat.size(), rows.data(), rows.size(), nullptr);
   libdeflate_free_decompressor(d);
   EXPECT_EQ(r, LIBDEFLATE_SUCCESS);
   std::vector<int> filters;
@@ -148,8 +151,8 @@ TEST(Png, EachFilterIsChosenWhereItIsBest) {
         const int a = x ? at(x - 1, y) : 0, b = y ? at(x, y - 1) : 0;
         const int filter = y % 2 ? y / 2 : -1;  // odd rows: None, Sub, Up, Average; even rows: noise
         const int first = 1 + int(rng.below(255));  // Sub's row: one value, not zero (None would tie)
-        at(x, y) = uint8_t(filter == 0 ? 0 : filter == 1 ? (x ? a : first) : filter == 2 ? b : filter == 3 ? (a + b) / 2
-                                                                                                   : int(rng.below(256)));
+        const int value = filter == 0 ? 0 : filter == 1 ? (x ? a : first) : filter == 2 ? b : (a + b) / 2;
+        at(x, y) = uint8_t(filter < 0 ? int(rng.below(256)) : value);
       }
     const std::vector<int> filters = encoded_filters(width, height, indices);
     for (int y = 1; y < height; y += 2) EXPECT_EQ(filters[size_t(y)], y / 2) << "width " << width << ", row " << y;
