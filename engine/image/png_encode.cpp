@@ -82,19 +82,28 @@ std::vector<uint8_t> encode_rows(int width, int height, const uint8_t* rows, siz
 
 std::vector<uint8_t> encode_png(const Image& image, PngDeflate how) {
   if (image.width <= 0 || image.height <= 0) throw Error("cannot encode an empty image as PNG");
-  uint32_t all = ~0u;  // the bits set in every pixel: opaque when all of alpha's are
-  for (const uint32_t p : image.pixels) all &= p;
-  const bool opaque = (all >> 24) == 255;
-  const size_t channels = opaque ? 3 : 4;
   // Buffers kept from frame to frame: fresh ones of this size cost a page fault per 4 KB.
   thread_local std::vector<uint8_t> rows;
-  rows.resize(image.pixels.size() * channels + 1);  // pixels as bytes, R G B (A); one byte of room
-  if (channels == 4) {
-    std::memcpy(rows.data(), image.pixels.data(), image.pixels.size() * 4);  // R, G, B, A in memory already
-  } else {  // each pixel's four bytes stored 3 apart, its alpha overwritten by the next one's red
-    uint8_t* o = rows.data();
-    for (const uint32_t p : image.pixels) std::memcpy(o, &p, 4), o += 3;
+  const size_t n = image.pixels.size();
+  rows.resize(n * 4 + 1);  // pixels as bytes, R G B (A); one byte of room
+  // Packed as RGB in the pass that finds whether every pixel is opaque (the bits set in
+  // every pixel: opaque when all of alpha's are); else copied again as RGBA. Four
+  // pixels go to twelve bytes in two stores (R, G, B, A in memory: little-endian).
+  const uint32_t* p = image.pixels.data();
+  uint8_t* o = rows.data();
+  uint32_t all = ~0u;
+  size_t i = 0;
+  for (; i + 4 <= n; i += 4, o += 12) {
+    const uint32_t a = p[i], b = p[i + 1], c = p[i + 2], d = p[i + 3];
+    all &= a & b & c & d;
+    const uint64_t first = uint64_t(a & 0xFFFFFF) | uint64_t(b & 0xFFFFFF) << 24 | uint64_t(c) << 48;
+    const uint32_t second = (c >> 16 & 0xFF) | (d & 0xFFFFFF) << 8;
+    std::memcpy(o, &first, 8), std::memcpy(o + 8, &second, 4);
   }
+  for (; i < n; ++i, o += 3) all &= p[i], std::memcpy(o, &p[i], 4);  // its alpha overwritten by the next red
+  const bool opaque = (all >> 24) == 255;
+  const size_t channels = opaque ? 3 : 4;
+  if (!opaque) std::memcpy(rows.data(), p, n * 4);
   return encode_rows(image.width, image.height, rows.data(), channels, opaque ? 2 : 6, {}, how);  // RGB or RGBA
 }
 
