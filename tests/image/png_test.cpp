@@ -194,11 +194,11 @@ std::vector<uint8_t> unfiltered(const uint8_t* filtered, const std::vector<uint8
   return row;
 }
 
-// The filters' loops sixteen and thirty-two bytes wide (where this processor has AVX2)
-// write the same bytes, which put the rows back; rows too short for either are filtered
-// a byte at a time. Widths around each step, one to four bytes a pixel.
+// The filters a byte at a time, sixteen and thirty-two bytes at a time (where this
+// processor has AVX2) write the same bytes, which put the rows back. Widths around each
+// step, one to four bytes a pixel.
 TEST(Png, FiltersWriteTheSameBytesAtEveryWidth) {
-  std::vector<FilterLanes> widths = {FilterLanes::kSixteen};
+  std::vector<FilterLanes> widths = {FilterLanes::kOne, FilterLanes::kSixteen};
   if (widest_filter_lanes() == FilterLanes::kThirtyTwo) widths.push_back(FilterLanes::kThirtyTwo);
   Rng rng{3};
   for (const size_t channels : {size_t(1), size_t(3), size_t(4)})
@@ -208,15 +208,15 @@ TEST(Png, FiltersWriteTheSameBytesAtEveryWidth) {
         up[x] = uint8_t(rng.below(4) ? x / 7 : rng.below(256));  // flat stretches, steps and noise
         row[x] = uint8_t(rng.below(3) ? up[x] + x / 11 : rng.below(256));
       }
-      std::vector<uint8_t> first(stride + 1);
-      filter_row(row.data(), up.data(), stride, channels, first.data(), FilterLanes::kOne);
-      EXPECT_EQ(unfiltered(first.data(), up, channels), row) << "a byte at a time, stride " << stride;
-      for (size_t k = 0; k < widths.size(); ++k) {
+      std::vector<uint8_t> first;
+      for (const FilterLanes lanes : widths) {
         std::vector<uint8_t> out(stride + 1);
-        filter_row(row.data(), up.data(), stride, channels, out.data(), widths[k]);
-        EXPECT_EQ(unfiltered(out.data(), up, channels), row) << "stride " << stride << ", " << channels << " a pixel";
-        if (k == 0) first = out;
-        else EXPECT_EQ(out, first) << "stride " << stride << ", " << channels << " a pixel";
+        filter_row(row.data(), up.data(), stride, channels, out.data(), lanes);
+        const std::string what = "stride " + std::to_string(stride) + ", " + std::to_string(channels) + " a pixel, " +
+                                 std::to_string(int(lanes));
+        EXPECT_EQ(unfiltered(out.data(), up, channels), row) << what;
+        if (first.empty()) first = out;
+        else EXPECT_EQ(out, first) << what;
       }
     }
 }
