@@ -3,7 +3,7 @@
 // deflated in one zlib stream: as runs and literals (deflate_runs.h), or by
 // libdeflate's search. An opaque image is written as RGB, else RGBA; an 8-bit frame as
 // palette indices. The bytes depend only on the pixels: captures are reproducible on
-// any thread count and any x86-64 processor.
+// any thread count and any processor.
 #include <libdeflate.h>
 
 #include <algorithm>

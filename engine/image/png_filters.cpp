@@ -1,7 +1,7 @@
-// PNG's row filters: a byte at a time for short rows, else sixteen (SSE2) or
-// thirty-two (AVX2, png_filters_avx2.cpp) at a time. Every width costs the same sample
-// (the first sixteen bytes of every 32 after a pixel's first), so it chooses the same
-// filters and writes the same bytes.
+// PNG's row filters: a byte at a time (short rows, processors without SSE2), else
+// sixteen (SSE2) or thirty-two (AVX2, png_filters_avx2.cpp) at a time. Every width costs
+// the same sample (the first sixteen bytes of every 32 after a pixel's first), so it
+// chooses the same filters and writes the same bytes.
 #include "engine/image/png_filters.h"
 
 #include <algorithm>
