@@ -56,8 +56,7 @@ struct Costs {
 
   V add(const Pixels<Ops>& p) {
     const V bias = Ops::set1(0x80);
-    const V f[5] = {p.r, Ops::sub(p.r, p.a), Ops::sub(p.r, p.b), Ops::sub(p.r, p.average()),
-                    Ops::sub(p.r, p.paeth_predictor())};
+    const V f[5] = {p.filtered(0), p.filtered(1), p.filtered(2), p.filtered(3), p.filtered(kPaethFilter)};
     for (int i = 0; i < 5; ++i) sums[i] = Ops::add64(sums[i], Ops::sad(Ops::bit_xor(f[i], bias), bias));
     return f[kPaethFilter];
   }
