@@ -178,7 +178,7 @@ class SpriteColumns {
 // Writes one palette index (or colour) into the view, indexed or not.
 class Painter {
  public:
-  Painter(render::Frame& view, const std::vector<uint32_t>& palette) : view_(view), palette_(palette) {}
+  Painter(image::Frame& view, const std::vector<uint32_t>& palette) : view_(view), palette_(palette) {}
   bool indexed() const { return view_.indexed(); }
   void put(int x, int y, const Shade& shade, uint8_t texel) {
     const size_t at = size_t(y) * size_t(view_.width) + size_t(x);
@@ -216,7 +216,7 @@ class Painter {
     return index_of_;
   }
 
-  render::Frame& view_;
+  image::Frame& view_;
   const std::vector<uint32_t>& palette_;
   std::unordered_map<uint32_t, uint8_t> index_of_;
 };
@@ -270,7 +270,7 @@ std::optional<WeaponArt::Picture> WeaponArt::find_frame(Sprite sprite, int frame
   return std::nullopt;
 }
 
-void draw_weapon(const Player& player, WeaponArt& art, const level::Level& level, render::Frame& view,
+void draw_weapon(const Player& player, WeaponArt& art, const level::Level& level, image::Frame& view,
                  int status_bar_rows) {
   if (view.width <= 0 || view.height <= 0) return;
   const Place place = place_in(view.width, view.height, status_bar_rows);

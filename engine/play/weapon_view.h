@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "engine/image/frame.h"
 #include "engine/level/level.h"
 #include "engine/play/info.h"
-#include "engine/render/camera.h"
 #include "engine/wad/picture.h"
 #include "engine/wad/wad.h"
 
@@ -59,7 +59,7 @@ class WeaponArt {
 // largest whole scale that fits, on the frame's bottom; a frame smaller than 320x200
 // scales by its width / 320. Indexed frames get palette indices (and their colours),
 // others the level's light maps' colours.
-void draw_weapon(const Player& player, WeaponArt& art, const level::Level& level, render::Frame& view,
+void draw_weapon(const Player& player, WeaponArt& art, const level::Level& level, image::Frame& view,
                  int status_bar_rows);
 
 }  // namespace p3d::play

@@ -7,39 +7,14 @@
 #include <vector>
 
 #include "engine/geom/geom.h"
-#include "engine/image/image.h"
+#include "engine/image/frame.h"
 #include "engine/level/level.h"
 
 namespace p3d::render {
 
 using geom::Vec2;
-// A rendered frame: its colours (the image's pixels), or Doom's 8-bit screen. A
-// caller that sets keep_indices lets a level drawn in palette indices stay that way:
-// the renderer then leaves `indices` (row-major) and `palette` and does not touch the
-// pixels, as Doom leaves its screen to the blit (a paletted PNG needs no colours, and
-// a frame's time is then comparable with a Doom port's render-only time).
-struct Frame : image::Image {
-  using image::Image::Image;
-  // A frame whose pixels are made by the first render that writes colours: one kept in
-  // palette indices never needs them (at 3840x2160, 33 MB not to fill).
-  static Frame without_pixels(int width, int height) {
-    Frame f;
-    f.width = width, f.height = height;
-    return f;
-  }
-  bool keep_indices = false;
-  // The width of Doom's screen this frame is a view window of (320: a smaller view of
-  // Doom's 320x200 screen, drawn by vanilla's rules at its own width); 0: itself.
-  int doom_screen_width = 0;
-  std::vector<uint8_t> indices;  // empty unless the last render kept them
-  std::vector<uint32_t> palette;
-  bool indexed() const { return !indices.empty(); }
-  // Writes the pixels from the indices (nothing when not indexed).
-  void resolve_colours();
-  // The frame as a PNG: a paletted one when it kept its indices (a quarter of the bytes
-  // to filter), else its colours.
-  std::vector<uint8_t> png(image::PngDeflate how = image::PngDeflate::kRuns) const;
-};
+// The frame every renderer draws into (image/frame.h).
+using image::Frame;
 
 constexpr double kEyeHeight = 41;  // Doom's view height above the floor
 // Cameras must stay within this many map units of the origin (4x the map range), and

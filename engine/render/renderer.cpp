@@ -4,15 +4,6 @@
 
 namespace p3d::render {
 
-void Frame::resolve_colours() {
-  pixels.resize(indices.size());  // a frame made without_pixels gets them here
-  for (size_t i = 0; i < indices.size(); ++i) pixels[i] = palette[indices[i]];
-}
-
-std::vector<uint8_t> Frame::png(image::PngDeflate how) const {
-  return indexed() ? image::encode_png(width, height, indices, palette, how) : image::encode_png(*this, how);
-}
-
 Camera camera_at(const level::Level& level, Vec2 pos, double angle, double eye_height, double fov) {
   int sector = level.sector_at(pos);
   if (sector == level::kNone) sector = level.default_sector;
