@@ -18,9 +18,13 @@ class ColumnMask {
   }
 
   // Closes every column outside [x0, x1): a strip of the screen walks the tree alone.
+  // A word at a time: each strip of a frame does it, over the whole width.
   void close_outside(int x0, int x1) {
-    for (int x = 0; x < width_; ++x)
-      if (x < x0 || x >= x1) close(x);
+    for (int w = 0; w < int(words_.size()); ++w) {
+      const uint64_t outside = columns_below(w, width_) & ~(columns_below(w, x1) & ~columns_below(w, x0));
+      closed_ += std::popcount(outside & ~words_[w]);
+      words_[w] |= outside;
+    }
   }
 
   bool full() const { return closed_ == width_; }
@@ -54,6 +58,11 @@ class ColumnMask {
   }
 
  private:
+  // The bits of word w for the columns left of x.
+  static uint64_t columns_below(int w, int x) {
+    const int n = std::clamp(x - (w << 6), 0, 64);
+    return n == 64 ? ~uint64_t{0} : (uint64_t{1} << n) - 1;
+  }
   // The bits of word w that lie in [x0, x1].
   static uint64_t range_bits(int w, int x0, int x1) {
     const int lo = std::max(x0 - (w << 6), 0), hi = std::min(x1 - (w << 6), 63);

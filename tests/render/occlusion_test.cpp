@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 #include "engine/render/occlusion.h"
@@ -32,6 +33,29 @@ TEST(ColumnMask, AgreesWithABitPerBoolModel) {
       model[c] = true;
       ASSERT_TRUE(mask.is_closed(c));
       ASSERT_EQ(mask.full(), std::find(model.begin(), model.end(), false) == model.end());
+    }
+  }
+}
+
+// A strip's mask: every column outside [x0, x1) closed, each counted once, whatever
+// was closed before; the strip's own columns untouched.
+TEST(ColumnMask, ClosesOutsideAStrip) {
+  for (int width : {1, 63, 64, 65, 130, 640}) {
+    Rng rng(width + 7);
+    for (int step = 0; step < 300; ++step) {
+      const int x0 = int(rng.below(width + 1)), x1 = x0 + int(rng.below(width + 1 - x0));  // [x0, x1) may be empty
+      ColumnMask mask;
+      mask.reset(width);
+      std::vector<bool> model(width, false);
+      for (int k = int(rng.below(4)); k > 0; --k) {
+        const int c = int(rng.below(width));
+        mask.close(c);
+        model[c] = true;
+      }
+      mask.close_outside(x0, x1);
+      for (int x = 0; x < width; ++x) model[x] = model[x] || x < x0 || x >= x1;
+      for (int x = 0; x < width; ++x) ASSERT_EQ(mask.is_closed(x), model[x]) << width << " [" << x0 << "," << x1 << ") " << x;
+      ASSERT_EQ(mask.closed_count(), int(std::count(model.begin(), model.end(), true))) << width;
     }
   }
 }
