@@ -127,9 +127,10 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
   left_ = left;
   doom_waiting_ = painting_planes_ = false;
   if (doom_) {
-    if (++doom_stamp_ == 0) doom_sides_.clear(), doom_stamp_ = 1;
-    if (doom_sides_.size() < level.doom_segs.size() + level.walls.size() * 2)
-      doom_sides_.resize(level.doom_segs.size() + level.walls.size() * 2);
+    const size_t sides = level.doom_segs.size() + level.walls.size() * 2;
+    if (++doom_stamp_ == 0 || doom_side_slots_.size() < sides) doom_side_slots_.assign(sides, 0), doom_stamp_ = 1;
+    doom_sides_.clear();
+    doom_sides_.reserve(sides);
     const doom::Angle angle = (view.fangle - play::kAngle90) >> play::kAngleToFineShift;
     base_x_scale_ = play::fixed_div(play::kFineSine[angle + play::kFineAngles / 4], doom_->centerxfrac);
     base_y_scale_ = -play::fixed_div(play::kFineSine[angle], doom_->centerxfrac);

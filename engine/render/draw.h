@@ -152,9 +152,8 @@ class Canvas {
     int light;      // 0..255
   };
   // Doom's rules: one side of a wall as this frame's view sets it up (R_StoreWallRange),
-  // made on first use in a frame (stamp).
+  // made on first use in a frame (doom_side).
   struct DoomSide {
-    uint32_t stamp = 0;
     doom::Seg seg;
     doom::Fixed v1x = 0, v1y = 0, v2x = 0, v2y = 0;  // the seg's first vertex, the side's end (R_PointOnSegSide)
     doom::Fixed low_scale = 0, high_scale = 0;       // its scales at the ends of its columns (drawsegs)
@@ -203,8 +202,11 @@ class Canvas {
         index = i;
       }
     }
-    DoomSide& d = doom_sides_[index];
-    if (d.stamp != doom_stamp_) set_up_doom_side(d, wall, side, index < l.doom_segs.size() ? &l.doom_segs[index] : nullptr);
+    uint64_t& slot = doom_side_slots_[index];
+    if (slot >> 32 == doom_stamp_) return doom_sides_[uint32_t(slot)];
+    slot = uint64_t(doom_stamp_) << 32 | doom_sides_.size();
+    DoomSide& d = doom_sides_.emplace_back();  // reserved: no reference to another moves
+    set_up_doom_side(d, wall, side, index < l.doom_segs.size() ? &l.doom_segs[index] : nullptr);
     return d;
   }
   void set_up_doom_side(DoomSide& d, uint32_t wall, int side, const level::Level::DoomSeg* seg);
@@ -343,7 +345,11 @@ class Canvas {
   doom::Fixed base_x_scale_ = 0, base_y_scale_ = 0;
   uint32_t doom_stamp_ = 0;
   uint32_t drawn_doom_side_ = kNoDoomSide;  // the DoomSide draw_hit_doom last drew, for its Step
+  // This frame's sides in the order first met, packed: a strip touches a few hundred of
+  // a level's thousands, and one slot per seg (this frame's stamp above its place in
+  // doom_sides_) finds them. Reserved for every seg, so that none ever moves.
   std::vector<DoomSide> doom_sides_;
+  std::vector<uint64_t> doom_side_slots_;
   struct DoomSkyKey {  // what doom_sky_rows_ were tabulated for
     const doom::Tables* tables = nullptr;
     uint64_t generation = 0;

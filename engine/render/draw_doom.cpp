@@ -60,7 +60,6 @@ inline size_t doom_row(uint32_t v, int height) {
 // whole side from its start (seg null).
 void Canvas::set_up_doom_side(DoomSide& d, uint32_t wall, int side, const level::Level::DoomSeg* seg) {
   const level::Level& l = *level_;
-  d.stamp = doom_stamp_;
   d.silhouette_ready = d.wall_ready = false;
   const level::Wall& w = l.walls[wall];
   const geom::IPoint p1 = side == 0 ? w.p1 : w.p2, p2 = side == 0 ? w.p2 : w.p1;
