@@ -173,6 +173,9 @@ class Canvas {
     doom::Fixed worldtop = 0, worldbottom = 0, worldhigh = 0, worldlow = 0;
     bool mark_ceiling = true, mark_floor = true, top_part = false, bottom_part = false;
     bool ceiling_plane = false, floor_plane = false;  // a plane to draw, else the void
+    // Its near sector's floor and ceiling (by bool ceiling) as filed: a plane of planes_,
+    // kSkyPlane, or kPlaneNotFound before the first run (doom_plane_span).
+    int planes[2] = {kPlaneNotFound, kPlaneNotFound};
     doom::Fixed x_offset = 0;                          // the side's, scrolled
     int start_map = 0;                                 // its light before distance
     int textures[3] = {};                              // per level::Part, as shown
@@ -243,6 +246,9 @@ class Canvas {
   void close(int x, const WallHit& hit);
   void near_plane(int x, int y0, int y1, int sector, bool ceiling);
   void plane_span(int x, int y0, int y1, int sector, bool ceiling);
+  // plane_span for a Doom side's near sector: its plane found once a frame, not per column.
+  static constexpr int kPlaneNotFound = -1, kSkyPlane = -2;
+  void doom_plane_span(DoomSide& ds, int x, int y0, int y1, bool ceiling);
   // Row y of a plane: texture coordinates 16.16 at column 0 and per column, light map.
   struct PlaneRow {
     uint64_t u0, du, v0, dv;  // texture v runs south: north is up

@@ -135,6 +135,7 @@ void Canvas::set_up_doom_wall(DoomSide& d, const WallHit& hit, int near) {
   }
   d.ceiling_plane = view_->eye < s.ceiling || s.ceiling_texture == kSky;
   d.floor_plane = view_->eye > s.floor;
+  d.planes[0] = d.planes[1] = kPlaneNotFound;
   d.x_offset = fixed_of(side.x_offset + state_->scroll(hit.wall, hit.side));
   d.start_map = doom::start_map(side.light != kNone ? side.light : s.light, w.contrast, 0);
   auto height_of = [&](int part) {
@@ -197,7 +198,7 @@ bool Canvas::draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& b
   if (ds.mark_ceiling) {
     const int y1 = ceiling_end = std::min(yl, floor_clip);
     if (ds.ceiling_plane)
-      plane_span(x, ceiling_clip + 1, y1, near, true);
+      doom_plane_span(ds, x, ceiling_clip + 1, y1, true);
     else
       fill_span(x, ceiling_clip + 1, y1, Fill::kVoid);  // Doom marks nothing: we fill it
   }
@@ -208,7 +209,7 @@ bool Canvas::draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& b
   const int floor_start = ds.mark_floor ? std::max(yh + 1, ceiling_end) : floor_clip;
   if (ds.mark_floor) {
     if (ds.floor_plane)
-      plane_span(x, floor_start, floor_clip, near, false);
+      doom_plane_span(ds, x, floor_start, floor_clip, false);
     else
       fill_span(x, floor_start, floor_clip, Fill::kVoid);
   }

@@ -69,8 +69,8 @@ int PlaneSpans::head(const PlaneKey& key) {
   return cached_ = table_[slot] = make_plane(key, true);
 }
 
-void PlaneSpans::add(const PlaneKey& key, int x, int y0, int y1) {
-  int i = head(key);
+void PlaneSpans::add_to(int plane, int x, int y0, int y1) {
+  int i = plane;
   for (;;) {
     Plane& p = planes_[size_t(i)];
     if (x < p.x_min || x > p.x_max) {  // a column new to the plane
@@ -84,6 +84,7 @@ void PlaneSpans::add(const PlaneKey& key, int x, int y0, int y1) {
       return;
     }
     if (p.next < 0) {
+      const PlaneKey key = p.key;
       const int added = make_plane(key, false);  // may move planes_: p is not used after this
       planes_[size_t(i)].next = added;
     }

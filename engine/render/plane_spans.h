@@ -32,7 +32,11 @@ class PlaneSpans {
   void begin(int x0, int x1, int height);
 
   // Files rows [y0, y1) of column x, y0 < y1, as showing `key`.
-  void add(const PlaneKey& key, int x, int y0, int y1);
+  void add(const PlaneKey& key, int x, int y0, int y1) { add_to(head(key), x, y0, y1); }
+  // The same in two steps, for a caller that files many runs of one key: the key's
+  // plane (valid until begin), then runs into it.
+  int plane_of(const PlaneKey& key) { return head(key); }
+  void add_to(int plane, int x, int y0, int y1);
 
   // Calls span(key, y, xa, xb) for each maximal run [xa, xb) of row y within one plane:
   // every filed pixel exactly once.
