@@ -488,7 +488,7 @@ void FrontEnd::level_tic(const play::DemoTic& player) {
     change_screen([&] { s.tic(player); });  // the level from its start melts in (Doom's G_DoReborn)
   else
     s.tic(player);
-  if (s.exited() == play::ExitKind::kNone || !user_game_) return;
+  if (s.exited() == play::ExitKind::kNone || !(user_game_ || options_.plays_demo)) return;
   if (mode_ != front::GameMode::kCommercial && start_finale()) return;  // Doom's eighth maps: no tally
   bool tally = false;
   change_screen([&] { tally = s.start_intermission(); });

@@ -32,6 +32,7 @@ struct FrontEndOptions {
   GameFlags flags;                 // -fast, -respawn, -nomonsters for the games it starts
   std::filesystem::path save_dir;  // the six slots' files (doomsav0.dsg..doomsav5.dsg); empty: no saving
   bool watching = false;           // the session given is a demo or a route to watch, not the player's game
+  bool plays_demo = false;         // watching a demo: it goes on across levels as Doom's do (a route holds one)
   double mouse_turn = 0;           // turn units per pixel of mouse; 0: from the menu's sensitivity
 };
 
@@ -70,6 +71,10 @@ class FrontEnd {
   bool playing() const;
   // A level is on screen (the player's, or a demo being watched).
   bool in_level() const { return state_ == State::kLevel && session_; }
+  // A game goes on: a level, its tally or Doom's text after it (each tic takes a command).
+  bool in_game() const { return (state_ == State::kLevel || state_ == State::kFinale) && session_; }
+  // The screen melts: the game waits, and takes no command (a demo's tics wait too).
+  bool melting() const { return melt_ && !melt_->done(); }
   // The game waits (menu open in a game, or paused): the window stops its tic clock.
   bool waiting() const;
   bool paused() const { return paused_ || (session_ && session_->paused()); }

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "engine/play/demo.h"
 #include "game/session.h"
@@ -35,16 +36,20 @@ struct HeadlessOptions {
 
 struct HeadlessResult {
   int frames = 0;     // rows written (PNG files too, unless frames is off)
-  size_t tics = 0;    // tics replayed: all of them, or up to the exit
-  play::ExitKind exit = play::ExitKind::kNone;
+  size_t tics = 0;    // tics replayed: all of them, or up to where the game ended
+  play::ExitKind exit = play::ExitKind::kNone;  // the last map's, when the game ended there
+  std::vector<std::string> maps;                // the maps played, in order
   // Empty, or the demo's tic and what the game did there first that Chocolate Doom
   // leaves undefined (play::World::beyond_chocolate).
   std::string beyond_chocolate;
 };
 
-// Replays from the demo's start (its start, keys and cheats as recorded); stops at the
-// level's exit, whose tic gets a last row. Throws Error if the demo was recorded on
-// another level.
+// Replays from the demo's start (its start, keys and cheats as recorded). A Doom demo
+// that exits goes on as Doom's does, through the tally (and Doom II's text between its
+// clusters, drawn in the frames) into the next map; where the game ends (an episode's
+// end, the last map, the exit of a level that is no Doom map) the replay stops, and that
+// tic gets a last row. The things are dumped after each tic in a level, numbered on
+// across levels. Throws Error if the demo was recorded on another level.
 HeadlessResult replay_headless(Session& session, const play::Demo& demo, const HeadlessOptions& options);
 
 // "normal", "secret" or "none".

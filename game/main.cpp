@@ -425,9 +425,11 @@ int main(int argc, char** argv) {
         h.raw = raw_stats;
         h.thing_dump = dump_things;
         const game::HeadlessResult r = game::replay_headless(*session, *demo, h);
-        std::printf("replayed %zu of %zu tics (exit: %s), wrote %d %s to %s\n", r.tics, demo->tics.size(),
-                    game::exit_name(r.exit), r.frames, stats_only ? "rows of stats.csv" : "frames and stats.csv",
-                    out_dir.c_str());
+        std::string maps;  // a demo that went on across levels names them
+        for (const std::string& m : r.maps) maps += (maps.empty() ? "maps " : ", ") + m;
+        std::printf("replayed %zu of %zu tics (%sexit: %s), wrote %d %s to %s\n", r.tics, demo->tics.size(),
+                    r.maps.size() > 1 ? (maps + "; ").c_str() : "", game::exit_name(r.exit), r.frames,
+                    stats_only ? "rows of stats.csv" : "frames and stats.csv", out_dir.c_str());
         if (!r.beyond_chocolate.empty())
           std::fprintf(stderr, "warning: beyond Chocolate Doom from %s: vanilla overran memory that Chocolate does not emulate, so its replay may part from here\n",
                        r.beyond_chocolate.c_str());
@@ -451,6 +453,7 @@ int main(int argc, char** argv) {
     if (timedemo) o.vsync = false;
     if (!autopilot.empty()) o.autopilot = route(autopilot);
     front_options.watching = demo || !autopilot.empty();
+    front_options.plays_demo = demo.has_value();
     game::FrontEnd front(std::move(session), settings, front_options);
     return game::run_window(front, settings, o);
   });

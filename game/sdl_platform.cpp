@@ -167,7 +167,7 @@ class Window {
     }
     const Session* s = front_.session();
     if (o_.play && s)
-      std::printf("%llu tics, %llu frames in %.2f s: %.1f fps\n", (unsigned long long)s->tics(),
+      std::printf("%llu tics, %llu frames in %.2f s: %.1f fps\n", (unsigned long long)played_,  // the demo's, every level's
                   (unsigned long long)frames, now_seconds() - start, frames / std::max(1e-9, now_seconds() - start));
     if (!o_.record.empty() && s) {
       write_file_atomically(o_.record, s->encode_recording(o_.record));
@@ -393,12 +393,15 @@ class Window {
   }
 
   void run_tic() {
-    if (o_.play && front_.in_level()) {
-      if (played_ >= o_.play->tics.size()) {
+    if (o_.play) {  // through the tallies into the next maps, as Doom plays a demo on
+      if (played_ >= o_.play->tics.size() || !front_.in_game()) {
         running_ = false;
         return;
       }
-      front_.tic(o_.play->tics[played_++]);
+      if (front_.melting())
+        front_.tic();  // the demo's next tic waits for the screen
+      else
+        front_.tic(o_.play->tics[played_++]);
     } else if (autopilot_ && front_.in_level()) {
       const Session& s = *front_.session();
       front_.tic({autopilot_->next(s.pose().pos, s.pose().angle), 0});
@@ -407,7 +410,7 @@ class Window {
       front_.tic();
     }
     const Session* s = front_.session();
-    if (s && (o_.play || autopilot_) && s->exited() != play::ExitKind::kNone) running_ = false;  // a demo or a route holds one level
+    if (s && autopilot_ && s->exited() != play::ExitKind::kNone) running_ = false;  // a route holds one level
     if (o_.quit_after_tics && ++tics_run_ >= o_.quit_after_tics) running_ = false;
   }
 

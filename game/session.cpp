@@ -101,6 +101,7 @@ void Session::start_world(const std::array<play::Player, play::kMaxPlayers>* car
   tics_ = 0;
   pose_ = previous_ = pose_now();
   face_.start_level(play::face_input(player()));
+  message_tics_ = 0;  // Doom's HU_Start as its player spawns: the last level's message is gone
 }
 
 Session::Pose Session::pose_now() const {
@@ -232,7 +233,8 @@ void Session::after_tic() {
     // Our own demo holds one level: it ends at its exit. A Doom demo goes on through
     // the tally into the next level, as Doom's.
     if (!doom_demo_) recording_on_ = false;
-    say(world_->exit() == play::ExitKind::kSecret ? "secret exit" : "exit");
+    // Doom's tally says it; a level that is no Doom map has none, so the message line does.
+    if (!source_.is_wad()) say(world_->exit() == play::ExitKind::kSecret ? "secret exit" : "exit");
   }
 }
 
@@ -268,7 +270,7 @@ bool Session::enter_next_map() {
   random_ = world_->random();
   load(&carried);
   if (!select_renderer(renderer_name_, false)) select_renderer("bsp", false);
-  say(next.empty() ? why + ": starting it again" : "entered " + next);
+  if (next.empty()) say(why + ": starting it again");  // Doom says nothing of a new map
   return !next.empty();
 }
 

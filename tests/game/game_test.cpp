@@ -10,10 +10,12 @@
 #include "engine/bsp/load.h"
 #include "engine/map/generate.h"
 #include "engine/play/doom_demo.h"
+#include "engine/play/thing_dump.h"
 #include "engine/render/camera_file.h"
 #include "engine/wad/art.h"
 #include "engine/util/file.h"
 #include "game/autopilot.h"
+#include "game/front_end.h"
 #include "game/headless.h"
 #include "game/hud.h"
 #include "game/input.h"
@@ -662,8 +664,9 @@ TEST(Headless, ReplayIsByteForByteReproducible) {
   std::filesystem::remove_all(dir);
 }
 
-// MAP01: a room whose east wall is an exit switch; MAP02: a plain room.
-void two_map_wad(const std::filesystem::path& dir) {
+// MAP01: a room whose east wall is an exit switch; MAP02: a plain room. Named `first`
+// and `second` (with a MAP01 of the first's kind, so that the WAD is Doom II's).
+void two_map_wad(const std::filesystem::path& dir, const char* first = "MAP01", const char* second = "MAP02") {
   test::TestMap one, two;
   one.add_room({{0, 0}, {0, 256}, {256, 256}, {256, 0}}, {});
   one.line_at({256, 256}, {256, 0}).special = 11;
@@ -674,8 +677,9 @@ void two_map_wad(const std::filesystem::path& dir) {
   two.things.push_back({1100, 100, 90, 1});
   test::WadWriter w(true);
   test::add_test_art(w);
-  one.add_to(w, "MAP01");
-  two.add_to(w, "MAP02");
+  if (std::string(first) != "MAP01") one.add_to(w, "MAP01");
+  one.add_to(w, first);
+  two.add_to(w, second);
   write_file_atomically(dir / "two.wad", w.bytes());
 
 }
@@ -695,7 +699,9 @@ TEST(Session, AnExitLoadsTheNextMapInDoomsOrder) {
   const Session::Pose before = s.pose();
   s.tic(play::TicCmd{50, 0, 0, 0});
   EXPECT_EQ(s.pose().pos, before.pos) << "nothing moves once the level is over";
+  EXPECT_FALSE(s.message().empty()) << "the last pickup's message, still showing";
   EXPECT_TRUE(s.enter_next_map());
+  EXPECT_EQ(s.message(), "") << "Doom's HU_Start: a map starts with no message (nor says its name)";
   EXPECT_EQ(s.name(), "two.wad:MAP02");
   EXPECT_EQ(s.pose().pos, geom::Vec2(1100, 100));
   EXPECT_EQ(s.player().cards, 63) << "--all-keys holds on every map";
@@ -703,6 +709,98 @@ TEST(Session, AnExitLoadsTheNextMapInDoomsOrder) {
   EXPECT_EQ(s.player().inv.ammo[1], 8);
   EXPECT_EQ(s.player().inv.powers[size_t(play::Power::kIronFeet)], 0) << "powers stay behind";
   EXPECT_EQ(s.exited(), play::ExitKind::kNone);
+  std::filesystem::remove_all(dir);
+}
+
+// The number of "T" blocks in a thing dump: the tics played in a level.
+size_t dumped_tics(const std::filesystem::path& dump) {
+  std::istringstream in(read_file_text(dump));
+  size_t blocks = 0;
+  for (std::string line; std::getline(in, line);) blocks += line.rfind("T ", 0) == 0;
+  return blocks;
+}
+
+// A Doom demo that exits goes on as Chocolate Doom replays it: through the tally, which
+// the demo's presses hurry on, into the next map with the health carried over. The
+// headless replay and the front end watching the demo (its screens melting between,
+// the demo waiting for them) play the same game to the same end.
+TEST(Headless, ADoomDemoGoesOnThroughTheTallyIntoTheNextMap) {
+  const auto dir = test::temp_dir("across_levels");
+  const auto iwad = test::freedoom_path("freedoom2.wad");
+  // The walk to MAP01's exit (tests/golden/doom_demos: Chocolate plays it in sync), then
+  // the tally's presses, a fresh one every fourth tic, then MAP02 walked into.
+  const play::DoomDemo walk = play::decode_doom_demo(
+      read_file_bytes(test::source_dir() / "tests/golden/doom_demos/recorded_freedoom2_map01.lmp"), "walk");
+  const bsp::LevelSource map01{{}, {iwad}, "MAP01"};
+  auto session = [&] { return std::make_unique<Session>(map01, walk.skill, flags_of(walk)); };
+  std::unique_ptr<Session> headless = session();
+  play::Demo demo = play::demo_from_doom(walk, headless->level());
+  const size_t walked = demo.tics.size();
+  for (int t = 0; t < 10; ++t) demo.tics.push_back({});
+  for (int t = 0; t < 200; ++t) demo.tics.push_back({play::TicCmd{0, 0, 0, uint8_t(t % 4 == 0 ? play::kBtUse : 0)}, 0});
+  for (int t = 0; t < 140; ++t) demo.tics.push_back({play::TicCmd{25, 0, int16_t(t < 70 ? 512 : 0), 0}, 0});
+
+  HeadlessOptions o{35, dir / "frames", 96, 60};
+  o.frames = false;
+  o.thing_dump = dir / "things.txt";
+  const HeadlessResult r = replay_headless(*headless, demo, o);
+  EXPECT_EQ(r.tics, demo.tics.size()) << "the demo is played to its end";
+  EXPECT_EQ(r.maps, (std::vector<std::string>{"MAP01", "MAP02"}));
+  EXPECT_EQ(r.exit, play::ExitKind::kNone);
+  EXPECT_EQ(headless->map_name(), "MAP02");
+  const size_t tally = demo.tics.size() - dumped_tics(o.thing_dump);
+  EXPECT_GT(tally, 10u + 4) << "the tally waits for a fresh press, then ten tics";
+  EXPECT_LT(tally, 60u) << "two presses end Doom II's tally";
+  EXPECT_EQ(dumped_tics(o.thing_dump), walked + demo.tics.size() - walked - tally);
+  EXPECT_GT(headless->world().level_time(), 100) << "MAP02 is played";
+
+  Settings settings;
+  FrontEndOptions watch;
+  watch.watching = watch.plays_demo = true;
+  FrontEnd front(session(), settings, watch);
+  render::Frame screen(64, 40);  // drawn after every tic, as the window does: a change of screen melts
+  size_t melting = 0;
+  for (const play::DemoTic& t : demo.tics) {
+    for (; front.melting(); ++melting) front.tic(), front.draw(screen, 1.0, {});
+    ASSERT_TRUE(front.in_game());
+    front.tic(t);
+    front.draw(screen, 1.0, {});
+  }
+  EXPECT_GT(melting, 0u) << "the tally and MAP02 melted in";
+  EXPECT_EQ(front.session()->map_name(), "MAP02");
+  EXPECT_EQ(front.session()->world().level_time(), headless->world().level_time());
+  EXPECT_EQ(play::dump_things(front.session()->world(), 0), play::dump_things(headless->world(), 0));
+  EXPECT_EQ(front.session()->player().inv.health, headless->player().inv.health);
+  std::filesystem::remove_all(dir);
+}
+
+// Doom II's text between clusters (after MAP06) holds the demo for 50 tics, then gives
+// way at a press to MAP07; a press before then does nothing.
+TEST(Headless, TheTextBetweenDoomIIsClustersGivesWayAtAPressAfter50Tics) {
+  const auto dir = test::temp_dir("finale_demo");
+  two_map_wad(dir, "MAP06", "MAP07");
+  Session s(bsp::LevelSource{{}, {dir / "two.wad"}, "MAP06"});
+  play::Demo demo;
+  demo.level_fingerprint = play::fingerprint(s.level());
+  demo.tics.push_back({play::TicCmd{25, 0, 0, 0}, 0});
+  for (int t = 0; t < 40; ++t) demo.tics.push_back({});
+  demo.tics.push_back({play::TicCmd{0, 0, 0, play::kBtUse}, 0});  // tic 41: the exit
+  for (int t = 0; t < 60; ++t) demo.tics.push_back({play::TicCmd{0, 0, 0, play::kBtUse}, 0});
+  for (int t = 0; t < 20; ++t) demo.tics.push_back({play::TicCmd{25, 0, 0, 0}, 0});
+  HeadlessOptions o{10, dir / "frames", 64, 40};
+  o.thing_dump = dir / "things.txt";
+  const HeadlessResult r = replay_headless(s, demo, o);
+  EXPECT_EQ(r.maps, (std::vector<std::string>{"MAP06", "MAP07"}));
+  EXPECT_EQ(r.tics, demo.tics.size());
+  // Tics 42 to 92 count the text's 51 tics; 93 is the press that ends it; 94 on: MAP07.
+  EXPECT_EQ(dumped_tics(o.thing_dump), 42u + (demo.tics.size() - 94));
+  EXPECT_GT(s.pose().pos.y, 100) << "MAP07's start, walked north from";
+  const image::Image level = image::load_png(dir / "frames/frame00004.png");
+  const image::Image text = image::load_png(dir / "frames/frame00006.png");  // tic 60: the text's 18th tic
+  EXPECT_GT(image::compare(level, text).fraction(level), 0.5) << "the text's screen, not the level's view";
+  EXPECT_EQ(image::compare(text, image::load_png(dir / "frames/frame00009.png")).differing_pixels, 0u)
+      << "MAP06's text over the flat (the test WAD has no font to type it in)";
+  EXPECT_GT(image::compare(text, image::load_png(dir / "frames/frame00010.png")).fraction(text), 0.5) << "MAP07";
   std::filesystem::remove_all(dir);
 }
 

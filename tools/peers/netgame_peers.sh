@@ -15,7 +15,7 @@
 #
 # With --timer the level ends after that many minutes and the game goes on through the
 # tally (every player's press hurries it) into the next map: the demos then hold both
-# levels, and the replays, which end at the first exit, are compared up to there.
+# levels, and the replays follow them there as the live games did.
 # With --save-at our first client's command at that tic asks for a save (Doom's
 # BT_SPECIAL | BTS_SAVEGAME, slot 0): every node saves. Loaded after that tic into our
 # replay of the demo, Chocolate Doom's save and the Doom part of each of ours must give
@@ -120,7 +120,7 @@ fi
 python3 - "$work" "$players" "$tics" "$drop" "$delay" "${mode:-coop}" "$timer" "$save_at" <<'PY'
 import glob, os, sys
 work, players, tics, drop, delay, mode = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4], sys.argv[5], sys.argv[6]
-levels = bool(sys.argv[7])  # --timer: the replays end at the first exit, the game goes on
+levels = bool(sys.argv[7])  # --timer: the game and the replays go on through the tally into the next map
 save_at = sys.argv[8]
 def blocks(path):
     out, cur = [], None
@@ -132,7 +132,6 @@ def blocks(path):
     return out
 choc = open(os.path.join(work, "choc.lmp"), "rb").read()
 replay = blocks(os.path.join(work, "replay.things"))
-need = len(replay) if levels else tics
 results, bad = [], False
 for k in range(1, players):
     mine = open(os.path.join(work, f"ours{k}.lmp"), "rb").read()
@@ -140,7 +139,8 @@ for k in range(1, players):
     live = blocks(os.path.join(work, f"live{k}.things"))
     n = min(len(live), len(replay))
     parted = next((t for t in range(n) if live[t] != replay[t]), None)
-    bad |= not same_demo or parted is not None or n < need or (levels and len(live) <= len(replay))
+    need = len(live) if levels else tics  # the level tics of a game that crossed levels, not its tally's
+    bad |= not same_demo or parted is not None or n < need
     results.append(f"client {k}: demo {'= Chocolate' if same_demo else 'DIFFERS'}, live = replay "
                    f"{n if parted is None else parted} of {len(live)} tics")
 chocolate = os.path.join(work, "chocolate.things")
@@ -148,14 +148,14 @@ if os.path.exists(chocolate):
     theirs = blocks(chocolate)
     n = min(len(theirs), len(replay))
     parted = next((t for t in range(n) if theirs[t] != replay[t]), None)
-    bad |= parted is not None or n < need
+    bad |= parted is not None or n < (len(replay) if levels else tics)
     results.append(f"Chocolate's replay = ours {n if parted is None else parted} of {len(replay)} tics")
     if levels:  # Chocolate's replay goes on through the levels, as our live games did
         for k in range(1, players):
             live = blocks(os.path.join(work, f"live{k}.things"))
             n = min(len(live), len(theirs))
             parted = next((t for t in range(n) if live[t] != theirs[t]), None)
-            bad |= parted is not None or n <= len(replay)
+            bad |= parted is not None or n < len(live)
             results.append(f"client {k}'s live = Chocolate's replay {n if parted is None else parted} of {len(live)} level tics")
 if save_at:
     def loaded(name):
