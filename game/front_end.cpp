@@ -512,9 +512,7 @@ void FrontEnd::next_map() {
 // F_StartFinale where Doom has one after the map just left; false where it has none.
 bool FrontEnd::start_finale() {
   int episode = 0, map = 0;
-  const std::string name = session_->map_name();
-  if (!menu_ || (std::sscanf(name.c_str(), "MAP%d", &map) != 1 && std::sscanf(name.c_str(), "E%dM%d", &episode, &map) != 2))
-    return false;
+  if (!menu_ || !session_->doom_map_numbers(episode, map)) return false;
   if (!front::has_finale(mode_, episode, map, session_->exited() == play::ExitKind::kSecret)) return false;
   change_screen([&] {
     finale_.emplace(mode_, episode, map, [this](const std::string& m) { return menu_->doom_text(m); });
@@ -528,10 +526,7 @@ bool FrontEnd::start_finale() {
 // end); Doom's turns into its episode's last picture.
 void FrontEnd::finale_tic(const play::DemoTic& player) {
   session_->tic(player);  // the level is over: this takes every player's command
-  bool pressed = false;   // by any player in the game
-  for (int i = 0; i < play::kMaxPlayers; ++i)
-    pressed |= session_->world().in_game(i) && session_->last_commands()[size_t(i)].buttons;
-  const front::Finale::Next next = finale_->tic(pressed);
+  const front::Finale::Next next = finale_->tic(session_->any_button());
   for (play::Sound s : finale_->take_sounds()) menu_sounds_.push_back({s, 0, std::nullopt});
   if (finale_->screen_changed()) change_screen([] {});
   play_music(finale_->music());

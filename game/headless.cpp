@@ -67,7 +67,7 @@ class BetweenLevels {
     if (s.in_intermission()) return !s.intermission_over() || next_map(s);
     if (s.exited() == play::ExitKind::kNone) return true;
     if (!s.source().is_wad()) return false;
-    if (doom(s).mode != front::GameMode::kCommercial && finale_follows(s)) return false;  // an episode's end: no tally
+    if (doom(s).mode != front::GameMode::kCommercial && start_finale(s)) return false;  // an episode's end: no tally
     return s.start_intermission() || next_map(s);
   }
   // Whether this tic's world is a level's (not the tally's or Doom II's text).
@@ -98,10 +98,10 @@ class BetweenLevels {
     if (!doom_) doom_ = std::make_unique<DoomArt>(s.source());
     return *doom_;
   }
-  bool finale_follows(Session& s) {
+  // F_StartFinale where Doom has one after the map just left; false where it has none.
+  bool start_finale(Session& s) {
     int episode = 0, map = 0;
-    const std::string name = s.map_name();
-    if (std::sscanf(name.c_str(), "MAP%d", &map) != 1 && std::sscanf(name.c_str(), "E%dM%d", &episode, &map) != 2) return false;
+    if (!s.doom_map_numbers(episode, map)) return false;
     if (!front::has_finale(doom(s).mode, episode, map, s.exited() == play::ExitKind::kSecret)) return false;
     const DoomArt& d = doom(s);
     finale_.emplace(d.mode, episode, map, [&d](const std::string& mnemonic) {
@@ -113,7 +113,7 @@ class BetweenLevels {
   }
   // G_WorldDone: Doom II's text when a cluster ends, else the next map.
   bool next_map(Session& s) {
-    if (doom(s).mode == front::GameMode::kCommercial && finale_follows(s)) return true;
+    if (doom(s).mode == front::GameMode::kCommercial && start_finale(s)) return true;
     return enter(s);
   }
   bool enter(Session& s) {
@@ -123,9 +123,7 @@ class BetweenLevels {
   }
   // F_Ticker: Doom II's text gives way at any player's button after 50 tics.
   bool finale_tic(Session& s) {
-    bool pressed = false;
-    for (int i = 0; i < play::kMaxPlayers; ++i) pressed |= s.world().in_game(i) && s.last_commands()[size_t(i)].buttons;
-    const front::Finale::Next next = finale_->tic(pressed);
+    const front::Finale::Next next = finale_->tic(s.any_button());
     if (next == front::Finale::Next::kStay) return true;
     finale_.reset();
     return next == front::Finale::Next::kNextMap && enter(s);

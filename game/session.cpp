@@ -453,6 +453,12 @@ void Session::advance_message() {
 
 // The episode (0 for Doom II's MAPxx) and map number of the WAD map played; false
 // for levels that are not a Doom map.
+bool Session::any_button() const {
+  for (int i = 0; i < play::kMaxPlayers; ++i)
+    if (world_->in_game(i) && last_commands_[size_t(i)].buttons) return true;
+  return false;
+}
+
 bool Session::doom_map_numbers(int& episode, int& number) const {
   if (!source_.is_wad()) return false;
   const std::string map = bsp::resolve_map_name(bsp::read_wads(source_.wads), source_.map);

@@ -144,6 +144,11 @@ class Session {
   // (the level, the tally, a finale waiting), the console player's given and the others'
   // queued, as Doom's G_Ticker reads every player's every tic.
   const std::array<play::TicCmd, play::kMaxPlayers>& last_commands() const { return last_commands_; }
+  // Whether any player in the game pressed a button this tic (what Doom's F_Ticker asks).
+  bool any_button() const;
+  // The episode (0 for Doom II's MAPxx) and number of the WAD map played; false for a
+  // level that is no Doom map.
+  bool doom_map_numbers(int& episode, int& number) const;
   // A netgame's player left (Doom's PlayerQuitGame, before the tic): a recording ends there.
   void player_left(int player);
   // The camera between the previous tic (alpha 0) and this one (alpha 1).
@@ -248,7 +253,6 @@ class Session {
   std::array<play::TicCmd, play::kMaxPlayers> take_commands(const play::TicCmd& console);
   void keep_sounds();  // the tic's, placed
   void choose_music(const std::string& map_name);  // "" for a level that is no Doom map
-  bool doom_map_numbers(int& episode, int& number) const;
   bool doom_messages(const render::Frame& frame) const;  // drawn in Doom's font as part of its screen
   Pose pose_now() const;
 
