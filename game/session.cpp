@@ -222,6 +222,10 @@ void Session::tally_tic(const std::array<play::TicCmd, play::kMaxPlayers>& cmds)
 
 // What Doom's tickers do after the play: the messages, the face, sounds, the view.
 void Session::after_tic() {
+  if (world_->console_player_spawned()) {  // Doom's ST_Start and HU_Start, before their tickers
+    face_.start_level(play::face_input(player()));
+    message_tics_ = 0;
+  }
   advance_message();
   hear_chat();
   face_.tic(other_random_, play::face_input(player()));

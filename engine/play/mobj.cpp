@@ -257,6 +257,7 @@ void World::spawn_player(const MapThing& start) {
   p.view_height = kViewHeight;
   setup_psprites(p);
   if (options_.deathmatch != Deathmatch::kNone) p.cards = 0x3f;  // every key in deathmatch
+  if (is_console(p)) console_spawned_ = true;
 }
 
 void World::spawn_map_thing(const MapThing& mt) {

@@ -912,6 +912,7 @@ void clear_thinkers(World& w) {
   w.brain_target_on_ = 0;
   w.sounds_.clear();
   w.messages_.clear();
+  w.console_spawned_ = false;
 }
 
 void apply_player(Player& p, const DoomPlayer& d) {

@@ -129,6 +129,7 @@ void World::tick(const TicCmd& cmd) {
 void World::tick_players(const std::array<TicCmd, kMaxPlayers>& cmds) {
   sounds_.clear();
   messages_.clear();
+  console_spawned_ = false;
   if (options_.netgame)  // G_Ticker: the dead who pressed use come back first
     for (int n = 0; n < kMaxPlayers; ++n)
       if (in_game(n) && players_[size_t(n)].state == PlayerState::kReborn && players_[size_t(n)].mo)

@@ -334,6 +334,10 @@ class World {
   // The sounds started and the messages given during the last tic, in order.
   const std::vector<SoundEvent>& sounds() const { return sounds_; }
   const std::vector<std::string>& messages() const { return messages_; }
+  // Whether the console player came back into the level during the last tic (a
+  // netgame's reborn): Doom's P_SpawnPlayer then starts its status bar and message
+  // line afresh (ST_Start, HU_Start).
+  bool console_player_spawned() const { return console_spawned_; }
   // Empty, or what this level did first that Chocolate Doom leaves undefined (vanilla
   // overran its memory further than Chocolate emulates): a replay beside Chocolate may
   // part from that tic on, and no port can say which is right.
@@ -667,6 +671,7 @@ class World {
   size_t removed_since_pass_ = 0;
   std::vector<SoundEvent> sounds_;
   std::vector<std::string> messages_;
+  bool console_spawned_ = false;
   mutable level::State state_;
   mutable bool stale_ = true;  // state_ is behind the map
   // Placed things Doom does not know (a .map level's own types) that have a picture:

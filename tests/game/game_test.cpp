@@ -577,6 +577,40 @@ TEST(Session, UseAfterDeathStartsTheLevelAgain) {
   std::filesystem::remove_all(dir);
 }
 
+// A netgame's dead player pressing use comes back into the level going on, and Doom's
+// P_SpawnPlayer starts the console player's message line afresh (HU_Start): the clip's
+// message, seconds from fading, is gone.
+TEST(Session, ANetgameRespawnClearsTheMessageLine) {
+  const auto dir = test::temp_dir("respawn_message");
+  test::WadWriter wad(true);
+  test::add_test_art(wad);
+  test::TestMap m;
+  m.add_room({{0, 0}, {0, 256}, {256, 256}, {256, 0}}, {0, 128, "FLOOR", "CEIL", 160, 16});  // 20% damage
+  m.things.push_back({64, 64, 0, 1});
+  m.things.push_back({192, 192, 0, 2});
+  m.things.push_back({112, 64, 0, 2007});  // a clip ahead of player 1
+  m.add_to(wad, "MAP01");
+  write_file_atomically(dir / "doom.wad", wad.bytes());
+  GameFlags coop;
+  coop.players = {true, true, false, false};
+  Session s(bsp::LevelSource{{}, {dir / "doom.wad"}, "MAP01"}, 3, coop);
+  int t = 0;
+  for (; t < 90; ++t) s.tic(play::TicCmd{});
+  for (; t < 100 && s.message().empty(); ++t) s.tic(play::TicCmd{25, 0, 0, 0});
+  ASSERT_EQ(s.message(), "Picked up a clip.");
+  for (; t < 200 && s.player().state != play::PlayerState::kDead; ++t) s.tic(play::TicCmd{});
+  ASSERT_EQ(s.player().state, play::PlayerState::kDead) << "five bites of the floor";
+  s.tic(play::TicCmd{0, 0, 0, play::kBtUse});
+  ASSERT_EQ(s.player().state, play::PlayerState::kReborn);
+  EXPECT_FALSE(s.message().empty()) << "still shown while the player lies dead";
+  const int level_time = s.world().level_time();
+  s.tic(play::TicCmd{});  // G_Ticker's reborn: back at the start
+  EXPECT_EQ(s.player().state, play::PlayerState::kLive);
+  EXPECT_EQ(s.world().level_time(), level_time + 1) << "the level goes on";
+  EXPECT_EQ(s.message(), "");
+  std::filesystem::remove_all(dir);
+}
+
 // --dump-things: every thing after every tic of a Freedoom demo, one block a tic, the
 // player first, each block's random index and the player's values those of stats.csv.
 TEST(Headless, DumpsEveryThingAfterEveryTic) {
