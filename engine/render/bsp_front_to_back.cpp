@@ -126,6 +126,8 @@ class BspFrontToBack final : public Renderer {
     std::vector<uint32_t> facing;      // draw_leaf's scratch
     std::vector<uint32_t>* order = nullptr;
     std::vector<uint32_t> fragments_drawn;
+    std::vector<Canvas::HitAt> hits;  // draw_fragment's scratch
+    std::vector<int> closed;
     RenderStats stats;
   };
 
@@ -296,14 +298,15 @@ class BspFrontToBack final : public Renderer {
     const ColumnRange range = columns_of_segment(view, f.p0, f.p1);
     if (range.empty()) return false;
     const WallProjector projector(view, wall.a, wall.b);
-    bool drew = false;
+    s.hits.clear();  // the open columns' hits, then drawn together
     s.mask.for_each_open(range.x0, range.x1, [&](int x) {
       double depth, t;
-      if (!projector.hit(x, depth, t) || !in_fragment(f, t)) return;
-      drew = true;
-      if (s.canvas.draw_wall(x, {f.wall, side, depth, t, int32_t(i)})) s.mask.close(x);
+      if (projector.hit(x, depth, t) && in_fragment(f, t)) s.hits.push_back({x, {f.wall, side, depth, t, int32_t(i)}});
     });
-    if (drew) {
+    s.closed.clear();
+    s.canvas.draw_walls(s.hits, s.closed);
+    for (const int x : s.closed) s.mask.close(x);
+    if (!s.hits.empty()) {
       s.fragments_drawn.push_back(i);
       if (s.order) s.order->push_back(i);
     }

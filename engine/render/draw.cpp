@@ -156,21 +156,14 @@ int Canvas::near_sector(const level::Wall& w, const WallHit& hit, int x) const {
 }
 
 bool Canvas::draw_wall(int x, const WallHit& hit) {
-  Column& c = columns_[x];
-  const level::Wall& w = level_->walls[hit.wall];
-  const int near = near_sector(w, hit, x);
-  int top = c.top, bottom = c.bottom;
-  drawn_doom_side_ = kNoDoomSide;
-  const bool masked = draw_hit(x, hit, near, top, bottom);
-  const int far = w.two_sided() ? w.sides[1 - hit.side].sector : kNone;
-  if (far != kNone) c.sector = far;
-  c.top = top;
-  c.bottom = bottom;
-  if (masked && c.nearest_masked == UINT32_MAX) c.nearest_masked = uint32_t(steps_[x].size());
-  steps_[x].push_back({hit, near, far, top, bottom, masked, drawn_doom_side_});
-  if (top < bottom) return false;
-  close(x, hit);
-  return true;
+  const int near = near_sector(level_->walls[hit.wall], hit, x);
+  return record_step(x, hit, near, [&](int& top, int& bottom) { return draw_hit(x, hit, near, top, bottom); });
+}
+
+void Canvas::draw_walls(std::span<const HitAt> hits, std::vector<int>& closed) {
+  if (doom_ && !dry_ && !painting_) return draw_doom_walls(hits, closed);
+  for (const HitAt& h : hits)
+    if (draw_wall(h.x, h.hit)) closed.push_back(h.x);
 }
 
 bool Canvas::clip_wall(int x, const WallHit& hit) {

@@ -10,6 +10,7 @@
 // rows its column had open at its depth, so what lies behind shows through.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <unordered_map>
@@ -55,6 +56,15 @@ class Canvas {
   // Front to back: draws what the hit shows in the column's open rows and narrows
   // them. Returns true when this hit closes the column.
   bool draw_wall(int x, const WallHit& hit);
+  // One column's hit.
+  struct HitAt {
+    int x;
+    WallHit hit;
+  };
+  // draw_wall for each of one wall's hits in turn, appending to `closed` each column a
+  // hit closes. Under Doom's rules the hits on one of its segs are drawn as a run, the
+  // seg looked up and its numbers copied out once (the same pixels as hit by hit).
+  void draw_walls(std::span<const HitAt> hits, std::vector<int>& closed);
 
   // Like draw_wall, but only narrows the column (and records the step): the painter
   // replays its hits front to back with this to learn what each column saw.
@@ -183,8 +193,21 @@ class Canvas {
   };
 
   bool draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom);
+  // draw_wall's bookkeeping around draw(top, bottom), which draws the hit into the
+  // column's open rows [top, bottom), narrows them and returns whether it shows a
+  // masked middle texture: the column's new rows and sector, its step; true when closed.
+  template <typename Draw>
+  bool record_step(int x, const WallHit& hit, int near, Draw&& draw);
   // Doom's rules (draw_doom.cpp): R_StoreWallRange and R_RenderSegLoop for one column.
   bool draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& bottom);
+  // What R_RenderSegLoop's columns of one side share, copied out of its DoomSide (set
+  // up first if need be) for a run of columns: the loop then keeps them in registers
+  // rather than reading them again behind every pixel store (bytes may alias anything).
+  struct DoomRun;
+  DoomRun doom_run(DoomSide& ds, const WallHit& hit, int near);
+  // One column of R_RenderSegLoop from its side's run.
+  bool doom_column(DoomRun& run, int x, int& top, int& bottom);
+  void draw_doom_walls(std::span<const HitAt> hits, std::vector<int>& closed);
   // A step's DoomSide: the one its column drew, so the sprites' scan of every
   // column's walls skips the search for the seg.
   DoomSide& doom_side(const Step& step) {
@@ -193,18 +216,23 @@ class Canvas {
   }
   // The side's seg at the wall's parameter t, set up on first use in a frame: the lookup
   // inline (a column asks for it at every wall, and a sprite's column again), the set-up not.
-  DoomSide& doom_side(uint32_t wall, int side, double t) {
+  // [*t_low, *t_high), when asked for: the wall parameters whose hits find the same seg.
+  DoomSide& doom_side(uint32_t wall, int side, double t, double* t_low = nullptr, double* t_high = nullptr) {
     const level::Level& l = *level_;
     const size_t side_index = size_t(wall) * 2 + size_t(side);
     size_t index = l.doom_segs.size() + side_index;  // the side as one seg
+    double low = -INFINITY, high = INFINITY;
     if (side_index + 1 < l.doom_seg_start.size()) {
       const uint32_t first = l.doom_seg_start[side_index], end = l.doom_seg_start[side_index + 1];
       if (first < end) {  // the last seg starting at or before t (the first when none does)
         uint32_t i = first;
         while (i + 1 < end && l.doom_segs[i + 1].t0 <= t) ++i;
         index = i;
+        if (i > first) low = l.doom_segs[i].t0;
+        if (i + 1 < end) high = l.doom_segs[i + 1].t0;
       }
     }
+    if (t_low) *t_low = low, *t_high = high;
     uint64_t& slot = doom_side_slots_[index];
     if (slot >> 32 == doom_stamp_) return doom_sides_[uint32_t(slot)];
     slot = uint64_t(doom_stamp_) << 32 | doom_sides_.size();
@@ -382,5 +410,23 @@ class Canvas {
   bool dry_ = false;       // clip_wall: compute rows, write nothing
   bool painting_ = false;  // paint_wall, paint_background: draw planes at once
 };
+
+template <typename Draw>
+bool Canvas::record_step(int x, const WallHit& hit, int near, Draw&& draw) {
+  Column& c = columns_[x];
+  const level::Wall& w = level_->walls[hit.wall];
+  int top = c.top, bottom = c.bottom;
+  drawn_doom_side_ = kNoDoomSide;
+  const bool masked = draw(top, bottom);
+  const int far = w.two_sided() ? w.sides[1 - hit.side].sector : level::kNone;
+  if (far != level::kNone) c.sector = far;
+  c.top = top;
+  c.bottom = bottom;
+  if (masked && c.nearest_masked == UINT32_MAX) c.nearest_masked = uint32_t(steps_[x].size());
+  steps_[x].push_back({hit, near, far, top, bottom, masked, drawn_doom_side_});
+  if (top < bottom) return false;
+  close(x, hit);
+  return true;
+}
 
 }  // namespace p3d::render

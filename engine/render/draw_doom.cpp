@@ -157,103 +157,167 @@ void Canvas::set_up_doom_wall(DoomSide& d, const WallHit& hit, int near) {
   }
 }
 
-// One column of R_RenderSegLoop, from the side's set-up. [top, bottom) are the open
-// rows: Doom's ceilingclip + 1 and floorclip.
-bool Canvas::draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& bottom) {
-  const doom::Tables& t = *doom_;
-  DoomSide& ds = doom_side(hit.wall, hit.side, hit.t);
-  drawn_doom_side_ = uint32_t(&ds - doom_sides_.data());
+struct Canvas::DoomRun {
+  DoomSide* side;
+  uint32_t side_index;  // in doom_sides_, for the steps
+  doom::Seg seg;
+  Fixed max_scale, x_offset;
+  int start_map;
+  // The wall edges' rows: centery - world * scale in fixed point of `bits` fraction
+  // bits (vanilla's 20.12 in 32 bits; Crispy's in 64, fewer bits for taller sectors),
+  // the centre and the heights already shifted into it.
+  bool crispy;
+  int bits;
+  int64_t center;
+  Fixed top, bottom, high, low;  // worldtop, worldbottom, worldhigh, worldlow
+  bool mark_ceiling, mark_floor, ceiling_plane, floor_plane, one_sided;
+  bool upper, lower;  // a top or bottom part to draw
+  int textures[3];
+  Fixed mid[3], part_x[3];
+};
+
+Canvas::DoomRun Canvas::doom_run(DoomSide& ds, const WallHit& hit, int near) {
   if (!ds.wall_ready || ds.near != near) set_up_doom_wall(ds, hit, near);
-  const Fixed scale = doom::scale_at(t, ds.seg, view_->fangle, x, ds.precision.max_scale);
+  const doom::Tables& t = *doom_;
+  const int shift = t.crispy ? kFracBits - ds.precision.height_bits : 4;
+  DoomRun r;
+  r.side = &ds;
+  r.side_index = uint32_t(&ds - doom_sides_.data());
+  r.seg = ds.seg;
+  r.max_scale = ds.precision.max_scale;
+  r.x_offset = ds.x_offset;
+  r.start_map = ds.start_map;
+  r.crispy = t.crispy;
+  r.bits = t.crispy ? ds.precision.height_bits : doom::kHeightBits;
+  r.center = t.crispy ? int64_t(t.centeryfrac) >> shift : int64_t(t.centeryfrac >> 4);
+  r.top = ds.worldtop >> shift, r.bottom = ds.worldbottom >> shift;
+  r.high = ds.worldhigh >> shift, r.low = ds.worldlow >> shift;
+  r.mark_ceiling = ds.mark_ceiling, r.mark_floor = ds.mark_floor;
+  r.ceiling_plane = ds.ceiling_plane, r.floor_plane = ds.floor_plane;
+  r.one_sided = ds.far == kNone;
+  r.upper = ds.top_part && ds.textures[level::kUpperPart] != kNone;
+  r.lower = ds.bottom_part && ds.textures[level::kLowerPart] != kNone;
+  for (int part = 0; part < 3; ++part)
+    r.textures[part] = ds.textures[part], r.mid[part] = ds.mid[part], r.part_x[part] = ds.part_x[part];
+  return r;
+}
+
+// One column of R_RenderSegLoop. [top, bottom) are the open rows: Doom's ceilingclip + 1
+// and floorclip.
+[[gnu::always_inline]] inline bool Canvas::doom_column(DoomRun& r, int x, int& top, int& bottom) {
+  const doom::Tables& t = *doom_;
+  drawn_doom_side_ = r.side_index;
+  const Fixed scale = doom::scale_at(t, r.seg, view_->fangle, x, r.max_scale);
   // What a drawn part's texels need, worked out for the column's first drawn part: most
   // hits draw none (an opening between sectors), and the step is a division.
   uint32_t iscale = 0;
   int map = 0;
   Fixed column = 0;
-  auto draw_part = [&](int y0, int y1, int part, int texture) {
+  auto draw_part = [&](int y0, int y1, int part) {
     if (y0 >= y1 || dry_) return;
     if (iscale == 0) {
       iscale = 0xFFFFFFFFu / uint32_t(scale);
-      map = fixed_or(doom::wall_map(t, ds.start_map, scale));
-      column = play::wrap_add(doom::texture_column(t, ds.seg, x), ds.x_offset);
+      map = fixed_or(doom::wall_map(t, r.start_map, scale));
+      column = play::wrap_add(doom::texture_column(t, r.seg, x), r.x_offset);
     }
-    doom_wall_rows(x, y0, y1, texture, ds.mid[part], int32_t(play::wrap_add(column, ds.part_x[part]) >> kFracBits), iscale,
-                   map);
+    doom_wall_rows(x, y0, y1, r.textures[part], r.mid[part], int32_t(play::wrap_add(column, r.part_x[part]) >> kFracBits),
+                   iscale, map);
   };
-  // A wall edge's row: centery - world * scale, in fixed point of `bits` fraction bits
-  // (vanilla's 20.12 in 32 bits; Crispy's in 64, fewer bits for taller sectors).
-  const int bits = ds.precision.height_bits, shift = kFracBits - bits;
-  const int64_t unit = int64_t(1) << bits;
+  const int64_t unit = int64_t(1) << r.bits;
   auto edge = [&](Fixed world) -> int64_t {
-    if (!t.crispy) return play::wrap_sub(t.centeryfrac >> 4, fixed_mul(world >> 4, scale));
-    return (int64_t(t.centeryfrac) >> shift) - ((int64_t(world >> shift) * scale) >> kFracBits);
+    const int64_t product = (int64_t(world) * scale) >> kFracBits;
+    return r.crispy ? r.center - product : int64_t(play::wrap_sub(Fixed(r.center), Fixed(product)));
   };
-  auto row_up = [&](Fixed world) { return int(std::clamp<int64_t>((edge(world) + unit - 1) >> bits, INT_MIN / 2, INT_MAX / 2)); };
-  auto row_down = [&](Fixed world) { return int(std::clamp<int64_t>(edge(world) >> bits, INT_MIN / 2, INT_MAX / 2)); };
+  auto row_up = [&](Fixed world) { return int(std::clamp<int64_t>((edge(world) + unit - 1) >> r.bits, INT_MIN / 2, INT_MAX / 2)); };
+  auto row_down = [&](Fixed world) { return int(std::clamp<int64_t>(edge(world) >> r.bits, INT_MIN / 2, INT_MAX / 2)); };
 
   const int ceiling_clip = top - 1, floor_clip = bottom;
-  int yl = row_up(ds.worldtop);
+  int yl = row_up(r.top);
   if (yl < ceiling_clip + 1) yl = ceiling_clip + 1;
   int ceiling_end = ceiling_clip + 1;  // the rows the ceiling took
-  if (ds.mark_ceiling) {
+  if (r.mark_ceiling) {
     const int y1 = ceiling_end = std::min(yl, floor_clip);
-    if (ds.ceiling_plane)
-      doom_plane_span(ds, x, ceiling_clip + 1, y1, true);
+    if (r.ceiling_plane)
+      doom_plane_span(*r.side, x, ceiling_clip + 1, y1, true);
     else
       fill_span(x, ceiling_clip + 1, y1, Fill::kVoid);  // Doom marks nothing: we fill it
   }
-  int yh = row_down(ds.worldbottom);
+  int yh = row_down(r.bottom);
   if (yh >= floor_clip) yh = floor_clip - 1;
   // Where a wall's edges cross (its top row below its bottom one) both planes claim the
   // rows between: the ceiling keeps them, as Doom draws its ceilings after its floors.
-  const int floor_start = ds.mark_floor ? std::max(yh + 1, ceiling_end) : floor_clip;
-  if (ds.mark_floor) {
-    if (ds.floor_plane)
-      doom_plane_span(ds, x, floor_start, floor_clip, false);
+  const int floor_start = r.mark_floor ? std::max(yh + 1, ceiling_end) : floor_clip;
+  if (r.mark_floor) {
+    if (r.floor_plane)
+      doom_plane_span(*r.side, x, floor_start, floor_clip, false);
     else
       fill_span(x, floor_start, floor_clip, Fill::kVoid);
   }
 
-  const int upper = ds.textures[level::kUpperPart], middle = ds.textures[level::kMiddlePart],
-            lower = ds.textures[level::kLowerPart];
-  if (ds.far == kNone) {
-    if (middle == kNone) {
-      planes_to_horizon(x, yl, yh + 1, near);
-    } else {
-      draw_part(yl, yh + 1, level::kMiddlePart, middle);
-    }
+  const bool middle = r.textures[level::kMiddlePart] != kNone;
+  if (r.one_sided) {
+    if (!middle)
+      planes_to_horizon(x, yl, yh + 1, r.side->near);
+    else
+      draw_part(yl, yh + 1, level::kMiddlePart);
     top = bottom;
     return false;
   }
   int new_ceiling = ceiling_clip, new_floor = floor_clip;
-  if (ds.top_part && upper != kNone) {
-    int mid = row_down(ds.worldhigh);
+  if (r.upper) {
+    int mid = row_down(r.high);
     if (mid >= floor_clip) mid = floor_clip - 1;
     if (mid >= yl) {
       // An upper part reaching below the floor's first row: Doom draws its planes last.
-      draw_part(yl, std::min(mid + 1, floor_start), level::kUpperPart, upper);
+      draw_part(yl, std::min(mid + 1, floor_start), level::kUpperPart);
       new_ceiling = mid;
     } else {
       new_ceiling = yl - 1;
     }
-  } else if (ds.mark_ceiling) {
+  } else if (r.mark_ceiling) {
     new_ceiling = yl - 1;
   }
-  if (ds.bottom_part && lower != kNone) {
-    int mid = row_up(ds.worldlow);
+  if (r.lower) {
+    int mid = row_up(r.low);
     if (mid <= new_ceiling) mid = new_ceiling + 1;
     if (mid <= yh) {
-      draw_part(mid, yh + 1, level::kLowerPart, lower);
+      draw_part(mid, yh + 1, level::kLowerPart);
       new_floor = mid;
     } else {
       new_floor = yh + 1;
     }
-  } else if (ds.mark_floor) {
+  } else if (r.mark_floor) {
     new_floor = yh + 1;
   }
   top = new_ceiling + 1;
   bottom = std::max(new_floor, top);  // crossed: the opening is closed
-  return middle != kNone && top < bottom;
+  return middle && top < bottom;
+}
+
+bool Canvas::draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& bottom) {
+  DoomRun run = doom_run(doom_side(hit.wall, hit.side, hit.t), hit, near);
+  return doom_column(run, x, top, bottom);
+}
+
+// The hits of a seg with a sector in front of it, as runs: the seg looked up once, its
+// numbers copied out once, then each column as draw_wall draws it.
+void Canvas::draw_doom_walls(std::span<const HitAt> hits, std::vector<int>& closed) {
+  for (size_t i = 0; i < hits.size();) {
+    const WallHit& first = hits[i].hit;
+    const int near = level_->walls[first.wall].sides[first.side].sector;
+    if (near == kNone) {  // a segment: its near sector is the column's own
+      if (draw_wall(hits[i].x, first)) closed.push_back(hits[i].x);
+      ++i;
+      continue;
+    }
+    double t_low, t_high;
+    DoomRun run = doom_run(doom_side(first.wall, first.side, first.t, &t_low, &t_high), first, near);
+    for (; i < hits.size() && hits[i].hit.t >= t_low && hits[i].hit.t < t_high; ++i) {
+      const auto [x, hit] = hits[i];
+      if (record_step(x, hit, near, [&](int& top, int& bottom) { return doom_column(run, x, top, bottom); }))
+        closed.push_back(x);
+    }
+  }
 }
 
 // Crispy Doom's R_DrawColumn: texel rows wrap at the texture's own height (its

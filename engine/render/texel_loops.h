@@ -54,7 +54,7 @@ inline void opaque(T& value) {
 // 2^32: v may then wrap in 32 bits and the row be masked.
 template <typename Pixel, typename Source>
 inline void wrapped_column(Pixel* out, size_t pitch, int count, int64_t v, int64_t step, int64_t period,
-                           const Source& texel) {
+                           const Source texel) {  // by value: the stores, bytes, may alias a referenced one
   if ((period & (period - 1)) == 0) {
     // The row is bits [16, 16 + k) of v for 2^k rows. Shifted to the top of 32 bits, v
     // wraps alike and a row is one shift, with no mask: 6 instructions a pixel, not 7.
