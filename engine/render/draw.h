@@ -206,7 +206,7 @@ class Canvas {
   struct DoomRun;
   DoomRun doom_run(DoomSide& ds, const WallHit& hit, int near);
   // One column of R_RenderSegLoop from its side's run.
-  bool doom_column(DoomRun& run, int x, int& top, int& bottom);
+  bool doom_column(DoomRun& run, int x, doom::Fixed scale, int& top, int& bottom);
   void draw_doom_walls(std::span<const HitAt> hits, std::vector<int>& closed);
   // A step's DoomSide: the one its column drew, so the sprites' scan of every
   // column's walls skips the search for the seg.
@@ -378,6 +378,7 @@ class Canvas {
   const doom::Tables* doom_ = nullptr;
   doom::Fixed base_x_scale_ = 0, base_y_scale_ = 0;
   uint32_t doom_stamp_ = 0;
+  std::vector<doom::Fixed> run_scales_;  // draw_doom_walls' scratch: a run's columns' scales
   uint32_t drawn_doom_side_ = kNoDoomSide;  // the DoomSide draw_hit_doom last drew, for its Step
   // This frame's sides in the order first met, packed: a strip touches a few hundred of
   // a level's thousands, and one slot per seg (this frame's stamp above its place in

@@ -204,10 +204,9 @@ Canvas::DoomRun Canvas::doom_run(DoomSide& ds, const WallHit& hit, int near) {
 
 // One column of R_RenderSegLoop. [top, bottom) are the open rows: Doom's ceilingclip + 1
 // and floorclip.
-[[gnu::always_inline]] inline bool Canvas::doom_column(DoomRun& r, int x, int& top, int& bottom) {
+[[gnu::always_inline]] inline bool Canvas::doom_column(DoomRun& r, int x, Fixed scale, int& top, int& bottom) {
   const doom::Tables& t = *doom_;
   drawn_doom_side_ = r.side_index;
-  const Fixed scale = doom::scale_at(t, r.seg, view_->fangle, x, r.max_scale);
   // What a drawn part's texels need, worked out for the column's first drawn part: most
   // hits draw none (an opening between sectors), and the step is a division.
   uint32_t iscale = 0;
@@ -296,7 +295,7 @@ Canvas::DoomRun Canvas::doom_run(DoomSide& ds, const WallHit& hit, int near) {
 
 bool Canvas::draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& bottom) {
   DoomRun run = doom_run(doom_side(hit.wall, hit.side, hit.t), hit, near);
-  return doom_column(run, x, top, bottom);
+  return doom_column(run, x, doom::scale_at(*doom_, run.seg, view_->fangle, x, run.max_scale), top, bottom);
 }
 
 // The hits of a seg with a sector in front of it, as runs: the seg looked up once, its
@@ -312,11 +311,20 @@ void Canvas::draw_doom_walls(std::span<const HitAt> hits, std::vector<int>& clos
     }
     double t_low, t_high;
     DoomRun run = doom_run(doom_side(first.wall, first.side, first.t, &t_low, &t_high), first, near);
-    for (; i < hits.size() && hits[i].hit.t >= t_low && hits[i].hit.t < t_high; ++i) {
-      const auto [x, hit] = hits[i];
-      if (record_step(x, hit, near, [&](int& top, int& bottom) { return doom_column(run, x, top, bottom); }))
+    size_t end = i;
+    while (end < hits.size() && hits[end].hit.t >= t_low && hits[end].hit.t < t_high) ++end;
+    // The run's scales first: their divisions overlap one another rather than each
+    // waiting behind the last column's work.
+    run_scales_.resize(end - i);
+    for (size_t k = i; k < end; ++k)
+      run_scales_[k - i] = doom::scale_at(*doom_, run.seg, view_->fangle, hits[k].x, run.max_scale);
+    for (size_t k = i; k < end; ++k) {
+      const auto [x, hit] = hits[k];
+      const Fixed scale = run_scales_[k - i];
+      if (record_step(x, hit, near, [&](int& top, int& bottom) { return doom_column(run, x, scale, top, bottom); }))
         closed.push_back(x);
     }
+    i = end;
   }
 }
 
