@@ -207,7 +207,10 @@ void Canvas::finish() {
     draw_layers();
     return;
   }
-  planes_.for_each_span([this](const PlaneKey& key, int y, int xa, int xb) { plane_pixels(key, y, xa, xb); });
+  if (doom_)
+    draw_crispy_flats();
+  else
+    planes_.for_each_span([this](const PlaneKey& key, int y, int xa, int xb) { plane_pixels(key, y, xa, xb); });
   draw_layers();
 }
 

@@ -248,7 +248,16 @@ class Canvas {
   void crispy_wall_rows(int x, int y0, int y1, const level::Texture& tex, int u, doom::Fixed v0, uint32_t iscale, int map);
   // Pixels [xa, xb) of row y of a flat, its span stepping from column `start` <= xa.
   void doom_plane_pixels(const PlaneKey& key, int y, int xa, int xb, int start);
-  void crispy_plane_pixels(const PlaneKey& key, int y, int xa, int xb);
+  // Crispy's rules: a flat's row [xa, xb) of row y set up (R_MapPlane), then drawn.
+  struct CrispyRow {
+    const level::Texture* texture;
+    int y, xa, xb;
+    uint32_t xfrac = 0, yfrac = 0, xstep = 0, ystep = 0;  // column xa's texel position and the steps
+    int map = 0;
+  };
+  CrispyRow crispy_row(const PlaneKey& key, int y, int xa, int xb) const;
+  void draw_crispy_row(const CrispyRow& row);
+  void draw_crispy_flats();
   // The flats as spans: gathered from the planes filed (doom_gather_spans), each span
   // merged with its neighbours of the same plane, then drawn (doom_draw_spans), a span
   // at the strip's left edge from where it begins in the strips to the left.
@@ -398,6 +407,7 @@ class Canvas {
     const PlaneKey* key;
     int xa, xb;
   };
+  std::vector<CrispyRow> crispy_rows_;       // draw_crispy_flats' batch
   std::vector<DoomSpan> doom_spans_;         // this frame's flat spans, row by row
   std::vector<uint32_t> doom_row_first_;     // per row, and one more: its first span in doom_spans_
   std::vector<int> doom_span_y_;             // doom_gather_spans' scratch: each span's row

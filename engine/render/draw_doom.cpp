@@ -379,18 +379,23 @@ void Canvas::doom_wall_rows(int x, int y0, int y1, int texture, Fixed mid, int32
 // Crispy Doom's R_MapPlane: each pixel's texel from its column's distance from the
 // centre column, so that a span's start does not matter. Crispy skips the centre row
 // (it draws nothing there): it is drawn as the row below.
-void Canvas::crispy_plane_pixels(const PlaneKey& key, int y, int xa, int xb) {
+Canvas::CrispyRow Canvas::crispy_row(const PlaneKey& key, int y, int xa, int xb) const {
   const doom::Tables& t = *doom_;
-  const level::Texture& tex = level_->textures[size_t(key.texture)];
   const Fixed height = std::abs(play::wrap_sub(fixed_of(key.height), view_->fz));
   const int dy = std::max(1, std::abs(t.centery - y));
   const Fixed distance = fixed_mul(height, t.yslope[size_t(y)]);
   const Fixed view_cos = play::cosine(view_->fangle), view_sin = play::sine(view_->fangle);
-  const uint32_t xstep = uint32_t(fixed_mul(view_sin, height) / dy), ystep = uint32_t(fixed_mul(view_cos, height) / dy);
+  CrispyRow r{&level_->textures[size_t(key.texture)], y, xa, xb};
+  r.xstep = uint32_t(fixed_mul(view_sin, height) / dy), r.ystep = uint32_t(fixed_mul(view_cos, height) / dy);
   const uint32_t dx = uint32_t(xa - t.centerx);
-  uint32_t xfrac = uint32_t(view_->fx) + uint32_t(fixed_mul(view_cos, distance)) + dx * xstep;
-  uint32_t yfrac = 0u - uint32_t(view_->fy) - uint32_t(fixed_mul(view_sin, distance)) + dx * ystep;
-  const int map = fixed_or(doom::flat_map(t, doom::start_map(key.light, 0, 0), distance));
+  r.xfrac = uint32_t(view_->fx) + uint32_t(fixed_mul(view_cos, distance)) + dx * r.xstep;
+  r.yfrac = 0u - uint32_t(view_->fy) - uint32_t(fixed_mul(view_sin, distance)) + dx * r.ystep;
+  r.map = fixed_or(doom::flat_map(t, doom::start_map(key.light, 0, 0), distance));
+  return r;
+}
+
+void Canvas::draw_crispy_row(const CrispyRow& r) {
+  const level::Texture& tex = *r.texture;
   // Doom's flats are 64 x 64, row-major; ours column-major, of any size.
   const bool flat64 = tex.width == 64 && tex.height == 64;
   auto texel = [&](uint32_t fx, uint32_t fy) -> size_t {
@@ -398,21 +403,39 @@ void Canvas::crispy_plane_pixels(const PlaneKey& key, int y, int xa, int xb) {
     return flat64 ? size_t(u << 6 | v) : size_t(tex.wrap_u(u)) * size_t(tex.height) + size_t(tex.wrap_v(v));
   };
   const uint8_t* indices = tex.indices.data();
+  const size_t light = size_t(r.map) * limits::kPaletteSize;
   if (indexed_ && flat64)  // u = (xfrac >> 16) & 63 and v = (yfrac >> 16) & 63 at u * 64 + v
-    return indexed_row(index_pixel(xa, y), xb - xa, {xfrac, xstep, kFracBits - 6, 63u << 6},
-                       {yfrac, ystep, kFracBits, 63u}, indices,
-                       level_->light_indices.data() + size_t(map) * limits::kPaletteSize);
+    return indexed_row(index_pixel(r.xa, r.y), r.xb - r.xa, {r.xfrac, r.xstep, kFracBits - 6, 63u << 6},
+                       {r.yfrac, r.ystep, kFracBits, 63u}, indices, level_->light_indices.data() + light);
+  uint32_t xfrac = r.xfrac, yfrac = r.yfrac;
   auto draw = [&](auto* out, const auto* lit) {
-    for (int x = xa; x < xb; ++x, xfrac += xstep, yfrac += ystep) *out++ = lit[indices[texel(xfrac, yfrac)]];
+    for (int x = r.xa; x < r.xb; ++x, xfrac += r.xstep, yfrac += r.ystep) *out++ = lit[indices[texel(xfrac, yfrac)]];
   };
-  if (indexed_) return draw(index_pixel(xa, y), level_->light_indices.data() + size_t(map) * limits::kPaletteSize);
-  draw(pixel(xa, y), level_->light_maps.data() + size_t(map) * limits::kPaletteSize);
+  if (indexed_) return draw(index_pixel(r.xa, r.y), level_->light_indices.data() + light);
+  draw(pixel(r.xa, r.y), level_->light_maps.data() + light);
+}
+
+// The flats' spans under Crispy's rules, a batch of rows set up before any is drawn: the
+// set-up's two divisions then overlap from row to row rather than each waiting behind
+// the row drawn before.
+void Canvas::draw_crispy_flats() {
+  constexpr size_t kBatch = 32;
+  crispy_rows_.clear();
+  auto draw_batch = [&] {
+    for (const CrispyRow& r : crispy_rows_) draw_crispy_row(r);
+    crispy_rows_.clear();
+  };
+  planes_.for_each_span([&](const PlaneKey& key, int y, int xa, int xb) {
+    crispy_rows_.push_back(crispy_row(key, y, xa, xb));
+    if (crispy_rows_.size() == kBatch) draw_batch();
+  });
+  draw_batch();
 }
 
 // R_MapPlane and R_DrawSpan: pixels [xa, xb) of row y of a span from column start.
 void Canvas::doom_plane_pixels(const PlaneKey& key, int y, int xa, int xb, int start) {
   const doom::Tables& t = *doom_;
-  if (t.crispy) return crispy_plane_pixels(key, y, xa, xb);
+  if (t.crispy) return draw_crispy_row(crispy_row(key, y, xa, xb));
   const level::Texture& tex = level_->textures[size_t(key.texture)];
   const Fixed height = std::abs(play::wrap_sub(fixed_of(key.height), view_->fz));
   const Fixed distance = fixed_mul(height, t.yslope[size_t(y)]);
