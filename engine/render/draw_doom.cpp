@@ -319,7 +319,8 @@ void Canvas::draw_doom_walls(std::span<const HitAt> hits, std::vector<int>& clos
     for (size_t k = i; k < end; ++k)
       run_scales_[k - i] = doom::scale_at(*doom_, run.seg, view_->fangle, hits[k].x, run.max_scale);
     for (size_t k = i; k < end; ++k) {
-      const auto [x, hit] = hits[k];
+      const int x = hits[k].x;
+      const WallHit& hit = hits[k].hit;
       const Fixed scale = run_scales_[k - i];
       if (record_step(x, hit, near, [&](int& top, int& bottom) { return doom_column(run, x, scale, top, bottom); }))
         closed.push_back(x);
