@@ -548,18 +548,25 @@ TEST(Session, TheIntermissionTalliesTheLevel) {
   EXPECT_FALSE(Session(test::source_dir() / "maps/outpost.map").start_intermission()) << "our own levels have none";
 }
 
+// A WAD in `dir` whose MAP01 is one 256-unit room with a floor of Doom's sector special
+// `floor_special` (5: 10% slime, 16: 20% damage), holding `things`.
+bsp::LevelSource damaging_room(const std::filesystem::path& dir, int floor_special,
+                               const std::vector<test::TestMap::Thing>& things) {
+  test::WadWriter wad(true);
+  test::add_test_art(wad);
+  test::TestMap m;
+  m.add_room({{0, 0}, {0, 256}, {256, 256}, {256, 0}}, {0, 128, "FLOOR", "CEIL", 160, floor_special});
+  m.things = things;
+  m.add_to(wad, "MAP01");
+  write_file_atomically(dir / "doom.wad", wad.bytes());
+  return {{}, {dir / "doom.wad"}, "MAP01"};
+}
+
 // Death on a slime floor, then use: the level starts again with a fresh player, as
 // Doom's single-player reborn.
 TEST(Session, UseAfterDeathStartsTheLevelAgain) {
   const auto dir = test::temp_dir("reborn");
-  test::WadWriter wad(true);
-  test::add_test_art(wad);
-  test::TestMap m;
-  m.add_room({{0, 0}, {0, 256}, {256, 256}, {256, 0}}, {0, 128, "FLOOR", "CEIL", 160, 5});  // 10% slime
-  m.things.push_back({64, 64, 0, 1});
-  m.add_to(wad, "MAP01");
-  write_file_atomically(dir / "doom.wad", wad.bytes());
-  Session s(bsp::LevelSource{{}, {dir / "doom.wad"}, "MAP01"});
+  Session s(damaging_room(dir, 5, {{64, 64, 0, 1}}));
   for (int t = 0; t < 32 * 10 + 5; ++t) s.tic(play::TicCmd{25, 0, 0, 0});
   ASSERT_EQ(s.player().state, play::PlayerState::kDead);
   const geom::Vec2 fell = s.pose().pos;
@@ -582,18 +589,10 @@ TEST(Session, UseAfterDeathStartsTheLevelAgain) {
 // message, seconds from fading, is gone.
 TEST(Session, ANetgameRespawnClearsTheMessageLine) {
   const auto dir = test::temp_dir("respawn_message");
-  test::WadWriter wad(true);
-  test::add_test_art(wad);
-  test::TestMap m;
-  m.add_room({{0, 0}, {0, 256}, {256, 256}, {256, 0}}, {0, 128, "FLOOR", "CEIL", 160, 16});  // 20% damage
-  m.things.push_back({64, 64, 0, 1});
-  m.things.push_back({192, 192, 0, 2});
-  m.things.push_back({112, 64, 0, 2007});  // a clip ahead of player 1
-  m.add_to(wad, "MAP01");
-  write_file_atomically(dir / "doom.wad", wad.bytes());
   GameFlags coop;
   coop.players = {true, true, false, false};
-  Session s(bsp::LevelSource{{}, {dir / "doom.wad"}, "MAP01"}, 3, coop);
+  // The two players' starts, and a clip ahead of player 1.
+  Session s(damaging_room(dir, 16, {{64, 64, 0, 1}, {192, 192, 0, 2}, {112, 64, 0, 2007}}), 3, coop);
   int t = 0;
   for (; t < 90; ++t) s.tic(play::TicCmd{});
   for (; t < 100 && s.message().empty(); ++t) s.tic(play::TicCmd{25, 0, 0, 0});
