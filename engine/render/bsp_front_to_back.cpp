@@ -18,11 +18,12 @@
 // Under Doom's rules sprites are clipped by the walls' silhouettes, not by the walk:
 // every thing goes to the canvas, and the tree culls by its walls' boxes alone.
 //
-// The screen is split into column strips, each walked alone with its own W-bit array
-// (the columns outside it closed from the start), canvas and sprites, so strips draw
-// on as many threads as given. What a column shows depends only on the walls met in
-// it, front to back, so the picture is the same for any split; the split depends only
-// on the width, so the statistics are the same for any thread count.
+// The screen is split into column strips, one per thread, each walked alone with its
+// own W-bit array (the columns outside it closed from the start), canvas and sprites.
+// What a column shows depends only on the walls met in it, front to back, so the
+// picture is the same for any split; the statistics are counted as one walk of the
+// whole screen would count them (merged_stats), so they are too. The edges between
+// strips move frame by frame toward equal times (strip_split.h).
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -30,21 +31,19 @@
 #include "engine/render/draw.h"
 #include "engine/render/occlusion.h"
 #include "engine/render/renderer.h"
+#include "engine/render/strip_split.h"
 #include "engine/util/thread_pool.h"
 
 namespace p3d::render {
 
 namespace {
 
-// Strips per frame: one per 160 columns, 4 to 8. Every strip walks the tree's first
-// levels, splits the planes' rows and projects the things near it, so fewer is
-// cheaper, while more balance more threads and let more cores share a wide frame (on
-// the Freedoom maps 4 strips beat 8 by 5-9% at 640x400, on one thread and two; at
-// 1920x1080 on two threads 4 and 8 were within 10%, either way in different runs). The
-// count depends on the width alone, so the statistics do not depend on the threads.
-// Each strip is a whole number of 64-byte cache lines of pixels wide (16 columns):
-// where rows start on a line, two threads never write the same one.
-int strip_count(int width) { return std::clamp(width / 160, 4, 8); }
+// Strips per frame: one per thread. Every strip walks the tree's first levels, splits
+// the planes' rows and projects the things near it, so fewer is cheaper: at the starts
+// of five Freedoom maps, one strip on one thread takes 0.94 of four strips' time, and
+// two strips balanced by time on two threads 0.93 of four handed out in turn. Each strip is a whole
+// number of 64-byte cache lines of pixels wide (16 columns): where rows start on a
+// line, two threads never write the same one.
 constexpr int kStripAlign = 16;
 constexpr int kResolveBands = 8;  // bands of rows the final colour pass is split into
 
@@ -60,11 +59,11 @@ class BspFrontToBack final : public Renderer {
     const int camera_sector = level.sector_at(camera.pos);
     // The order fragments drew in is one walk's: a probe asking for it gets one strip.
     const bool one_walk = probe && probe->want_order;
-    const int count = one_walk ? 1 : strip_count(view.width);
-    const int width = (view.width + count - 1) / count;
-    const int strip_width = std::max(kStripAlign, (width + kStripAlign - 1) / kStripAlign * kStripAlign);
-    const int strips = (view.width + strip_width - 1) / strip_width;
+    const int count = one_walk ? 1 : pool_.threads();
+    if (edges_.size() != size_t(count) + 1 || edges_.back() != view.width) edges_ = even_edges(view.width, count, kStripAlign);
+    const int strips = int(edges_.size()) - 1;
     if (strips_.size() < size_t(strips)) strips_.resize(size_t(strips));
+    seconds_.assign(size_t(strips), 0.0);
     Canvas::prepare_probe(view, probe);
     Canvas::prepare_frame(level, frame);
     // Under Doom's rules every thing goes to the canvas (walk), so the tree culls by
@@ -73,27 +72,34 @@ class BspFrontToBack final : public Renderer {
       Canvas::project_doom_sprites(level, state, view, projected_);
     else
       attach_things(level, state);
-    pool_.run(strips, [&](int i) {
-      Strip& s = strips_[size_t(i)];
-      s.x0 = i * strip_width;
-      s.x1 = std::min(view.width, s.x0 + strip_width);
-      s.canvas.begin(level, state, view, frame, camera_sector, probe, s.x0, s.x1,
-                     i > 0 ? &strips_[size_t(i) - 1].canvas : nullptr);
-      s.order = one_walk ? &probe->order : nullptr;
-      walk(level, view, camera, s);
-      // A frame that keeps Doom's 8-bit screen: each strip copies its own indices, from
-      // its own cache, with no second dispatch (5% of a frame on two threads).
-      if (frame.indexed() && !s.canvas.waiting()) s.canvas.resolve(0, view.height);
-    });
+    pool_.run_timed(
+        strips,
+        [&](int i) {
+          Strip& s = strips_[size_t(i)];
+          s.x0 = edges_[size_t(i)];
+          s.x1 = edges_[size_t(i) + 1];
+          s.canvas.begin(level, state, view, frame, camera_sector, probe, s.x0, s.x1,
+                         i > 0 ? &strips_[size_t(i) - 1].canvas : nullptr);
+          s.order = one_walk ? &probe->order : nullptr;
+          walk(level, view, camera, s);
+          // A frame that keeps Doom's 8-bit screen: each strip copies its own indices, from
+          // its own cache, with no second dispatch (5% of a frame on two threads).
+          if (frame.indexed() && !s.canvas.waiting()) s.canvas.resolve(0, view.height);
+        },
+        seconds_);
     // Under Doom's rules a flat's span may begin in a strip to the left: the strips draw
     // their flats and layers once every strip's walk is done (Canvas::finish_strip).
     if (strips_[0].canvas.waiting())
-      pool_.run(strips, [&](int i) {
-        Strip& s = strips_[size_t(i)];
-        s.canvas.finish_strip();
-        s.canvas.count_into(s.stats);
-        if (frame.indexed()) s.canvas.resolve(0, view.height);
-      });
+      pool_.run_timed(
+          strips,
+          [&](int i) {
+            Strip& s = strips_[size_t(i)];
+            s.canvas.finish_strip();
+            s.canvas.count_into(s.stats);
+            if (frame.indexed()) s.canvas.resolve(0, view.height);
+          },
+          seconds_);
+    balance_edges(edges_, seconds_, kStripAlign);
     // Paletted levels drawn in colours: the strips drew palette indices
     // (Canvas::resolve); the colours are written in bands of whole rows, which the
     // caches fetch as streams.
@@ -105,7 +111,7 @@ class BspFrontToBack final : public Renderer {
           for (int i = 0; i < strips; ++i) strips_[size_t(i)].canvas.resolve(y, y + 1);
       });
     }
-    return merged_stats(strips);
+    return merged_stats(level, strips, view.doom != nullptr);
   }
 
  private:
@@ -126,6 +132,7 @@ class BspFrontToBack final : public Renderer {
     std::vector<uint32_t> facing;      // draw_leaf's scratch
     std::vector<uint32_t>* order = nullptr;
     std::vector<uint32_t> fragments_drawn;
+    std::vector<int32_t> entered;  // the nodes and leaves (leaf_child values) walked into
     std::vector<Canvas::HitAt> hits;  // draw_fragment's scratch
     std::vector<int> closed;
     RenderStats stats;
@@ -136,17 +143,14 @@ class BspFrontToBack final : public Renderer {
     s.mask.close_outside(s.x0, s.x1);
     s.stats = {};
     s.fragments_drawn.clear();
+    s.entered.clear();
     if (s.order) s.order->clear();
     s.stack.assign(1, {level.root(), false});
     // Doom's rules clip a sprite by the walls' silhouettes, not by what the walk culls:
     // every thing goes to the canvas, as in the reference (projected once a frame: render).
     const bool every_thing = view.doom != nullptr;
     if (every_thing) s.canvas.add_projected_sprites(projected_);
-    while (!s.stack.empty()) {
-      if (s.mask.full()) {
-        s.stats.early_exit = true;
-        break;
-      }
+    while (!s.stack.empty() && !s.mask.full()) {
       const Item item = s.stack.back();
       s.stack.pop_back();
       if (item.draw_fragments) {
@@ -160,17 +164,14 @@ class BspFrontToBack final : public Renderer {
       const geom::BBox& box = cull_box(level, item.child, every_thing);
       if (box.empty()) continue;  // a leaf holding nothing
       const ColumnRange range = columns_of_box(view, box);
-      if (range.empty() || s.mask.all_closed(range.x0, range.x1)) {
-        ++s.stats.subtrees_culled;
-        continue;
-      }
+      if (range.empty() || s.mask.all_closed(range.x0, range.x1)) continue;
+      s.entered.push_back(item.child);
       if (leaf) {
         const int32_t index = level::leaf_index(item.child);
         if (!every_thing) add_sprites(leaf_things_[size_t(index)], s.canvas);
         draw_leaf(level, view, level.leaves[size_t(index)], s);
         continue;
       }
-      ++s.stats.nodes_visited;
       const level::Node& node = level.nodes[size_t(item.child)];
       if (!every_thing) add_sprites(node_things_[size_t(item.child)], s.canvas);
       const int near = level::splitter_side(node, camera.pos) > 0 ? 1 : 0;
@@ -178,6 +179,7 @@ class BspFrontToBack final : public Renderer {
       s.stack.push_back({item.child, true});
       s.stack.push_back({node.child[near], false});
     }
+    s.stats.early_exit = s.mask.full();
     s.canvas.finish();
     s.canvas.count_into(s.stats);
   }
@@ -313,17 +315,21 @@ class BspFrontToBack final : public Renderer {
     return s.mask.full();
   }
 
-  // Sums over the strips; a fragment or a sprite drawn in several strips counts once,
-  // and the walk exited early when every strip's did.
-  RenderStats merged_stats(int strips) {
+  // The statistics of one walk over the whole screen. A node, a fragment or a sprite
+  // counts once however many strips met it: one walk enters a node where it has a
+  // column still open, that is where some strip does (a node's columns hold its
+  // children's). A subtree is culled where its node was entered but it was not: its
+  // box projects onto closed (or no) columns, or every column closed first. The walk
+  // exits early when every column closes, that is when every strip's does.
+  RenderStats merged_stats(const level::Level& level, int strips, bool walls_only) {
     RenderStats total;
     total.early_exit = true;
     fragments_.clear();
     things_.clear();
+    entered_.clear();
     for (int i = 0; i < strips; ++i) {
       const Strip& s = strips_[size_t(i)];
-      total.nodes_visited += s.stats.nodes_visited;
-      total.subtrees_culled += s.stats.subtrees_culled;
+      entered_.insert(entered_.end(), s.entered.begin(), s.entered.end());
       total.columns_closed += s.stats.columns_closed;
       total.pixels_written += s.stats.pixels_written;
       total.masked_pixels += s.stats.masked_pixels;
@@ -334,11 +340,24 @@ class BspFrontToBack final : public Renderer {
     }
     total.fragments_drawn = distinct(fragments_);
     total.sprites_drawn = distinct(things_);
+    distinct(entered_);
+    const auto culled = [&](int32_t child) {
+      return !cull_box(level, child, walls_only).empty() && !std::binary_search(entered_.begin(), entered_.end(), child);
+    };
+    total.subtrees_culled = culled(level.root());
+    for (const int32_t child : entered_) {
+      if (level::is_leaf(child)) continue;
+      ++total.nodes_visited;
+      for (const int32_t c : level.nodes[size_t(child)].child) total.subtrees_culled += culled(c);
+    }
     return total;
   }
-  static uint64_t distinct(std::vector<uint32_t>& ids) {
+  // Sorts ids and keeps each once; returns how many there are.
+  template <typename Id>
+  static uint64_t distinct(std::vector<Id>& ids) {
     std::sort(ids.begin(), ids.end());
-    return uint64_t(std::unique(ids.begin(), ids.end()) - ids.begin());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    return uint64_t(ids.size());
   }
 
   ThreadPool pool_;
@@ -356,6 +375,9 @@ class BspFrontToBack final : public Renderer {
   std::vector<int32_t> touched_;
   std::vector<std::pair<int32_t, uint32_t>> owners_;  // attach_things' scratch: (node or leaf_child, thing)
   std::vector<uint32_t> fragments_, things_;  // merged_stats' scratch
+  std::vector<int32_t> entered_;
+  std::vector<int> edges_;        // the strips' columns: strip i is [edges_[i], edges_[i + 1])
+  std::vector<double> seconds_;   // what each strip took this frame
 };
 
 }  // namespace

@@ -33,14 +33,14 @@ Camera camera_at(const level::Level& level, Vec2 pos, double angle, double eye_h
 
 struct RenderStats {
   uint64_t nodes_visited = 0;    // BSP nodes whose splitter was tested
-  uint64_t subtrees_culled = 0;  // subtrees skipped because their box projects onto closed (or no) columns
+  uint64_t subtrees_culled = 0;  // subtrees of those not entered: their box projects onto closed (or no) columns
   uint64_t fragments_drawn = 0;  // fragments that drew at least one column
   uint64_t columns_closed = 0;
   uint64_t pixels_written = 0;   // by walls, floors, ceilings and sky: each pixel once, front to back
   uint64_t masked_pixels = 0;    // by masked middle textures, over what is behind them
   uint64_t sprites_drawn = 0;    // things whose sprite wrote at least one pixel
   uint64_t sprite_pixels = 0;
-  bool early_exit = false;       // the traversal stopped because every column was closed
+  bool early_exit = false;       // every column was closed: the traversal stopped there
   // Ray-based renderers:
   uint64_t rays = 0;
   uint64_t steps = 0;            // cells (DDA) or marching steps (sphere) over all rays

@@ -52,6 +52,14 @@ void ThreadPool::run(int tasks, const std::function<void(int)>& task) {
     spins < 4096 ? relax() : std::this_thread::yield();
 }
 
+void ThreadPool::run_timed(int tasks, const std::function<void(int)>& task, std::span<double> seconds) {
+  run(tasks, [&](int i) {
+    const auto start = std::chrono::steady_clock::now();
+    task(i);
+    seconds[size_t(i)] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  });
+}
+
 // Spins for a moment, then sleeps, until the generation moves past `seen`.
 bool ThreadPool::wait_for_run(uint64_t seen) {
   const auto until = std::chrono::steady_clock::now() + kSpin;

@@ -51,5 +51,20 @@ TEST(ThreadPool, ShutsDownWhateverItsWorkersAreDoing) {
   }
 }
 
+// run_timed adds each task's own time to its entry: a task that sleeps is seen to take
+// at least its sleep, run after run, and the others no more than they did.
+TEST(ThreadPool, TimesEachTaskIntoItsOwnEntry) {
+  ThreadPool pool(2);
+  std::vector<double> seconds(3, 0.0);
+  const auto task = [](int i) {
+    if (i == 1) std::this_thread::sleep_for(std::chrono::milliseconds(3));
+  };
+  pool.run_timed(3, task, seconds);
+  pool.run_timed(3, task, seconds);
+  EXPECT_GE(seconds[1], 0.006);
+  for (const double s : seconds) EXPECT_GE(s, 0.0);
+  EXPECT_LT(seconds[0] + seconds[2], seconds[1]);
+}
+
 }  // namespace
 }  // namespace p3d
