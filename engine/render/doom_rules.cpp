@@ -30,6 +30,19 @@ constexpr double kRayNudge = 1.0 / (1 << 24);
 
 Fixed fine_cos(Angle a) { return kFineSine[(a >> kAngleToFineShift) + kFineAngles / 4]; }
 
+}  // namespace
+
+// With l = ceil(log2 d) and magic = 2^(bits + l) / d + 1: d * magic exceeds 2^(bits + l)
+// by at most d <= 2^l, which no n < 2^bits can carry across a multiple of d.
+void magic_for(uint64_t d, int bits, uint64_t& magic, int& shift) {
+  int l = 0;
+  while ((uint64_t(1) << l) < d) ++l;
+  shift = bits + l;
+  magic = uint64_t((U128(1) << shift) / d + 1);
+}
+
+namespace {
+
 Tables make_tables(int width, int height, int screen_width) {
   Tables t;
   t.width = width;
@@ -80,6 +93,9 @@ Tables make_tables(int width, int height, int screen_width) {
     const Fixed dy = std::abs(((y - height / 2) << kFracBits) + kFracUnit / 2);
     t.yslope[size_t(y)] = fixed_div(Fixed(width / 2) * kFracUnit, dy);
   }
+  // A scale at Doom's 320 columns: vanilla's windows light by their own scale.
+  const int light_width = t.crispy ? width : kDoomWidth;
+  magic_for(uint64_t(light_width) << kLightScaleShift, 32 + 9, t.light_magic, t.light_shift);  // scale * 320 < 2^41
   // DISTMAP; vanilla's smaller views drop faster, as its scales there are smaller.
   for (int j = 0; j < kMaxLightScale; ++j) t.scale_light_drop[j] = t.light_at_view ? j * kDoomWidth / width / 2 : j / 2;
   for (int j = 0; j < kMaxLightZ; ++j) {

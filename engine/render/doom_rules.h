@@ -57,6 +57,10 @@ struct Tables {
   std::vector<Fixed> distscale;     // per column: 1 / cos(xtoviewangle)
   std::vector<Fixed> yslope;        // per row: (W/2) / |y - centery + 1/2|
   int scale_light_drop[kMaxLightScale] = {};  // scalelight: maps brighter at wall scale index j (at 320 columns)
+  // wall_map's index, scale * 320 / light_width >> LIGHTSCALESHIFT, by a multiply
+  // (exact_quotient): that division took a tenth of a wall column's set-up.
+  uint64_t light_magic = 0;
+  int light_shift = 0;
   int zlight_drop[kMaxLightZ] = {};           // zlight: maps brighter at flat distance index j
   Fixed sky_iscale = 0;                       // the sky's texel rows per screen row (pspriteiscale)
 };
@@ -80,13 +84,16 @@ Fixed point_to_dist(Fixed vx, Fixed vy, Fixed x, Fixed y);
 // The light map numbers (0 brightest) of R_StoreWallRange and R_DrawPlanes: `light` is
 // a sector's 0..255 level, `contrast` Doom's fake contrast (-1, 0, +1), extra the gun's.
 int start_map(int light, int contrast, int extra);
+// Granlund and Montgomery's division by an invariant d as a multiply: for every
+// n < 2^bits, n / d == (n * magic) >> shift. magic_for sets magic and shift.
+__extension__ typedef unsigned __int128 U128;
+void magic_for(uint64_t d, int bits, uint64_t& magic, int& shift);
+inline uint64_t exact_quotient(uint64_t n, uint64_t magic, int shift) { return uint64_t((U128(n) * magic) >> shift); }
 // A wall's (or sprite's) scale is taken at Doom's 320 columns (Crispy Doom's hires shifts
 // it once more), so light diminishes with distance alike at any width.
 inline int wall_map(const Tables& t, int start, Fixed scale) {
-  const int64_t scaled = t.width == kDoomWidth || t.light_at_view ? int64_t(uint32_t(scale))
-                                                                   : int64_t(uint32_t(scale)) * kDoomWidth / t.width;
-  const int index = int(std::min<int64_t>(scaled >> kLightScaleShift, kMaxLightScale - 1));
-  const int map = start - t.scale_light_drop[index];
+  const uint64_t index = exact_quotient(uint64_t(uint32_t(scale)) * kDoomWidth, t.light_magic, t.light_shift);
+  const int map = start - t.scale_light_drop[std::min<uint64_t>(index, kMaxLightScale - 1)];
   return map < 0 ? 0 : map >= kColormaps ? kColormaps - 1 : map;
 }
 inline int flat_map(const Tables& t, int start, Fixed distance) {

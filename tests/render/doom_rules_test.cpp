@@ -3,7 +3,12 @@
 // its own code once, kept here).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <utility>
+#include <vector>
+
 #include "engine/render/doom_rules.h"
+#include "engine/util/rng.h"
 
 namespace p3d::render::doom {
 namespace {
@@ -42,6 +47,51 @@ TEST(DoomRules, OtherWidthsAreCrispyDoomsHires) {
   EXPECT_EQ(wall_precision(t, 4096).height_bits, 10);
   EXPECT_EQ(wall_precision(t, 40000).height_bits, 9);
   EXPECT_EQ(wall_precision(tables(320, 200), 40000).max_scale, 64 * kFracUnit);  // vanilla's
+}
+
+// The light's division by the width as a multiply: the same quotient as the division
+// for every divisor tried, at the numerators where it could slip (each side of a
+// multiple of the divisor, the largest) and at random ones.
+TEST(DoomRules, ExactQuotientIsTheDivision) {
+  Rng rng(5);
+  constexpr int kBits = 41;
+  const uint64_t top = (uint64_t(1) << kBits) - 1;
+  std::vector<uint64_t> divisors = {1, 2, 3, 7, 320 << kLightScaleShift, 640 << kLightScaleShift, 7680 << kLightScaleShift};
+  for (int i = 0; i < 200; ++i) divisors.push_back(uint64_t(1 + rng.below(16384)) << kLightScaleShift);
+  for (int i = 0; i < 50; ++i) divisors.push_back(1 + rng.below(uint64_t(1) << 40));
+  for (const uint64_t d : divisors) {
+    uint64_t magic;
+    int shift;
+    magic_for(d, kBits, magic, shift);
+    std::vector<uint64_t> numerators = {0, 1, top, top - 1, d - 1, d, d + 1};
+    for (int i = 0; i < 200; ++i) {
+      const uint64_t n = rng.below(top + 1);
+      const uint64_t multiple = n / d * d;
+      numerators.insert(numerators.end(), {n, multiple, multiple - 1, multiple + d - 1});
+    }
+    for (const uint64_t n : numerators) {
+      if (n > top) continue;
+      ASSERT_EQ(exact_quotient(n, magic, shift), n / d) << n << " / " << d;
+    }
+  }
+}
+
+// wall_map as Doom's: scale * 320 / width (vanilla's windows: the scale itself) >> 12,
+// at most 47, every scale a light index changes at.
+TEST(DoomRules, WallLightIsDoomsAtAnyWidth) {
+  for (const auto& [width, screen] : {std::pair{320, 0}, {640, 0}, {1920, 0}, {1366, 0}, {256, 320}, {96, 320}}) {
+    const Tables& t = tables(width, width * 5 / 8, screen);
+    for (int light = 0; light < 256; light += 37)
+      for (uint32_t index = 0; index <= kMaxLightScale + 2; ++index)
+        for (const int64_t nudge : {-1, 0, 1}) {
+          const int64_t per_index = t.crispy ? int64_t(t.width) << kLightScaleShift : int64_t(kDoomWidth) << kLightScaleShift;
+          const int64_t scale = std::clamp<int64_t>((int64_t(index) * per_index + kDoomWidth - 1) / kDoomWidth + nudge, 0, INT32_MAX);
+          const int64_t scaled = t.crispy ? scale * kDoomWidth / t.width : scale;
+          const int drop = t.scale_light_drop[std::min<int64_t>(scaled >> kLightScaleShift, kMaxLightScale - 1)];
+          const int expected = std::clamp(start_map(light, 0, 0) - drop, 0, kColormaps - 1);
+          ASSERT_EQ(wall_map(t, start_map(light, 0, 0), Fixed(scale)), expected) << width << " columns, scale " << scale;
+        }
+  }
 }
 
 }  // namespace
