@@ -111,7 +111,12 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
   indexed_ = !level.light_indices.empty();
   if (indexed_) {
     index_pitch_ = size_t(std::max(0, x1_ - x0_));
-    indices_.resize(index_pitch_ * size_t(view.height));
+    if (frame.indexed() && x0_ == 0 && x1_ == view.width) {
+      index_base_ = frame.indices.data();
+    } else {
+      indices_.resize(index_pitch_ * size_t(view.height));
+      index_base_ = indices_.data();
+    }
   }
   choose_fill_colors();
   if (row_dy_.size() != size_t(view.height) || (!row_dy_.empty() && row_dy_[0] != 0.5 - view.half_h)) {
@@ -224,6 +229,7 @@ void Canvas::finish_strip() {
 void Canvas::resolve(int y0, int y1) {
   if (!indexed_) return;
   if (frame_->indexed()) {
+    if (index_base_ == frame_->indices.data()) return;  // drawn there
     for (int y = y0; y < y1; ++y)
       std::memcpy(frame_->indices.data() + size_t(y) * size_t(view_->width) + size_t(x0_), index_pixel(x0_, y), index_pitch_);
     return;

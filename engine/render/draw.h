@@ -322,7 +322,7 @@ class Canvas {
   int fixed_or(int map) const { return state_->fixed_light_map < 0 ? map : fixed_or(*level_, *state_, map); }
   static int fixed_or(const level::Level& level, const level::State& state, int map);
   uint32_t* pixel(int x, int y) { return frame_->pixels.data() + size_t(y) * view_->width + x; }
-  uint8_t* index_pixel(int x, int y) { return indices_.data() + size_t(y) * index_pitch_ + size_t(x - x0_); }
+  uint8_t* index_pixel(int x, int y) { return index_base_ + size_t(y) * index_pitch_ + size_t(x - x0_); }
   void count(int x, int y0, int y1) {
     pixels_ += static_cast<uint64_t>(y1 - y0);
     if (writes_) count_writes(x, y0, y1);
@@ -374,9 +374,11 @@ class Canvas {
   // columns, rows index_pitch_ apart, and resolve() copies them to the frame or looks
   // the palette up once per pixel: a strip of 160 columns of 400 rows is 64 KB, where
   // the 32-bit frame's columns are 2,560 bytes apart. (RGBA levels, and light maps
-  // with shades outside the palette, write the frame.)
+  // with shades outside the palette, write the frame.) A canvas of the whole frame
+  // whose frame keeps its indices draws them there: nothing to copy.
   bool indexed_ = false;
   std::vector<uint8_t> indices_;
+  uint8_t* index_base_ = nullptr;  // indices_, or the frame's own
   size_t index_pitch_ = 0;
   // What fills show: on paletted levels the palette's nearest colours, so they have indices.
   uint32_t fill_colors_[2] = {};
