@@ -41,9 +41,9 @@ namespace {
 // Strips per frame: one per thread. Every strip walks the tree's first levels, splits
 // the planes' rows and projects the things near it, so fewer is cheaper: at the starts
 // of five Freedoom maps, one strip on one thread takes 0.94 of four strips' time, and
-// two strips balanced by time on two threads 0.93 of four handed out in turn. Each strip is a whole
-// number of 64-byte cache lines of pixels wide (16 columns): where rows start on a
-// line, two threads never write the same one.
+// two strips balanced by time on two threads 0.93 of four handed out in turn. Each
+// strip is a whole number of 64-byte cache lines of pixels wide (16 columns): where
+// rows start on a line, two threads never write the same one.
 constexpr int kStripAlign = 16;
 constexpr int kResolveBands = 8;  // bands of rows the final colour pass is split into
 
@@ -106,7 +106,8 @@ class BspFrontToBack final : public Renderer {
           s.order = one_walk ? &probe->order : nullptr;
           walk(level, view, camera, s);
           // A frame that keeps Doom's 8-bit screen: each strip copies its own indices, from
-          // its own cache, with no second dispatch (5% of a frame on two threads).
+          // its own cache, with no second dispatch (5% of a frame on two threads); a
+          // strip of the whole frame drew them there.
           if (frame.indexed() && !s.canvas.waiting()) s.canvas.resolve(0, view.height);
         },
         seconds_);
