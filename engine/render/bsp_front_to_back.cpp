@@ -105,10 +105,6 @@ class BspFrontToBack final : public Renderer {
                          i > 0 ? &strips_[size_t(i) - 1].canvas : nullptr);
           s.order = one_walk ? &probe->order : nullptr;
           walk(level, view, camera, s);
-          // A frame that keeps Doom's 8-bit screen: each strip copies its own indices, from
-          // its own cache, with no second dispatch (5% of a frame on two threads); a
-          // strip of the whole frame drew them there.
-          if (frame.indexed() && !s.canvas.waiting()) s.canvas.resolve(0, view.height);
         },
         seconds_);
     // Under Doom's rules a flat's span may begin in a strip to the left: the strips draw
@@ -120,7 +116,6 @@ class BspFrontToBack final : public Renderer {
             Strip& s = strips_[size_t(i)];
             s.canvas.finish_strip();
             s.canvas.count_into(s.stats);
-            if (frame.indexed()) s.canvas.resolve(0, view.height);
           },
           seconds_);
     balance_edges(edges_, seconds_, kStripAlign);

@@ -101,6 +101,10 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
   writes_ = probe && probe->want_writes ? &probe->writes : nullptr;
   x0_ = std::max(0, x0);
   x1_ = std::min(view.width, x1);
+  if (x0_ == 0 && x1_ == view.width) {  // a canvas of the whole frame prepares it (strips: the renderer)
+    prepare_probe(view, probe);
+    prepare_frame(level, frame);
+  }
   columns_.resize(view.width);  // indexed by x; only the owned columns are used
   std::fill(columns_.begin() + x0_, columns_.begin() + x1_, Column{0, view.height, camera_sector});
   if (steps_.size() != size_t(view.width)) steps_.resize(view.width);
@@ -110,10 +114,11 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
   fuzz_ready_ = level.generation != 0 && fuzz_index_for_ == level.generation;
   indexed_ = !level.light_indices.empty();
   if (indexed_) {
-    index_pitch_ = size_t(std::max(0, x1_ - x0_));
-    if (frame.indexed() && x0_ == 0 && x1_ == view.width) {
-      index_base_ = frame.indices.data();
+    if (frame.indexed()) {  // the frame's own rows
+      index_pitch_ = size_t(view.width);
+      index_base_ = frame.indices.data() + x0_;
     } else {
+      index_pitch_ = size_t(std::max(0, x1_ - x0_));
       indices_.resize(index_pitch_ * size_t(view.height));
       index_base_ = indices_.data();
     }
@@ -144,10 +149,6 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
   painted_count_ = 0;
   tabulate_sky_rows();
   light_sky();
-  if (x0_ == 0 && x1_ == view.width) {
-    prepare_probe(view, probe);
-    prepare_frame(level, frame);
-  }
   pixels_ = closed_count_ = masked_pixels_ = sprites_drawn_ = sprite_pixels_ = 0;
 }
 
@@ -227,18 +228,13 @@ void Canvas::finish_strip() {
 }
 
 void Canvas::resolve(int y0, int y1) {
-  if (!indexed_) return;
-  if (frame_->indexed()) {
-    if (index_base_ == frame_->indices.data()) return;  // drawn there
-    for (int y = y0; y < y1; ++y)
-      std::memcpy(frame_->indices.data() + size_t(y) * size_t(view_->width) + size_t(x0_), index_pixel(x0_, y), index_pitch_);
-    return;
-  }
+  if (!indexed_ || frame_->indexed()) return;  // a frame that keeps its indices was drawn in
   const uint32_t* palette = level_->palette.data();
+  const int width = x1_ - x0_;
   for (int y = y0; y < y1; ++y) {
     const uint8_t* in = index_pixel(x0_, y);
     uint32_t* out = pixel(x0_, y);
-    for (size_t i = 0; i < index_pitch_; ++i) out[i] = palette[in[i]];
+    for (int i = 0; i < width; ++i) out[i] = palette[in[i]];
   }
 }
 
