@@ -284,8 +284,11 @@ class Canvas {
   void near_plane(int x, int y0, int y1, int sector, bool ceiling);
   void plane_span(int x, int y0, int y1, int sector, bool ceiling);
   // plane_span for a Doom side's near sector: its plane found once a frame, not per column.
+  // Inline for a plane already found (two calls a wall column).
   static constexpr int kPlaneNotFound = -1, kSkyPlane = -2;
   void doom_plane_span(DoomSide& ds, int x, int y0, int y1, bool ceiling);
+  void doom_plane_span_otherwise(DoomSide& ds, int x, int y0, int y1, bool ceiling);  // the sky, the painter, the first
+  int find_doom_plane(const DoomSide& ds, bool ceiling);
   // Row y of a plane: texture coordinates 16.16 at column 0 and per column, light map.
   struct PlaneRow {
     uint64_t u0, du, v0, dv;  // texture v runs south: north is up
@@ -424,6 +427,14 @@ class Canvas {
   bool dry_ = false;       // clip_wall: compute rows, write nothing
   bool painting_ = false;  // paint_wall, paint_background: draw planes at once
 };
+
+inline void Canvas::doom_plane_span(DoomSide& ds, int x, int y0, int y1, bool ceiling) {
+  if (y0 >= y1 || dry_) return;
+  const int plane = ds.planes[ceiling];
+  if (plane < 0 || painting_) return doom_plane_span_otherwise(ds, x, y0, y1, ceiling);
+  count(x, y0, y1);
+  planes_.add_to(plane, x, y0, y1);
+}
 
 template <typename Draw>
 bool Canvas::record_step(int x, const WallHit& hit, int near, Draw&& draw) {

@@ -69,7 +69,7 @@ int PlaneSpans::head(const PlaneKey& key) {
   return cached_ = table_[slot] = make_plane(key, true);
 }
 
-void PlaneSpans::add_to(int plane, int x, int y0, int y1) {
+void PlaneSpans::add_to_any_column(int plane, int x, int y0, int y1) {
   int i = plane;
   for (;;) {
     Plane& p = planes_[size_t(i)];

@@ -36,7 +36,14 @@ class PlaneSpans {
   // The same in two steps, for a caller that files many runs of one key: the key's
   // plane (valid until begin), then runs into it.
   int plane_of(const PlaneKey& key) { return head(key); }
-  void add_to(int plane, int x, int y0, int y1);
+  // Inline where the plane's last run is in the column before, the common case (a wall's
+  // columns file their planes left to right).
+  void add_to(int plane, int x, int y0, int y1) {
+    Plane& p = planes_[size_t(plane)];
+    if (x != p.x_max + 1 || x <= p.x_min) return add_to_any_column(plane, x, y0, y1);
+    p.x_max = x;
+    run(p, x) = {y0, y1};
+  }
 
   // Calls span(key, y, xa, xb) for each maximal run [xa, xb) of row y within one plane:
   // every filed pixel exactly once.
@@ -56,6 +63,7 @@ class PlaneSpans {
   };
 
   int head(const PlaneKey& key);  // the first plane of the key, made when there is none
+  void add_to_any_column(int plane, int x, int y0, int y1);  // add_to's every other case
   int make_plane(const PlaneKey& key, bool is_head);
   void cover(Plane& p, int x);  // widens [x_min, x_max] to x, emptying the columns between
   Run& run(const Plane& p, int x) { return runs_[p.runs + size_t(x - x0_)]; }
