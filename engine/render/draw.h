@@ -284,10 +284,11 @@ class Canvas {
   void near_plane(int x, int y0, int y1, int sector, bool ceiling);
   void plane_span(int x, int y0, int y1, int sector, bool ceiling);
   // plane_span for a Doom side's near sector: its plane found once a frame, not per column.
-  // Inline for a plane already found (two calls a wall column).
+  // Inline for a plane already found (two calls a wall column); the plane's first run,
+  // the sky and the painter go out of line.
   static constexpr int kPlaneNotFound = -1, kSkyPlane = -2;
   void doom_plane_span(DoomSide& ds, int x, int y0, int y1, bool ceiling);
-  void doom_plane_span_otherwise(DoomSide& ds, int x, int y0, int y1, bool ceiling);  // the sky, the painter, the first
+  void doom_plane_span_otherwise(DoomSide& ds, int x, int y0, int y1, bool ceiling);
   int find_doom_plane(const DoomSide& ds, bool ceiling);
   // Row y of a plane: texture coordinates 16.16 at column 0 and per column, light map.
   struct PlaneRow {

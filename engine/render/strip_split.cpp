@@ -19,7 +19,8 @@ int aligned_edge(double x, size_t k, size_t count, int previous, int width, int 
 std::vector<int> even_edges(int width, int count, int align) {
   const size_t n = size_t(std::max(1, std::min(count, width / align)));
   std::vector<int> edges(n + 1, 0);
-  for (size_t k = 1; k < n; ++k) edges[k] = aligned_edge(double(width) * double(k) / double(n), k, n, edges[k - 1], width, align);
+  for (size_t k = 1; k < n; ++k)
+    edges[k] = aligned_edge(double(width) * double(k) / double(n), k, n, edges[k - 1], width, align);
   edges[n] = width;
   return edges;
 }
