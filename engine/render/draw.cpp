@@ -643,16 +643,14 @@ void Canvas::plane_span(int x, int y0, int y1, int sector, bool ceiling) {
     planes_.add(key, x, y0, y1);
 }
 
-int Canvas::find_doom_plane(const DoomSide& ds, bool ceiling) {
-  const level::SectorState& s = state_->sectors[ds.near];
-  const int texture = state_->shown(ceiling ? s.ceiling_texture : s.floor_texture);
-  return texture == kSky ? kSkyPlane : planes_.plane_of({ceiling ? s.ceiling : s.floor, texture, s.light});
-}
-
 void Canvas::doom_plane_span_otherwise(DoomSide& ds, int x, int y0, int y1, bool ceiling) {
   if (painting_) return plane_span(x, y0, y1, ds.near, ceiling);
   int& plane = ds.planes[ceiling];
-  if (plane == kPlaneNotFound) plane = find_doom_plane(ds, ceiling);
+  if (plane == kPlaneNotFound) {
+    const level::SectorState& s = state_->sectors[ds.near];
+    const int texture = state_->shown(ceiling ? s.ceiling_texture : s.floor_texture);
+    plane = texture == kSky ? kSkyPlane : planes_.plane_of({ceiling ? s.ceiling : s.floor, texture, s.light});
+  }
   if (plane == kSkyPlane) return sky_span(x, y0, y1);
   count(x, y0, y1);
   planes_.add_to(plane, x, y0, y1);

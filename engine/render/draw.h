@@ -289,7 +289,6 @@ class Canvas {
   static constexpr int kPlaneNotFound = -1, kSkyPlane = -2;
   void doom_plane_span(DoomSide& ds, int x, int y0, int y1, bool ceiling);
   void doom_plane_span_otherwise(DoomSide& ds, int x, int y0, int y1, bool ceiling);
-  int find_doom_plane(const DoomSide& ds, bool ceiling);
   // Row y of a plane: texture coordinates 16.16 at column 0 and per column, light map.
   struct PlaneRow {
     uint64_t u0, du, v0, dv;  // texture v runs south: north is up

@@ -65,7 +65,8 @@ inline void wrapped_column(Pixel* out, size_t pitch, int count, int64_t v, int64
     // Unrolled, a wall being most of a frame: each of four rows from v32 by its own
     // offset (not a chain of additions) and the loop ended by the pointer, 6 instructions
     // a pixel (7.25 before).
-    uint32_t step2 = 2 * step32, step3 = 3 * step32, step4 = 4 * step32;
+    uint32_t step2 = 2 * step32, step3 = 3 * step32;
+    const uint32_t step4 = 4 * step32;
     opaque(step2), opaque(step3);  // else the compiler chains the rows again: v + 2s as (v + s) + s
     const size_t pitch2 = 2 * pitch, pitch3 = 3 * pitch, pitch4 = 4 * pitch;
     Pixel* const end4 = out + size_t(count / 4) * pitch4;
