@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "engine/render/column_major.h"
 #include "engine/render/texel_loops.h"
 #include "engine/render/translation.h"
 
@@ -122,7 +123,13 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
       indices_.resize(index_pitch_ * size_t(view.height));
       index_base_ = indices_.data();
     }
+    column_stride_ = (size_t(view.height) + 63) / 64 * 64;  // each column on its own cache lines
+    column_scratch_.resize(column_stride_ * size_t(std::max(0, x1_ - x0_)));
+    column_base_ = column_scratch_.data();
+    column_pitch_ = 1;
+    vector_columns_ = vector_columns();
   }
+  columns_pending_ = indexed_;
   choose_fill_colors();
   if (row_dy_.size() != size_t(view.height) || (!row_dy_.empty() && row_dy_[0] != 0.5 - view.half_h)) {
     row_dy_.resize(view.height);
@@ -203,6 +210,7 @@ void Canvas::finish() {
     Column& c = columns_[x];
     planes_to_horizon(x, c.top, c.bottom, c.sector);
   }
+  end_columns();
   if (doom_ && !doom_->crispy) {  // vanilla's spans step from their first column: in a strip, perhaps another strip's
     doom_gather_spans();
     if (x0_ > 0 || x1_ < view_->width) {
@@ -225,6 +233,25 @@ void Canvas::finish_strip() {
   doom_waiting_ = false;
   doom_draw_spans();
   draw_layers();
+}
+
+void Canvas::end_columns() {
+  if (!columns_pending_) return;
+  columns_pending_ = false;
+  columns_to_rows(column_scratch_.data(), column_stride_, index_base_, index_pitch_, x1_ - x0_, view_->height);
+  column_base_ = index_base_, column_stride_ = 1, column_pitch_ = index_pitch_;
+}
+
+void Canvas::indexed_wall_column(int x, int y0, int count, int64_t v, int64_t step, int64_t period,
+                                 const uint8_t* source, const uint8_t* light) {
+  // Below 16 rows the vector loop's set-up costs more than it saves.
+  constexpr int kVectorRows = 16;
+  const int64_t rows = period >> 16;
+  if (vector_columns_ && columns_pending_ && count >= kVectorRows && std::has_single_bit(uint64_t(rows)) && rows <= 256 &&
+      (period & 0xFFFF) == 0)
+    return wall_column_vbmi(column_pixel(x, y0), count, uint32_t(v), uint32_t(step), std::countr_zero(uint64_t(rows)),
+                            source, light);
+  wrapped_column(column_pixel(x, y0), column_pitch_, count, v, step, period, IndexedColumn{source, light});
 }
 
 void Canvas::resolve(int y0, int y1) {
@@ -324,8 +351,8 @@ void Canvas::fill_span(int x, int y0, int y1, Fill fill) {
   count(x, y0, y1);
   if (painting_planes_) mark_painted(x, y0, y1, kNoPlane);
   if (indexed_) {
-    uint8_t* out = index_pixel(x, y0);
-    for (int y = y0; y < y1; ++y, out += index_pitch_) *out = fill_indices_[size_t(fill)];
+    uint8_t* out = column_pixel(x, y0);
+    for (int y = y0; y < y1; ++y, out += column_pitch_) *out = fill_indices_[size_t(fill)];
     return;
   }
   uint32_t* out = pixel(x, y0);
@@ -372,8 +399,8 @@ void Canvas::wall_span(int x, int y0, int y1, const Part& part, const WallHit& h
   const int64_t v = reduce(round_to_int(v0 * kFix) + int64_t(y0) * step);
   const int map = fixed_or(wall_light_map(light_start(part.light, w.contrast), hit.depth));
   if (indexed_)
-    return wrapped_column(index_pixel(x, y0), index_pitch_, y1 - y0, v, step, period,
-                          IndexedColumn{tex.index_column(u), level_->light_indices.data() + size_t(map) * limits::kPaletteSize});
+    return indexed_wall_column(x, y0, y1 - y0, v, step, period, tex.index_column(u),
+                               level_->light_indices.data() + size_t(map) * limits::kPaletteSize);
   uint32_t* out = pixel(x, y0);
   if (level_->paletted())
     wrapped_column(out, view_->width, y1 - y0, v, step, period,
@@ -429,7 +456,7 @@ bool Canvas::layer_column(int x, int top, int bottom, const level::Texture& tex,
       draw_fuzz(x, y0, y1);
     } else if (indexed_) {
       const uint8_t* lit = level_->light_indices.data() + map;
-      paint(index_pixel(x, y0), index_pitch_, y0, y1, [&](size_t texel) { return lit[tex.indices[texel]]; });
+      paint(column_pixel(x, y0), column_pitch_, y0, y1, [&](size_t texel) { return lit[tex.indices[texel]]; });
     } else {
       paint(pixel(x, y0), size_t(view_->width), y0, y1, [&](size_t texel) { return this->lit(tex, texel, light_map); });
     }
@@ -579,6 +606,7 @@ uint32_t Canvas::fuzz_colour(uint32_t colour) {
 }
 
 void Canvas::draw_layers() {
+  end_columns();
   if (painting_planes_) draw_painted_planes();
   if (doom_) return doom_draw_layers();
   // Farthest first; equal depths by thing index, a total order whatever the order things were added in.
@@ -812,8 +840,8 @@ void Canvas::sky_span(int x, int y0, int y1) {
   const int* rows = sky_rows_.data();
   if (indexed_) {
     const uint8_t* lit = lit_sky_.data() + size_t(tex.wrap_u(u)) * size_t(tex.height);
-    uint8_t* out = index_pixel(x, y0);
-    for (int y = y0; y < y1; ++y, out += index_pitch_) *out = lit[rows[y]];
+    uint8_t* out = column_pixel(x, y0);
+    for (int y = y0; y < y1; ++y, out += column_pitch_) *out = lit[rows[y]];
     return;
   }
   uint32_t* out = pixel(x, y0);

@@ -48,7 +48,7 @@ class Canvas {
   // For a renderer that draws over its own pixels (the painter): write the frame's
   // colours at once rather than palette indices resolved at the end (see indexed_).
   void draw_directly() {
-    indexed_ = false;
+    indexed_ = columns_pending_ = false;
     frame_->indices.clear();
     if (doom_) start_painted_planes();
   }
@@ -326,6 +326,18 @@ class Canvas {
   static int fixed_or(const level::Level& level, const level::State& state, int map);
   uint32_t* pixel(int x, int y) { return frame_->pixels.data() + size_t(y) * view_->width + x; }
   uint8_t* index_pixel(int x, int y) { return index_base_ + size_t(y) * index_pitch_ + size_t(x - x0_); }
+  // A pixel of a column (a wall, the sky, a fill, a layer), rows column_pitch_ apart: in
+  // column_scratch_ until end_columns(), then the one index_pixel gives.
+  uint8_t* column_pixel(int x, int y) {
+    return column_base_ + size_t(x - x0_) * column_stride_ + size_t(y) * column_pitch_;
+  }
+  // Turns the columns drawn so far into the rows of the indices, before the first row is
+  // drawn (finish); a no-op once done, and on canvases that draw no indices.
+  void end_columns();
+  // count rows of a wall column in palette indices from row y0: texel row (v >> 16) mod
+  // period of the column `source` (period >> 16 rows, v and step reduced) under `light`.
+  void indexed_wall_column(int x, int y0, int count, int64_t v, int64_t step, int64_t period, const uint8_t* source,
+                           const uint8_t* light);
   void count(int x, int y0, int y1) {
     pixels_ += static_cast<uint64_t>(y1 - y0);
     if (writes_) count_writes(x, y0, y1);
@@ -384,6 +396,15 @@ class Canvas {
   std::vector<uint8_t> indices_;
   uint8_t* index_base_ = nullptr;  // at column x0_ of row 0: in the frame, or indices_
   size_t index_pitch_ = 0;
+  // The walk draws its columns (walls, skies, fills) column-major: a column's rows are
+  // adjacent bytes, which vector_columns() processors draw 64 at a time, and which a
+  // column's stores share cache lines by, where the frame's rows are hundreds of bytes
+  // apart (column_major.h). end_columns() turns them into the rows.
+  std::vector<uint8_t> column_scratch_;
+  uint8_t* column_base_ = nullptr;           // column x0_'s row 0
+  size_t column_stride_ = 0, column_pitch_ = 0;  // from one column to the next, one row to the next
+  bool columns_pending_ = false;             // columns in column_scratch_, not yet in the rows
+  bool vector_columns_ = false;              // wall columns by wall_column_vbmi
   // What fills show: on paletted levels the palette's nearest colours, so they have indices.
   uint32_t fill_colors_[2] = {};
   uint8_t fill_indices_[2] = {};

@@ -341,9 +341,7 @@ inline void Canvas::crispy_wall_rows(int x, int y0, int y1, const level::Texture
   const int64_t v = pow2 ? int64_t(uint32_t(v0)) : level::floor_mod(int64_t(v0), period);
   const int64_t step = pow2 ? int64_t(iscale) : int64_t(iscale) % period;
   const size_t light = size_t(map) * limits::kPaletteSize;
-  if (indexed_)
-    return wrapped_column(index_pixel(x, y0), index_pitch_, y1 - y0, v, step, period,
-                          IndexedColumn{source, level_->light_indices.data() + light});
+  if (indexed_) return indexed_wall_column(x, y0, y1 - y0, v, step, period, source, level_->light_indices.data() + light);
   wrapped_column(pixel(x, y0), size_t(view_->width), y1 - y0, v, step, period,
                  PalettedColumn{source, level_->light_maps.data() + light});
 }
@@ -364,16 +362,14 @@ void Canvas::doom_wall_rows(int x, int y0, int y1, int texture, Fixed mid, int32
   const size_t light = size_t(map) * limits::kPaletteSize;
   if ((h & (h - 1)) == 0) {  // rows & (h - 1), as rows & 127 at most: Doom's 16.16 v wraps alike
     const int64_t period = int64_t(std::min(h, 128)) << kFracBits;
-    if (indexed_)
-      return wrapped_column(index_pixel(x, y0), index_pitch_, y1 - y0, v, iscale, period,
-                            IndexedColumn{source, level_->light_indices.data() + light});
+    if (indexed_) return indexed_wall_column(x, y0, y1 - y0, v, iscale, period, source, level_->light_indices.data() + light);
     return wrapped_column(pixel(x, y0), size_t(view_->width), y1 - y0, v, iscale, period,
                           PalettedColumn{source, level_->light_maps.data() + light});
   }
   auto draw = [&](auto* out, size_t pitch, const auto* lit) {
     for (int y = y0; y < y1; ++y, out += pitch, v += iscale) *out = lit[source[doom_row(v, h)]];
   };
-  if (indexed_) return draw(index_pixel(x, y0), index_pitch_, level_->light_indices.data() + light);
+  if (indexed_) return draw(column_pixel(x, y0), column_pitch_, level_->light_indices.data() + light);
   draw(pixel(x, y0), size_t(view_->width), level_->light_maps.data() + light);
 }
 
@@ -566,8 +562,8 @@ void Canvas::doom_sky_span(int x, int y0, int y1) {
                                            : tex.indices.data() + size_t(u) * size_t(tex.height);
   if (indexed_) {
     const uint8_t* lit = level_->light_indices.data();  // full bright
-    uint8_t* out = index_pixel(x, y0);
-    for (int y = y0; y < y1; ++y, out += index_pitch_) *out = lit[indices[rows[y]]];
+    uint8_t* out = column_pixel(x, y0);
+    for (int y = y0; y < y1; ++y, out += column_pitch_) *out = lit[indices[rows[y]]];
     return;
   }
   const uint32_t* light_map = level_->light_maps.data();
@@ -667,7 +663,7 @@ bool Canvas::doom_masked_column(int x, int top, int bottom, const level::Texture
     // Most posts' rows stay within the post: no row to clamp, the plain column loop.
     const uint64_t last = uint64_t(v & ((128u << kFracBits) - 1)) + uint64_t(iscale) * uint64_t(y1 - 1 - y0);
     if (indexed_ && (last >> kFracBits) < uint64_t(length))
-      return wrapped_column(index_pixel(x, y0), index_pitch_, y1 - y0, int64_t(v), int64_t(iscale),
+      return wrapped_column(column_pixel(x, y0), column_pitch_, y1 - y0, int64_t(v), int64_t(iscale),
                             int64_t(128) << kFracBits,
                             IndexedColumn{tex.indices.data() + column + size_t(first), level_->light_indices.data() + map});
     auto row = [&](uint32_t vv) {  // within the post; past its end, its last row (Doom reads the pad byte)
@@ -676,8 +672,8 @@ bool Canvas::doom_masked_column(int x, int top, int bottom, const level::Texture
     };
     if (indexed_) {
       const uint8_t* lit = level_->light_indices.data() + map;
-      uint8_t* out = index_pixel(x, y0);
-      for (int y = y0; y < y1; ++y, out += index_pitch_, v += iscale) *out = lit[tex.indices[row(v)]];
+      uint8_t* out = column_pixel(x, y0);
+      for (int y = y0; y < y1; ++y, out += column_pitch_, v += iscale) *out = lit[tex.indices[row(v)]];
     } else {
       uint32_t* out = pixel(x, y0);
       for (int y = y0; y < y1; ++y, out += view_->width, v += iscale) *out = lit(tex, row(v), light_map);

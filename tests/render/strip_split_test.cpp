@@ -22,7 +22,9 @@ void expect_well_formed(const std::vector<int>& edges, int width, const std::str
   EXPECT_EQ(edges.back(), width) << what;
   for (size_t k = 1; k < edges.size(); ++k) {
     EXPECT_GE(edges[k] - edges[k - 1], std::min(width, kAlign)) << what << " strip " << k - 1;
-    if (k + 1 < edges.size()) EXPECT_EQ(edges[k] % kAlign, 0) << what << " edge " << k;
+    if (k + 1 < edges.size()) {
+      EXPECT_EQ(edges[k] % kAlign, 0) << what << " edge " << k;
+    }
   }
 }
 

@@ -1,0 +1,66 @@
+#include "engine/render/column_major.h"
+
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
+namespace p3d::render {
+
+namespace {
+
+#ifdef __SSE2__
+// Sixteen columns' sixteen bytes into sixteen rows: interleaving the bytes of columns
+// i and i + 8, four times over, transposes a 16 x 16 block.
+inline void block_to_rows(const uint8_t* columns, size_t column_stride, uint8_t* rows, size_t row_pitch) {
+  __m128i r[16], t[16];
+#pragma GCC unroll 16
+  for (int i = 0; i < 16; ++i) r[i] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(columns + size_t(i) * column_stride));
+#pragma GCC unroll 4
+  for (int pass = 0; pass < 4; ++pass) {
+#pragma GCC unroll 8
+    for (int i = 0; i < 8; ++i) t[2 * i] = _mm_unpacklo_epi8(r[i], r[i + 8]), t[2 * i + 1] = _mm_unpackhi_epi8(r[i], r[i + 8]);
+#pragma GCC unroll 16
+    for (int i = 0; i < 16; ++i) r[i] = t[i];
+  }
+#pragma GCC unroll 16
+  for (int i = 0; i < 16; ++i) _mm_storeu_si128(reinterpret_cast<__m128i*>(rows + size_t(i) * row_pitch), r[i]);
+}
+#endif
+
+void columns_to_rows_bytewise(const uint8_t* columns, size_t column_stride, uint8_t* rows, size_t row_pitch, int x0,
+                              int x1, int y0, int y1) {
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) rows[size_t(y) * row_pitch + size_t(x)] = columns[size_t(x) * column_stride + size_t(y)];
+}
+
+}  // namespace
+
+void columns_to_rows(const uint8_t* columns, size_t column_stride, uint8_t* rows, size_t row_pitch, int width,
+                     int height) {
+  int blocked_width = 0, blocked_height = 0;
+#ifdef __SSE2__
+  blocked_width = width / 16 * 16, blocked_height = height / 16 * 16;
+  for (int y = 0; y < blocked_height; y += 16)
+    for (int x = 0; x < blocked_width; x += 16)
+      block_to_rows(columns + size_t(x) * column_stride + size_t(y), column_stride, rows + size_t(y) * row_pitch + size_t(x),
+                    row_pitch);
+#endif
+  columns_to_rows_bytewise(columns, column_stride, rows, row_pitch, blocked_width, width, 0, height);
+  columns_to_rows_bytewise(columns, column_stride, rows, row_pitch, 0, blocked_width, blocked_height, height);
+}
+
+bool vector_columns() {
+#ifdef P3D_VBMI_COLUMNS
+  static const bool vbmi = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+                           __builtin_cpu_supports("avx512vbmi");
+  return vbmi;
+#else
+  return false;
+#endif
+}
+
+#ifndef P3D_VBMI_COLUMNS
+void wall_column_vbmi(uint8_t*, int, uint32_t, uint32_t, int, const uint8_t*, const uint8_t*) {}  // never called
+#endif
+
+}  // namespace p3d::render

@@ -1,0 +1,27 @@
+// A canvas's columns kept column-major while its walls, skies and fills are drawn:
+// a wall column's pixels are then adjacent bytes rather than a row apart, so that
+// processors with AVX-512 VBMI draw 64 of them with one table look-up (a texture
+// column of up to 128 rows, already under its light map, fits in two registers);
+// the columns are turned into the frame's rows once, before the flats (rows) are drawn.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace p3d::render {
+
+// Copies `width` columns of `height` bytes, column c at columns + c * column_stride,
+// into rows of the frame: row y at rows + y * row_pitch.
+void columns_to_rows(const uint8_t* columns, size_t column_stride, uint8_t* rows, size_t row_pitch, int width,
+                     int height);
+
+// Whether this processor draws a wall column with AVX-512 VBMI (wall_column_vbmi).
+bool vector_columns();
+
+// count adjacent bytes of a wall column: out[i] = light[source[row]], row the bits
+// [16, 16 + rows_log2) of v + i * step (modulo 2^32), the column's 2^rows_log2 texels at
+// source (rows_log2 <= 8). Only where vector_columns() is true.
+void wall_column_vbmi(uint8_t* out, int count, uint32_t v, uint32_t step, int rows_log2, const uint8_t* source,
+                      const uint8_t* light);
+
+}  // namespace p3d::render

@@ -1,0 +1,62 @@
+// The canvas's column-major columns: turned into rows exactly, and the vector wall
+// column (AVX-512 VBMI) drawing the scalar loop's very bytes.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/render/column_major.h"
+#include "engine/render/texel_loops.h"
+#include "engine/util/rng.h"
+
+namespace p3d::render {
+namespace {
+
+TEST(ColumnMajor, RowsAreTheColumnsTurned) {
+  Rng rng(38);
+  for (int trial = 0; trial < 300; ++trial) {
+    const int width = rng.range(0, 70), height = rng.range(0, 70);
+    const size_t stride = size_t(height + rng.range(0, 20)), pitch = size_t(width + rng.range(0, 20));
+    std::vector<uint8_t> columns(stride * size_t(width));
+    for (uint8_t& b : columns) b = uint8_t(rng.next());
+    std::vector<uint8_t> rows(pitch * size_t(height), 0xA5);
+    columns_to_rows(columns.data(), stride, rows.data(), pitch, width, height);
+    const std::string what = std::to_string(width) + " x " + std::to_string(height);
+    for (int y = 0; y < height; ++y)
+      for (size_t x = 0; x < pitch; ++x) {
+        const uint8_t want = x < size_t(width) ? columns[x * stride + size_t(y)] : 0xA5;  // past the width: untouched
+        ASSERT_EQ(rows[size_t(y) * pitch + x], want) << what << " at " << x << ", " << y;
+      }
+  }
+}
+
+TEST(ColumnMajor, VectorWallColumnDrawsTheScalarLoopsBytes) {
+  if (!vector_columns()) GTEST_SKIP() << "no AVX-512 VBMI on this processor";
+  Rng rng(7);
+  std::vector<uint8_t> light(256);
+  for (uint8_t& b : light) b = uint8_t(rng.next());
+  constexpr int kGuard = 64;
+  for (int rows_log2 = 0; rows_log2 <= 8; ++rows_log2) {
+    const int64_t period = int64_t(1) << (16 + rows_log2);
+    std::vector<uint8_t> source(size_t(1) << rows_log2);  // exactly the column: nothing past it is read
+    for (int trial = 0; trial < 400; ++trial) {
+      for (uint8_t& b : source) b = uint8_t(rng.next());
+      const int count = trial < 200 ? rng.range(1, 300) : 64 * rng.range(1, 4) + rng.range(-1, 1);
+      // Reduced as the canvas reduces them; the vector loop reads only the row's bits.
+      const uint32_t v = uint32_t(rng.below(uint64_t(period))), step = uint32_t(rng.below(uint64_t(period)));
+      std::vector<uint8_t> want(static_cast<size_t>(count)), got(static_cast<size_t>(count + 2 * kGuard), 0x5A);
+      wrapped_column(want.data(), 1, count, v, step, period, IndexedColumn{source.data(), light.data()});
+      wall_column_vbmi(got.data() + kGuard, count, v, step, rows_log2, source.data(), light.data());
+      const std::string what = std::to_string(1 << rows_log2) + " rows, " + std::to_string(count) + " pixels";
+      for (int i = 0; i < count; ++i) ASSERT_EQ(got[size_t(kGuard + i)], want[size_t(i)]) << what << ", pixel " << i;
+      for (int i = 0; i < kGuard; ++i) {
+        ASSERT_EQ(got[size_t(i)], 0x5A) << what << ": wrote before the column";
+        ASSERT_EQ(got[size_t(kGuard + count + i)], 0x5A) << what << ": wrote past the column";
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace p3d::render
