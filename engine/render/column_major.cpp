@@ -40,8 +40,8 @@ void columns_to_rows(const uint8_t* columns, size_t column_stride, uint8_t* rows
   int blocked_width = 0, blocked_height = 0;
 #ifdef __SSE2__
   blocked_width = width / 16 * 16, blocked_height = height / 16 * 16;
-  for (int y = 0; y < blocked_height; y += 16)
-    for (int x = 0; x < blocked_width; x += 16)
+  for (int x = 0; x < blocked_width; x += 16)  // down the columns: their loads in order, the rows' lines in L1
+    for (int y = 0; y < blocked_height; y += 16)
       block_to_rows(columns + size_t(x) * column_stride + size_t(y), column_stride, rows + size_t(y) * row_pitch + size_t(x),
                     row_pitch);
 #endif

@@ -247,8 +247,8 @@ void Canvas::indexed_wall_column(int x, int y0, int count, int64_t v, int64_t st
   // Below 16 rows the vector loop's set-up costs more than it saves.
   constexpr int kVectorRows = 16;
   const int64_t rows = period >> 16;
-  if (vector_columns_ && columns_pending_ && count >= kVectorRows && std::has_single_bit(uint64_t(rows)) && rows <= 256 &&
-      (period & 0xFFFF) == 0)
+  const bool pow2_rows = (period & 0xFFFF) == 0 && rows > 0 && (rows & (rows - 1)) == 0;
+  if (vector_columns_ && columns_pending_ && count >= kVectorRows && pow2_rows && rows <= 256)
     return wall_column_vbmi(column_pixel(x, y0), count, uint32_t(v), uint32_t(step), std::countr_zero(uint64_t(rows)),
                             source, light);
   wrapped_column(column_pixel(x, y0), column_pitch_, count, v, step, period, IndexedColumn{source, light});
