@@ -60,7 +60,9 @@ bool vector_columns() {
 }
 
 #ifndef P3D_VBMI_COLUMNS
-void wall_column_vbmi(uint8_t*, int, uint32_t, uint32_t, int, const uint8_t*, const uint8_t*) {}  // never called
+// Never called: vector_columns() is false.
+void wall_column_vbmi(uint8_t*, int, uint32_t, uint32_t, int, const uint8_t*, const uint8_t*) {}
+void tabled_column_vbmi(uint8_t*, int, const uint8_t*, const uint8_t*, int, const uint8_t*) {}
 #endif
 
 }  // namespace p3d::render

@@ -23,5 +23,9 @@ bool vector_columns();
 // source (rows_log2 <= 8). Only where vector_columns() is true.
 void wall_column_vbmi(uint8_t* out, int count, uint32_t v, uint32_t step, int rows_log2, const uint8_t* source,
                       const uint8_t* light);
+// count adjacent bytes of a column whose texel rows come from a table (the sky's):
+// out[i] = light[source[rows[i]]], every row below texels (at most 256).
+void tabled_column_vbmi(uint8_t* out, int count, const uint8_t* rows, const uint8_t* source, int texels,
+                        const uint8_t* light);
 
 }  // namespace p3d::render

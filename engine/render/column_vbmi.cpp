@@ -1,4 +1,4 @@
-// wall_column_vbmi: this file alone is built for AVX-512 VBMI (engine/CMakeLists.txt),
+// The column loops built for AVX-512 VBMI: this file alone is (engine/CMakeLists.txt),
 // and the canvas calls it only where vector_columns() says the processor has it.
 #include <immintrin.h>
 
@@ -8,10 +8,10 @@ namespace p3d::render {
 
 namespace {
 
+inline __mmask64 first_bytes(int n) { return n >= 64 ? ~__mmask64(0) : (__mmask64(1) << n) - 1; }
+
 // The first n bytes (at most 64) of a register's load: the bytes past them are not read.
-inline __m512i load_first(const uint8_t* p, int n) {
-  return n >= 64 ? _mm512_loadu_si512(p) : _mm512_maskz_loadu_epi8((__mmask64(1) << n) - 1, p);
-}
+inline __m512i load_first(const uint8_t* p, int n) { return _mm512_maskz_loadu_epi8(first_bytes(n), p); }
 
 // 64 look-ups in a 256-byte table held in four registers: bit 7 picks the pair.
 inline __m512i look_up_256(const __m512i table[4], __m512i index) {
@@ -20,17 +20,28 @@ inline __m512i look_up_256(const __m512i table[4], __m512i index) {
   return _mm512_mask_blend_epi8(_mm512_movepi8_mask(index), low, high);
 }
 
+// A texture column of up to 256 texels already under its light, in registers:
+// texels[r] = light[source[r]].
+struct LitColumn {
+  __m512i texels[4];
+  bool wide;  // more than 128 texels: the look-up reads bit 7 too
+
+  LitColumn(const uint8_t* source, int count, const uint8_t* light) : wide(count > 128) {
+    const __m512i light_table[4] = {_mm512_loadu_si512(light), _mm512_loadu_si512(light + 64),
+                                    _mm512_loadu_si512(light + 128), _mm512_loadu_si512(light + 192)};
+    for (int i = 0; i < (wide ? 4 : 2); ++i) texels[i] = look_up_256(light_table, load_first(source + 64 * i, count - 64 * i));
+  }
+  // 64 pixels from their texel rows (below the count).
+  __m512i operator()(__m512i rows) const {
+    return wide ? look_up_256(texels, rows) : _mm512_permutex2var_epi8(texels[0], rows, texels[1]);  // bit 7 unread
+  }
+};
+
 }  // namespace
 
 void wall_column_vbmi(uint8_t* out, int count, uint32_t v, uint32_t step, int rows_log2, const uint8_t* source,
                       const uint8_t* light) {
-  const int rows = 1 << rows_log2;
-  const __m512i light_table[4] = {_mm512_loadu_si512(light), _mm512_loadu_si512(light + 64),
-                                  _mm512_loadu_si512(light + 128), _mm512_loadu_si512(light + 192)};
-  // The column's texels already under the light: texels[r] = light[source[r]].
-  __m512i texels[4];
-  for (int i = 0; i < (rows_log2 == 8 ? 4 : 2); ++i)
-    texels[i] = look_up_256(light_table, load_first(source + 64 * i, rows - 64 * i));
+  const LitColumn column(source, 1 << rows_log2, light);
   // Pixel i's v in lane i % 16 of register i / 16; its row is the v's byte 2 (bits 16
   // to 23), gathered from the four registers into one.
   const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
@@ -44,21 +55,28 @@ void wall_column_vbmi(uint8_t* out, int count, uint32_t v, uint32_t step, int ro
       90, 94, 98, 102, 106, 110, 114, 118, 122, 126, 2, 6, 10, 14, 18, 22, 26, 30, 34, 38, 42, 46,
       50, 54, 58, 62, 66, 70, 74, 78, 82, 86, 90, 94, 98, 102, 106, 110, 114, 118, 122, 126};
   const __m512i row_bytes = _mm512_load_si512(kByte2);
-  const __m512i row_mask = _mm512_set1_epi8(char(rows - 1));
+  const __m512i row_mask = _mm512_set1_epi8(char((1 << rows_log2) - 1));
   auto pixels = [&] {
     const __m512i low = _mm512_permutex2var_epi8(vs[0], row_bytes, vs[1]);
     const __m512i high = _mm512_permutex2var_epi8(vs[2], row_bytes, vs[3]);
     __m512i row = _mm512_mask_blend_epi8(~__mmask64(0) << 32, low, high);
     if (rows_log2 < 7) row = _mm512_and_si512(row, row_mask);
-    if (rows_log2 == 8) return look_up_256(texels, row);
-    return _mm512_permutex2var_epi8(texels[0], row, texels[1]);  // bit 7 unread: 128 rows
+    return column(row);
   };
   int i = 0;
   for (; i + 64 <= count; i += 64) {
     _mm512_storeu_si512(out + i, pixels());
     for (__m512i& x : vs) x = _mm512_add_epi32(x, step64);
   }
-  if (i < count) _mm512_mask_storeu_epi8(out + i, (__mmask64(1) << (count - i)) - 1, pixels());
+  if (i < count) _mm512_mask_storeu_epi8(out + i, first_bytes(count - i), pixels());
+}
+
+void tabled_column_vbmi(uint8_t* out, int count, const uint8_t* rows, const uint8_t* source, int texels,
+                        const uint8_t* light) {
+  const LitColumn column(source, texels, light);
+  int i = 0;
+  for (; i + 64 <= count; i += 64) _mm512_storeu_si512(out + i, column(_mm512_loadu_si512(rows + i)));
+  if (i < count) _mm512_mask_storeu_epi8(out + i, first_bytes(count - i), column(load_first(rows + i, count - i)));
 }
 
 }  // namespace p3d::render

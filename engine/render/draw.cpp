@@ -803,6 +803,8 @@ void Canvas::tabulate_sky_rows() {
                              level_->doom_column_start[size_t(level_->sky_texture)] >= 0;
       doom_sky_rows_[size_t(y)] = doom_rows || row < tex.height ? row : row % tex.height;
     }
+    doom_sky_row_bytes_.assign(doom_sky_rows_.begin(), doom_sky_rows_.end());  // for tabled_column_vbmi
+    if (tex.height > 256) doom_sky_row_bytes_.clear();
     return;
   }
   // The rows depend only on these: a game's or a benchmark's frames reuse them.

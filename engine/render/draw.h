@@ -429,6 +429,7 @@ class Canvas {
   };
   DoomSkyKey doom_sky_key_;
   std::vector<int> doom_sky_rows_;
+  std::vector<uint8_t> doom_sky_row_bytes_;  // the same, when the sky is at most 256 texels tall (else empty)
   static constexpr uint32_t kNoPlane = UINT32_MAX;
   struct DoomSpan {
     const PlaneKey* key;

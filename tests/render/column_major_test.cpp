@@ -1,5 +1,5 @@
-// The canvas's column-major columns: turned into rows exactly, and the vector wall
-// column (AVX-512 VBMI) drawing the scalar loop's very bytes.
+// The canvas's column-major columns: turned into rows exactly, and the vector columns
+// (AVX-512 VBMI) drawing the scalar loops' very bytes.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -54,6 +54,27 @@ TEST(ColumnMajor, VectorWallColumnDrawsTheScalarLoopsBytes) {
         ASSERT_EQ(got[size_t(i)], 0x5A) << what << ": wrote before the column";
         ASSERT_EQ(got[size_t(kGuard + count + i)], 0x5A) << what << ": wrote past the column";
       }
+    }
+  }
+}
+
+TEST(ColumnMajor, TabledColumnLooksUpEachRowsTexel) {
+  if (!vector_columns()) GTEST_SKIP() << "no AVX-512 VBMI on this processor";
+  Rng rng(8);
+  std::vector<uint8_t> light(256);
+  for (uint8_t& b : light) b = uint8_t(rng.next());
+  for (int texels : {1, 5, 64, 100, 128, 129, 200, 256}) {
+    std::vector<uint8_t> source(static_cast<size_t>(texels));  // exactly the column: nothing past it is read
+    for (int trial = 0; trial < 200; ++trial) {
+      for (uint8_t& b : source) b = uint8_t(rng.next());
+      const int count = rng.range(1, 300);
+      std::vector<uint8_t> rows(static_cast<size_t>(count));  // exactly the rows asked for
+      for (uint8_t& r : rows) r = uint8_t(rng.below(uint64_t(texels)));
+      std::vector<uint8_t> got(static_cast<size_t>(count) + 64, 0x5A);
+      tabled_column_vbmi(got.data(), count, rows.data(), source.data(), texels, light.data());
+      const std::string what = std::to_string(texels) + " texels, " + std::to_string(count) + " pixels";
+      for (int i = 0; i < count; ++i) ASSERT_EQ(got[size_t(i)], light[source[rows[size_t(i)]]]) << what << ", pixel " << i;
+      for (size_t i = size_t(count); i < got.size(); ++i) ASSERT_EQ(got[i], 0x5A) << what << ": wrote past the column";
     }
   }
 }
