@@ -72,7 +72,7 @@ class DistinctIds {
 
 class BspFrontToBack final : public Renderer {
  public:
-  explicit BspFrontToBack(int threads) : pool_(std::max(1, threads)) {}
+  BspFrontToBack(int threads, bool vector_columns) : pool_(std::max(1, threads)), vector_columns_(vector_columns) {}
   std::string_view name() const override { return "bsp"; }
   using Renderer::render;
 
@@ -101,6 +101,7 @@ class BspFrontToBack final : public Renderer {
           Strip& s = strips_[size_t(i)];
           s.x0 = edges_[size_t(i)];
           s.x1 = edges_[size_t(i) + 1];
+          s.canvas.allow_vector_columns(vector_columns_);
           s.canvas.begin(level, state, view, frame, camera_sector, probe, s.x0, s.x1,
                          i > 0 ? &strips_[size_t(i) - 1].canvas : nullptr);
           s.order = one_walk ? &probe->order : nullptr;
@@ -374,6 +375,7 @@ class BspFrontToBack final : public Renderer {
   }
 
   ThreadPool pool_;
+  bool vector_columns_;  // RendererOptions::vector_columns
   std::vector<Strip> strips_;
   // This frame's things on the tree (attach_things): per node and leaf a range of
   // attached_ (indices in state.things), and per node and leaf its culling box.
@@ -394,6 +396,8 @@ class BspFrontToBack final : public Renderer {
 
 }  // namespace
 
-std::unique_ptr<Renderer> make_bsp_front_to_back(int threads) { return std::make_unique<BspFrontToBack>(threads); }
+std::unique_ptr<Renderer> make_bsp_front_to_back(int threads, bool vector_columns) {
+  return std::make_unique<BspFrontToBack>(threads, vector_columns);
+}
 
 }  // namespace p3d::render

@@ -123,13 +123,18 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
       indices_.resize(index_pitch_ * size_t(view.height));
       index_base_ = indices_.data();
     }
+  }
+  // Column-major only where the columns are drawn 64 pixels at a time: else turning
+  // them into rows costs more than their stores save (4% slower at the five maps' starts).
+  vector_columns_ = vector_columns_allowed_ && vector_columns();
+  columns_pending_ = indexed_ && vector_columns_;
+  if (columns_pending_) {
     column_stride_ = (size_t(view.height) + 63) / 64 * 64;  // each column on its own cache lines
     column_scratch_.resize(column_stride_ * size_t(std::max(0, x1_ - x0_)));
-    column_base_ = column_scratch_.data();
-    column_pitch_ = 1;
-    vector_columns_ = vector_columns();
+    column_base_ = column_scratch_.data(), column_pitch_ = 1;
+  } else {
+    column_base_ = index_base_, column_stride_ = 1, column_pitch_ = index_pitch_;
   }
-  columns_pending_ = indexed_;
   choose_fill_colors();
   if (row_dy_.size() != size_t(view.height) || (!row_dy_.empty() && row_dy_[0] != 0.5 - view.half_h)) {
     row_dy_.resize(view.height);

@@ -42,6 +42,9 @@ class Canvas {
   void begin(const level::Level& level, const level::State& state, const View& view, Frame& frame, int camera_sector,
              Probe* probe, int x0 = 0, int x1 = INT32_MAX, const Canvas* left = nullptr);
   static void prepare_probe(const View& view, Probe* probe);
+  // Whether the canvas may draw its columns column-major with AVX-512 VBMI where the
+  // processor has it (column_major.h); the same pixels either way. Before begin().
+  void allow_vector_columns(bool allow) { vector_columns_allowed_ = allow; }
   // Sizes the frame's indices when it keeps them and the level is drawn in indices;
   // like prepare_probe, done by begin() for a canvas that owns the whole frame.
   static void prepare_frame(const level::Level& level, Frame& frame);
@@ -404,7 +407,8 @@ class Canvas {
   uint8_t* column_base_ = nullptr;           // column x0_'s row 0
   size_t column_stride_ = 0, column_pitch_ = 0;  // from one column to the next, one row to the next
   bool columns_pending_ = false;             // columns in column_scratch_, not yet in the rows
-  bool vector_columns_ = false;              // wall columns by wall_column_vbmi
+  bool vector_columns_ = false;              // this frame's columns drawn column-major, by the vector loops
+  bool vector_columns_allowed_ = true;
   // What fills show: on paletted levels the palette's nearest colours, so they have indices.
   uint32_t fill_colors_[2] = {};
   uint8_t fill_indices_[2] = {};

@@ -34,7 +34,7 @@ const std::vector<std::string>& renderer_names() {
 }
 
 std::unique_ptr<Renderer> make_renderer(std::string_view name, const RendererOptions& options) {
-  if (name == "bsp") return make_bsp_front_to_back(options.threads);
+  if (name == "bsp") return make_bsp_front_to_back(options.threads, options.vector_columns);
   if (name == "painter") return make_painter();
   if (name == "dda") return make_grid_ray_caster();
   if (name == "sphere") return make_sphere_tracer(options, true);

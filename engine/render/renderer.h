@@ -18,6 +18,7 @@ struct RendererOptions {
   double sphere_relaxation = 1.6;  // over-relaxation factor omega in [1, 2); 1 is plain sphere tracing
   int sphere_max_steps = 512;      // marching steps before a ray gives up (grazing rays)
   int threads = 1;                 // bsp: threads drawing the frame's column strips (same frame for any count)
+  bool vector_columns = true;      // bsp: AVX-512 VBMI column loops where the processor has them (same frame)
 };
 
 class Renderer {
@@ -50,7 +51,7 @@ std::unique_ptr<Renderer> make_renderer(std::string_view name, const RendererOpt
 const std::vector<std::string>& renderer_names();
 
 // Internal factories, one per renderer file.
-std::unique_ptr<Renderer> make_bsp_front_to_back(int threads);
+std::unique_ptr<Renderer> make_bsp_front_to_back(int threads, bool vector_columns = true);
 std::unique_ptr<Renderer> make_painter();
 std::unique_ptr<Renderer> make_grid_ray_caster();
 std::unique_ptr<Renderer> make_sphere_tracer(const RendererOptions& options, bool accelerated);

@@ -168,8 +168,9 @@ namespace p3d::render {
 namespace {
 
 // The frame is split into column strips drawn on as many threads as given: the
-// pixels, the per-column hits and every statistic are the same for any count, and
-// the same as the reference's pixels. Freedoom MAP01 with its things, and random rooms.
+// pixels, the per-column hits and every statistic are the same for any count, with
+// the vector column loops or without, and the same as the reference's pixels.
+// Freedoom MAP01 with its things, and random rooms.
 TEST(Threads, FramesAndStatisticsAreTheSameForAnyThreadCount) {
   std::vector<std::pair<std::string, level::Level>> levels;
   levels.push_back({"rooms", test::compile(test::random_rooms(600, 12))});
@@ -179,6 +180,7 @@ TEST(Threads, FramesAndStatisticsAreTheSameForAnyThreadCount) {
   for (const auto& [name, level] : levels) {
     std::vector<std::unique_ptr<Renderer>> renderers;
     for (int threads : {1, 2, 3, 8}) renderers.push_back(make_renderer("bsp", {.threads = threads}));
+    renderers.push_back(make_renderer("bsp", {.threads = 2, .vector_columns = false}));  // the scalar loops
     auto reference = make_renderer("reference");
     Rng rng(77);
     for (int i = 0; i < 24; ++i) {
