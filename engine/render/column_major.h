@@ -1,8 +1,10 @@
-// A canvas's columns kept column-major while its walls, skies and fills are drawn:
-// a wall column's pixels are then adjacent bytes rather than a row apart, so that
-// processors with AVX-512 VBMI draw 64 of them with one table look-up (a texture
-// column of up to 128 rows, already under its light map, fits in two registers);
-// the columns are turned into the frame's rows once, before the flats (rows) are drawn.
+// A canvas's columns kept column-major while its walls, skies and fills are drawn, on
+// processors with AVX-512 VBMI: a wall column's pixels are then adjacent bytes rather
+// than a row apart, and 64 of them are drawn with one table look-up (a texture column
+// of up to 128 rows, already under its light map, fits in two registers). The columns
+// are turned into the frame's rows once, before the flats (rows) are drawn. Elsewhere
+// the canvas draws into the rows, as turning the columns costs more than scalar loops
+// save.
 #pragma once
 
 #include <cstddef>
@@ -15,7 +17,7 @@ namespace p3d::render {
 void columns_to_rows(const uint8_t* columns, size_t column_stride, uint8_t* rows, size_t row_pitch, int width,
                      int height);
 
-// Whether this processor draws a wall column with AVX-512 VBMI (wall_column_vbmi).
+// Whether this processor has AVX-512 VBMI, and the loops below are built.
 bool vector_columns();
 
 // count adjacent bytes of a wall column: out[i] = light[source[row]], row the bits

@@ -399,10 +399,10 @@ class Canvas {
   std::vector<uint8_t> indices_;
   uint8_t* index_base_ = nullptr;  // at column x0_ of row 0: in the frame, or indices_
   size_t index_pitch_ = 0;
-  // The walk draws its columns (walls, skies, fills) column-major: a column's rows are
-  // adjacent bytes, which vector_columns() processors draw 64 at a time, and which a
-  // column's stores share cache lines by, where the frame's rows are hundreds of bytes
-  // apart (column_major.h). end_columns() turns them into the rows.
+  // Where the processor has the vector column loops (vector_columns()), the walk draws
+  // its columns (walls, skies, fills) column-major, a column's rows adjacent bytes, 64
+  // of which the loops draw at once, and end_columns() turns them into the rows
+  // (column_major.h); elsewhere column_pixel is index_pixel from the start.
   std::vector<uint8_t> column_scratch_;
   uint8_t* column_base_ = nullptr;           // column x0_'s row 0
   size_t column_stride_ = 0, column_pitch_ = 0;  // from one column to the next, one row to the next
