@@ -133,7 +133,10 @@ void canonical_codes(const uint8_t* lengths, int symbols, uint16_t* codes) {
 // to fewer than 8). The output needs 8 bytes of room past its end.
 class BitWriter {
  public:
-  explicit BitWriter(uint8_t* out) : out_(out) {}
+  // Writing at `out`, after `count` bits (fewer than 8) not yet whole bytes.
+  BitWriter(uint8_t* out, uint64_t bits = 0, int count = 0) : out_(out), bits_(bits), count_(count) {}
+  uint64_t pending_bits() const { return bits_; }
+  int pending_count() const { return count_; }
   void put(uint64_t value, int n) {
     bits_ |= value << count_;
     count_ += n;
@@ -344,27 +347,66 @@ void write_block(const uint8_t* bytes, size_t begin, size_t end, size_t readable
 
 }  // namespace
 
+// A block per kBlockBytes of input: its runs and bits stay in the cache, and its codes
+// follow the picture as it changes down the image. A block's literals may read up to
+// kLookahead bytes past it (find_runs), so it goes out once they are in too.
+constexpr size_t kBlockBytes = size_t(1) << 16, kLookahead = 3;
+
 void deflate_runs(std::span<const uint8_t> in, std::vector<uint8_t>& out) {
-  // A block per kBlockBytes of input: its runs and bits stay in the cache, and its
-  // codes follow the picture as it changes down the image.
-  constexpr size_t kBlockBytes = size_t(1) << 16;
+  DeflateRuns deflater(out);
+  for (size_t at = 0; at < in.size();) {
+    const size_t n = std::min(kBlockBytes, in.size() - at);
+    std::memcpy(deflater.room(n), in.data() + at, n);
+    deflater.wrote(n);
+    at += n;
+  }
+  deflater.finish();
+}
+
+DeflateRuns::DeflateRuns(std::vector<uint8_t>& out) : out_(out) {
+  out_.insert(out_.end(), {0x78, 0x01});  // deflate with a 32 KB window, the fastest level; a multiple of 31
+}
+
+uint8_t* DeflateRuns::room(size_t n) {
+  if (size_ + n > input_.size()) {  // the blocks gone out make room: keep the byte before the next
+    const size_t keep = begin_ > 0 ? begin_ - 1 : 0;
+    std::memmove(input_.data(), input_.data() + keep, size_ - keep);
+    begin_ -= keep, size_ -= keep;
+    if (size_ + n > input_.size()) input_.resize(std::max(size_ + n, 2 * kBlockBytes));
+  }
+  return input_.data() + size_;
+}
+
+void DeflateRuns::wrote(size_t n) {
+  adler_ = libdeflate_adler32(adler_, input_.data() + size_, n);
+  size_ += n;
+  while (size_ - begin_ >= kBlockBytes + kLookahead) block(begin_ + kBlockBytes, false);
+}
+
+void DeflateRuns::finish() {
+  for (;;) {  // at least one block, the last
+    const size_t end = std::min(size_, begin_ + kBlockBytes);
+    block(end, end == size_);
+    if (begin_ == size_) break;
+  }
+  uint8_t tail[8];
+  BitWriter bits(tail, bits_, bit_count_);
+  out_.insert(out_.end(), tail, bits.finish_into(tail));
+  for (int shift = 24; shift >= 0; shift -= 8) out_.push_back(uint8_t(adler_ >> shift));
+}
+
+// The block of input [begin_, end): its bytes out, but for the last bits of a byte.
+void DeflateRuns::block(size_t end, bool last) {
   constexpr size_t kBlockRoom = 1100 + 2 * kBlockBytes;  // a literal is at most 14 bits; a header under 1 KB
   thread_local std::unique_ptr<Run[]> runs = std::make_unique_for_overwrite<Run[]>(kBlockBytes / kShortestMatch + 1);
   thread_local std::unique_ptr<uint8_t[]> buffer = std::make_unique_for_overwrite<uint8_t[]>(kBlockRoom);
-  out.insert(out.end(), {0x78, 0x01});  // deflate with a 32 KB window, the fastest level; a multiple of 31
-  BitWriter bits(buffer.get());
-  for (size_t begin = 0;;) {
-    const size_t end = std::min(in.size(), begin + kBlockBytes);
-    std::array<uint32_t, kLiteralLengthSymbols> frequency{};
-    const size_t run_count = find_runs(in.data(), begin, end, in.size(), runs.get(), frequency.data());
-    write_block(in.data(), begin, end, in.size(), runs.get(), run_count, frequency, end == in.size(), bits);
-    out.insert(out.end(), buffer.get(), bits.rewind(buffer.get()));  // the whole bytes; the rest stay in bits
-    if ((begin = end) == in.size()) break;
-  }
-  uint8_t tail[4];
-  out.insert(out.end(), tail, bits.finish_into(tail));
-  const uint32_t adler = libdeflate_adler32(1, in.data(), in.size());
-  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(uint8_t(adler >> shift));
+  BitWriter bits(buffer.get(), bits_, bit_count_);
+  std::array<uint32_t, kLiteralLengthSymbols> frequency{};
+  const size_t run_count = find_runs(input_.data(), begin_, end, size_, runs.get(), frequency.data());
+  write_block(input_.data(), begin_, end, size_, runs.get(), run_count, frequency, last, bits);
+  out_.insert(out_.end(), buffer.get(), bits.rewind(buffer.get()));  // the whole bytes; the rest stay in bits
+  bits_ = bits.pending_bits(), bit_count_ = bits.pending_count();
+  begin_ = end;
 }
 
 }  // namespace p3d::image

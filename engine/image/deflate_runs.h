@@ -16,4 +16,26 @@ namespace p3d::image {
 // Appends the zlib stream of `in` to out; the same bytes give the same stream.
 void deflate_runs(std::span<const uint8_t> in, std::vector<uint8_t>& out);
 
+// The same stream made from the input a piece at a time (a PNG's rows as they are
+// filtered): each block goes out as soon as its input and the few bytes after it are
+// in, so what is held is a block and a piece, in the cache, rather than the whole input.
+class DeflateRuns {
+ public:
+  explicit DeflateRuns(std::vector<uint8_t>& out);  // appends the zlib header to out
+  // Room for the next n bytes of input; wrote(n) once they are written there.
+  uint8_t* room(size_t n);
+  void wrote(size_t n);
+  // The last blocks and the checksum.
+  void finish();
+
+ private:
+  void block(size_t end, bool last);
+  std::vector<uint8_t>& out_;
+  std::vector<uint8_t> input_;  // from the byte before the next block (a run may repeat it)
+  size_t begin_ = 0, size_ = 0;  // the next block's first byte and the input's end, in input_
+  uint32_t adler_ = 1;
+  uint64_t bits_ = 0;  // the bits written past the last whole byte, and how many
+  int bit_count_ = 0;
+};
+
 }  // namespace p3d::image

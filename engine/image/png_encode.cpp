@@ -46,18 +46,24 @@ std::vector<uint8_t> encode_rows(int width, int height, const uint8_t* rows, siz
                                  PngDeflate how) {
   const size_t stride = size_t(width) * channels;
   thread_local std::vector<uint8_t> filtered, zeros, deflated;
-  filtered.resize(size_t(height) * (stride + 1));
   zeros.assign(stride, 0);
-  for (int y = 0; y < height; ++y)
-    filter_row(rows + size_t(y) * stride, y ? rows + size_t(y - 1) * stride : zeros.data(), stride, channels,
-               &filtered[size_t(y) * (stride + 1)]);
+  auto filter = [&](int y, uint8_t* out) {
+    filter_row(rows + size_t(y) * stride, y ? rows + size_t(y - 1) * stride : zeros.data(), stride, channels, out);
+  };
 
   size_t deflated_size = 0;
-  if (how == PngDeflate::kRuns) {
+  if (how == PngDeflate::kRuns) {  // each row deflated as it is filtered: the filtered bytes stay in the cache
     deflated.clear();
-    deflate_runs(filtered, deflated);
+    DeflateRuns deflater(deflated);
+    for (int y = 0; y < height; ++y) {
+      filter(y, deflater.room(stride + 1));
+      deflater.wrote(stride + 1);
+    }
+    deflater.finish();
     deflated_size = deflated.size();
   } else {
+    filtered.resize(size_t(height) * (stride + 1));
+    for (int y = 0; y < height; ++y) filter(y, &filtered[size_t(y) * (stride + 1)]);
     thread_local std::unique_ptr<libdeflate_compressor, CompressorFree> compressor(libdeflate_alloc_compressor(kDeflateLevel));
     if (!compressor) throw Error("cannot encode PNG: out of memory");
     deflated.resize(libdeflate_zlib_compress_bound(compressor.get(), filtered.size()));

@@ -51,6 +51,39 @@ TEST(DeflateRuns, EveryInputComesBackExactly) {
   expect_round_trip(mixed, "mixed");
 }
 
+// Fed a piece at a time, as a PNG's rows are filtered, the deflater writes the very
+// stream of the whole input at once: inputs of whole blocks and one to four bytes more
+// or fewer (a block waits for the three bytes after it), in pieces of every size.
+TEST(DeflateRuns, PiecesMakeTheSameStreamAsTheWhole) {
+  Rng rng(12);
+  for (const size_t blocks : {0, 1, 2, 3})
+    for (int extra = -4; extra <= 4; ++extra) {
+      if (blocks == 0 && extra < 0) continue;
+      std::vector<uint8_t> in(blocks * 65536 + size_t(extra));
+      for (size_t i = 0; i < in.size(); i += 1 + rng.below(30)) in[i] = uint8_t(rng.below(4));  // runs among literals
+      std::vector<uint8_t> whole;
+      deflate_runs(in, whole);
+      for (const size_t largest : {1, 3, 641, 4000, 100000}) {
+        std::vector<uint8_t> pieces = {0xAB};  // appended after what is there
+        {
+          DeflateRuns deflater(pieces);
+          for (size_t at = 0; at < in.size();) {
+            const size_t n = std::min(in.size() - at, size_t(1 + rng.below(largest)));
+            std::copy_n(in.data() + at, n, deflater.room(n));
+            deflater.wrote(n);
+            at += n;
+          }
+          deflater.finish();
+        }
+        const std::string what = std::to_string(in.size()) + " bytes in pieces of up to " + std::to_string(largest);
+        ASSERT_EQ(pieces[0], 0xAB) << what;
+        pieces.erase(pieces.begin());
+        EXPECT_EQ(pieces, whole) << what;
+        EXPECT_EQ(inflate(pieces, in.size()), in) << what;
+      }
+    }
+}
+
 TEST(DeflateRuns, SkewedFrequenciesComeBack) {
   // Symbol k appearing Fibonacci(k) times, shuffled: three blocks, each with codes from
   // 1 to 14 bits long.
