@@ -370,7 +370,7 @@ DeflateRuns::DeflateRuns(std::vector<uint8_t>& out) : out_(out) {
 uint8_t* DeflateRuns::room(size_t n) {
   if (size_ + n > input_.size()) {  // the blocks gone out make room: keep the byte before the next
     const size_t keep = begin_ > 0 ? begin_ - 1 : 0;
-    std::memmove(input_.data(), input_.data() + keep, size_ - keep);
+    if (size_ > keep) std::memmove(input_.data(), input_.data() + keep, size_ - keep);  // none yet: no buffer
     begin_ -= keep, size_ -= keep;
     if (size_ + n > input_.size()) input_.resize(std::max(size_ + n, 2 * kBlockBytes));
   }

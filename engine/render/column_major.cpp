@@ -14,11 +14,13 @@ namespace {
 inline void block_to_rows(const uint8_t* columns, size_t column_stride, uint8_t* rows, size_t row_pitch) {
   __m128i r[16], t[16];
 #pragma GCC unroll 16
-  for (int i = 0; i < 16; ++i) r[i] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(columns + size_t(i) * column_stride));
+  for (int i = 0; i < 16; ++i)
+    r[i] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(columns + size_t(i) * column_stride));
 #pragma GCC unroll 4
   for (int pass = 0; pass < 4; ++pass) {
 #pragma GCC unroll 8
-    for (int i = 0; i < 8; ++i) t[2 * i] = _mm_unpacklo_epi8(r[i], r[i + 8]), t[2 * i + 1] = _mm_unpackhi_epi8(r[i], r[i + 8]);
+    for (int i = 0; i < 8; ++i)
+      t[2 * i] = _mm_unpacklo_epi8(r[i], r[i + 8]), t[2 * i + 1] = _mm_unpackhi_epi8(r[i], r[i + 8]);
 #pragma GCC unroll 16
     for (int i = 0; i < 16; ++i) r[i] = t[i];
   }
@@ -30,7 +32,8 @@ inline void block_to_rows(const uint8_t* columns, size_t column_stride, uint8_t*
 void columns_to_rows_bytewise(const uint8_t* columns, size_t column_stride, uint8_t* rows, size_t row_pitch, int x0,
                               int x1, int y0, int y1) {
   for (int y = y0; y < y1; ++y)
-    for (int x = x0; x < x1; ++x) rows[size_t(y) * row_pitch + size_t(x)] = columns[size_t(x) * column_stride + size_t(y)];
+    for (int x = x0; x < x1; ++x)
+      rows[size_t(y) * row_pitch + size_t(x)] = columns[size_t(x) * column_stride + size_t(y)];
 }
 
 }  // namespace
@@ -42,8 +45,8 @@ void columns_to_rows(const uint8_t* columns, size_t column_stride, uint8_t* rows
   blocked_width = width / 16 * 16, blocked_height = height / 16 * 16;
   for (int x = 0; x < blocked_width; x += 16)  // down the columns: their loads in order, the rows' lines in L1
     for (int y = 0; y < blocked_height; y += 16)
-      block_to_rows(columns + size_t(x) * column_stride + size_t(y), column_stride, rows + size_t(y) * row_pitch + size_t(x),
-                    row_pitch);
+      block_to_rows(columns + size_t(x) * column_stride + size_t(y), column_stride,
+                    rows + size_t(y) * row_pitch + size_t(x), row_pitch);
 #endif
   columns_to_rows_bytewise(columns, column_stride, rows, row_pitch, blocked_width, width, 0, height);
   columns_to_rows_bytewise(columns, column_stride, rows, row_pitch, 0, blocked_width, blocked_height, height);

@@ -29,7 +29,9 @@ struct LitColumn {
   LitColumn(const uint8_t* source, int count, const uint8_t* light) : wide(count > 128) {
     const __m512i light_table[4] = {_mm512_loadu_si512(light), _mm512_loadu_si512(light + 64),
                                     _mm512_loadu_si512(light + 128), _mm512_loadu_si512(light + 192)};
-    for (int i = 0; i < (wide ? 4 : 2); ++i) texels[i] = look_up_256(light_table, load_first(source + 64 * i, count - 64 * i));
+    for (int i = 0; i < (wide ? 4 : 2); ++i)  // past the column's texels: never looked up
+      texels[i] = count > 64 * i ? look_up_256(light_table, load_first(source + 64 * i, count - 64 * i))
+                                 : _mm512_setzero_si512();
   }
   // 64 pixels from their texel rows (below the count).
   __m512i operator()(__m512i rows) const {
