@@ -126,8 +126,7 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
   }
   // Column-major only where the columns are drawn 64 pixels at a time: else turning
   // them into rows costs more than their stores save (4% slower at the five maps' starts).
-  vector_columns_ = vector_columns_allowed_ && vector_columns();
-  columns_pending_ = indexed_ && vector_columns_;
+  columns_pending_ = indexed_ && vector_columns_allowed_ && vector_columns();
   if (columns_pending_) {
     column_stride_ = (size_t(view.height) + 63) / 64 * 64;  // each column on its own cache lines
     column_scratch_.resize(column_stride_ * size_t(std::max(0, x1_ - x0_)));
@@ -253,7 +252,7 @@ void Canvas::indexed_wall_column(int x, int y0, int count, int64_t v, int64_t st
   constexpr int kVectorRows = 16;
   const int64_t rows = period >> 16;
   const bool pow2_rows = (period & 0xFFFF) == 0 && rows > 0 && (rows & (rows - 1)) == 0;
-  if (vector_columns_ && columns_pending_ && count >= kVectorRows && pow2_rows && rows <= 256)
+  if (columns_pending_ && count >= kVectorRows && pow2_rows && rows <= 256)
     return wall_column_vbmi(column_pixel(x, y0), count, uint32_t(v), uint32_t(step), std::countr_zero(uint64_t(rows)),
                             source, light);
   wrapped_column(column_pixel(x, y0), column_pitch_, count, v, step, period, IndexedColumn{source, light});

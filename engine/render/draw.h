@@ -406,8 +406,7 @@ class Canvas {
   std::vector<uint8_t> column_scratch_;
   uint8_t* column_base_ = nullptr;           // column x0_'s row 0
   size_t column_stride_ = 0, column_pitch_ = 0;  // from one column to the next, one row to the next
-  bool columns_pending_ = false;             // columns in column_scratch_, not yet in the rows
-  bool vector_columns_ = false;              // this frame's columns drawn column-major, by the vector loops
+  bool columns_pending_ = false;  // columns in column_scratch_ (only with the vector loops), not yet in the rows
   bool vector_columns_allowed_ = true;
   // What fills show: on paletted levels the palette's nearest colours, so they have indices.
   uint32_t fill_colors_[2] = {};
