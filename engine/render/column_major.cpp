@@ -66,6 +66,7 @@ bool vector_columns() {
 // Never called: vector_columns() is false.
 void wall_column_vbmi(uint8_t*, int, uint32_t, uint32_t, int, const uint8_t*, const uint8_t*) {}
 void tabled_column_vbmi(uint8_t*, int, const uint8_t*, const uint8_t*, int, const uint8_t*) {}
+void flat_row_vbmi(uint8_t*, int, RowCoordinate, RowCoordinate, const uint8_t*, const uint8_t*) {}
 #endif
 
 }  // namespace p3d::render

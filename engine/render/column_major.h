@@ -2,13 +2,15 @@
 // processors with AVX-512 VBMI: a wall column's pixels are then adjacent bytes rather
 // than a row apart, and 64 of them are drawn with one table look-up (a texture column
 // of up to 128 rows, already under its light map, fits in two registers). The columns
-// are turned into the frame's rows once, before the flats (rows) are drawn. Elsewhere
-// the canvas draws into the rows, as turning the columns costs more than scalar loops
-// save.
+// are turned into the frame's rows once, before the flats (rows) are drawn, whose
+// texels are lit 64 at a time by the same look-ups. Elsewhere the canvas draws into the
+// rows, as turning the columns costs more than scalar loops save.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+
+#include "engine/render/texel_loops.h"
 
 namespace p3d::render {
 
@@ -29,5 +31,10 @@ void wall_column_vbmi(uint8_t* out, int count, uint32_t v, uint32_t step, int ro
 // out[i] = light[source[rows[i]]], every row below texels (at most 256).
 void tabled_column_vbmi(uint8_t* out, int count, const uint8_t* rows, const uint8_t* source, int texels,
                         const uint8_t* light);
+
+// n pixels of a flat's row, as indexed_row draws them: each texel's index worked out
+// 16 at a time, the texels fetched one by one, lit 64 at a time by table look-ups.
+void flat_row_vbmi(uint8_t* out, int n, RowCoordinate u, RowCoordinate v, const uint8_t* indices,
+                   const uint8_t* light);
 
 }  // namespace p3d::render

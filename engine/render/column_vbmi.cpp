@@ -1,6 +1,11 @@
 // The column loops built for AVX-512 VBMI: this file alone is (engine/CMakeLists.txt),
 // and the canvas calls it only where vector_columns() says the processor has it.
+// GCC 12's AVX-512 shifts start from a self-initialised "undefined" register, which
+// -Wmaybe-uninitialized reports (GCC bug 105593).
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <immintrin.h>
+
+#include <algorithm>
 
 #include "engine/render/column_major.h"
 
@@ -79,6 +84,34 @@ void tabled_column_vbmi(uint8_t* out, int count, const uint8_t* rows, const uint
   int i = 0;
   for (; i + 64 <= count; i += 64) _mm512_storeu_si512(out + i, column(_mm512_loadu_si512(rows + i)));
   if (i < count) _mm512_mask_storeu_epi8(out + i, first_bytes(count - i), column(load_first(rows + i, count - i)));
+}
+
+void flat_row_vbmi(uint8_t* out, int n, RowCoordinate u, RowCoordinate v, const uint8_t* indices,
+                   const uint8_t* light) {
+  const __m512i light_table[4] = {_mm512_loadu_si512(light), _mm512_loadu_si512(light + 64),
+                                  _mm512_loadu_si512(light + 128), _mm512_loadu_si512(light + 192)};
+  const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  __m512i us = _mm512_add_epi32(_mm512_set1_epi32(int(u.value)), _mm512_mullo_epi32(lanes, _mm512_set1_epi32(int(u.step))));
+  __m512i vs = _mm512_add_epi32(_mm512_set1_epi32(int(v.value)), _mm512_mullo_epi32(lanes, _mm512_set1_epi32(int(v.step))));
+  const __m512i du = _mm512_set1_epi32(int(16 * u.step)), dv = _mm512_set1_epi32(int(16 * v.step));
+  const __m128i u_shift = _mm_cvtsi32_si128(int(u.shift)), v_shift = _mm_cvtsi32_si128(int(v.shift));
+  const __m512i u_mask = _mm512_set1_epi32(int(u.mask)), v_mask = _mm512_set1_epi32(int(v.mask));
+  alignas(64) uint32_t at[64];
+  alignas(64) uint8_t texels[64];
+  for (int i = 0; i < n; i += 64) {
+    const int count = std::min(64, n - i), groups = (count + 15) / 16;
+    for (int g = 0; g < groups; ++g) {
+      const __m512i index = _mm512_or_si512(_mm512_and_si512(_mm512_srl_epi32(us, u_shift), u_mask),
+                                            _mm512_and_si512(_mm512_srl_epi32(vs, v_shift), v_mask));
+      _mm512_store_si512(at + 16 * g, index);
+      us = _mm512_add_epi32(us, du), vs = _mm512_add_epi32(vs, dv);
+    }
+    for (int k = 0; k < groups * 16; k += 4) {  // past count: texels of the flat, never stored
+      texels[k] = indices[at[k]], texels[k + 1] = indices[at[k + 1]];
+      texels[k + 2] = indices[at[k + 2]], texels[k + 3] = indices[at[k + 3]];
+    }
+    _mm512_mask_storeu_epi8(out + i, first_bytes(count), look_up_256(light_table, _mm512_load_si512(texels)));
+  }
 }
 
 }  // namespace p3d::render

@@ -127,6 +127,7 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
   // Column-major only where the columns are drawn 64 pixels at a time: else turning
   // them into rows costs more than their stores save (4% slower at the five maps' starts).
   columns_pending_ = indexed_ && vector_columns_allowed_ && vector_columns();
+  vector_flats_ = indexed_ && vector_columns_allowed_ && vector_columns();
   if (columns_pending_) {
     column_stride_ = (size_t(view.height) + 63) / 64 * 64;  // each column on its own cache lines
     column_scratch_.resize(column_stride_ * size_t(std::max(0, x1_ - x0_)));
@@ -708,26 +709,28 @@ void with_texel_index(const level::Texture& tex, Draw&& draw) {
   }
 }
 
-// n pixels of a row of a power-of-two plane, in palette indices: with_texel_index's
-// arithmetic (modulo 2^32), the column-major texel (u >> 16) * height + (v >> 16).
-void indexed_pow2_row(uint8_t* out, int n, uint32_t u, uint32_t du, uint32_t v, uint32_t dv, const level::Texture& tex,
-                      const uint8_t* light_map) {
-  const uint32_t shift = uint32_t(std::countr_zero(unsigned(tex.height)));
-  indexed_row(out, n, {u, du, 16 - shift, uint32_t(tex.width - 1) << shift}, {v, dv, 16, uint32_t(tex.height - 1)},
-              tex.indices.data(), light_map);
-}
-
 }  // namespace
+
+void Canvas::indexed_flat_row(uint8_t* out, int n, RowCoordinate u, RowCoordinate v, const uint8_t* indices,
+                              const uint8_t* light_map) const {
+  // Under 16 pixels the vector loop's set-up costs more than it saves.
+  if (vector_flats_ && n >= 16) return flat_row_vbmi(out, n, u, v, indices, light_map);
+  indexed_row(out, n, u, v, indices, light_map);
+}
 
 // Pixels [xa, xb) of row y of a plane: one light map for the row.
 void Canvas::plane_pixels(const PlaneKey& key, int y, int xa, int xb) {
   if (doom_) return doom_plane_pixels(key, y, xa, xb, xa);
   const level::Texture& tex = level_->textures[key.texture];
   const PlaneRow row = plane_row(key, y);
-  if (indexed_ && tex.pow2_width && tex.pow2_height)
-    return indexed_pow2_row(index_pixel(xa, y), xb - xa, uint32_t(row.u0 + uint64_t(xa) * row.du), uint32_t(row.du),
-                            uint32_t(row.v0 + uint64_t(xa) * row.dv), uint32_t(row.dv), tex,
-                            level_->light_indices.data() + size_t(row.light_map) * limits::kPaletteSize);
+  if (indexed_ && tex.pow2_width && tex.pow2_height) {  // with_texel_index's arithmetic, modulo 2^32
+    const uint32_t shift = uint32_t(std::countr_zero(unsigned(tex.height)));
+    return indexed_flat_row(index_pixel(xa, y), xb - xa,
+                            {uint32_t(row.u0 + uint64_t(xa) * row.du), uint32_t(row.du), 16 - shift,
+                             uint32_t(tex.width - 1) << shift},
+                            {uint32_t(row.v0 + uint64_t(xa) * row.dv), uint32_t(row.dv), 16, uint32_t(tex.height - 1)},
+                            tex.indices.data(), level_->light_indices.data() + size_t(row.light_map) * limits::kPaletteSize);
+  }
   auto draw = [&](auto colour_of_texel, auto texel_of, auto* out) {
     uint64_t u = row.u0 + uint64_t(xa) * row.du, v = row.v0 + uint64_t(xa) * row.dv;
     for (int x = xa; x < xb; ++x, u += row.du, v += row.dv) *out++ = colour_of_texel(texel_of(u, v));

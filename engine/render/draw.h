@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "engine/render/plane_spans.h"
+#include "engine/render/texel_loops.h"
 #include "engine/render/view.h"
 
 namespace p3d::render {
@@ -42,8 +43,9 @@ class Canvas {
   void begin(const level::Level& level, const level::State& state, const View& view, Frame& frame, int camera_sector,
              Probe* probe, int x0 = 0, int x1 = INT32_MAX, const Canvas* left = nullptr);
   static void prepare_probe(const View& view, Probe* probe);
-  // Whether the canvas may draw its columns column-major with AVX-512 VBMI where the
-  // processor has it (column_major.h); the same pixels either way. Before begin().
+  // Whether the canvas may draw its columns column-major, and its flats, with AVX-512
+  // VBMI where the processor has it (column_major.h); the same pixels either way.
+  // Before begin().
   void allow_vector_columns(bool allow) { vector_columns_allowed_ = allow; }
   // Sizes the frame's indices when it keeps them and the level is drawn in indices;
   // like prepare_probe, done by begin() for a canvas that owns the whole frame.
@@ -259,6 +261,10 @@ class Canvas {
     int map = 0;
   };
   CrispyRow crispy_row(const PlaneKey& key, int y, int xa, int xb) const;
+  // n pixels of a flat's row in palette indices (texel_loops.h's indexed_row), by the
+  // vector loop where the canvas may use it.
+  void indexed_flat_row(uint8_t* out, int n, RowCoordinate u, RowCoordinate v, const uint8_t* indices,
+                        const uint8_t* light_map) const;
   void draw_crispy_row(const CrispyRow& row);
   void draw_crispy_flats();
   // The flats as spans: gathered from the planes filed (doom_gather_spans), each span
@@ -406,6 +412,7 @@ class Canvas {
   std::vector<uint8_t> column_scratch_;
   uint8_t* column_base_ = nullptr;           // column x0_'s row 0
   size_t column_stride_ = 0, column_pitch_ = 0;  // from one column to the next, one row to the next
+  bool vector_flats_ = false;     // flat rows by flat_row_vbmi
   bool columns_pending_ = false;  // columns in column_scratch_ (only with the vector loops), not yet in the rows
   bool vector_columns_allowed_ = true;
   // What fills show: on paletted levels the palette's nearest colours, so they have indices.

@@ -403,8 +403,8 @@ void Canvas::draw_crispy_row(const CrispyRow& r) {
   const uint8_t* indices = tex.indices.data();
   const size_t light = size_t(r.map) * limits::kPaletteSize;
   if (indexed_ && flat64)  // u = (xfrac >> 16) & 63 and v = (yfrac >> 16) & 63 at u * 64 + v
-    return indexed_row(index_pixel(r.xa, r.y), r.xb - r.xa, {r.xfrac, r.xstep, kFracBits - 6, 63u << 6},
-                       {r.yfrac, r.ystep, kFracBits, 63u}, indices, level_->light_indices.data() + light);
+    return indexed_flat_row(index_pixel(r.xa, r.y), r.xb - r.xa, {r.xfrac, r.xstep, kFracBits - 6, 63u << 6},
+                            {r.yfrac, r.ystep, kFracBits, 63u}, indices, level_->light_indices.data() + light);
   uint32_t xfrac = r.xfrac, yfrac = r.yfrac;
   auto draw = [&](auto* out, const auto* lit) {
     for (int x = r.xa; x < r.xb; ++x, xfrac += r.xstep, yfrac += r.ystep) *out++ = lit[indices[texel(xfrac, yfrac)]];
@@ -454,8 +454,8 @@ void Canvas::doom_plane_pixels(const PlaneKey& key, int y, int xa, int xb, int s
   };
   const uint8_t* indices = tex.indices.data();
   if (indexed_ && flat64)  // Doom's packed position: u its top 6 bits, v bits 10..15, at u * 64 + v
-    return indexed_row(index_pixel(xa, y), xb - xa, {position, step, 20, 63u << 6}, {position, step, 10, 63u},
-                       indices, level_->light_indices.data() + size_t(map) * limits::kPaletteSize);
+    return indexed_flat_row(index_pixel(xa, y), xb - xa, {position, step, 20, 63u << 6}, {position, step, 10, 63u},
+                            indices, level_->light_indices.data() + size_t(map) * limits::kPaletteSize);
   if (indexed_) {
     const uint8_t* lit = level_->light_indices.data() + size_t(map) * limits::kPaletteSize;
     uint8_t* out = index_pixel(xa, y);
