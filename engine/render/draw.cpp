@@ -711,13 +711,6 @@ void with_texel_index(const level::Texture& tex, Draw&& draw) {
 
 }  // namespace
 
-void Canvas::indexed_flat_row(uint8_t* out, int n, RowCoordinate u, RowCoordinate v, const uint8_t* indices,
-                              const uint8_t* light_map) const {
-  // Under 16 pixels the vector loop's set-up costs more than it saves.
-  if (vector_flats_ && n >= 16) return flat_row_vbmi(out, n, u, v, indices, light_map);
-  indexed_row(out, n, u, v, indices, light_map);
-}
-
 // Pixels [xa, xb) of row y of a plane: one light map for the row.
 void Canvas::plane_pixels(const PlaneKey& key, int y, int xa, int xb) {
   if (doom_) return doom_plane_pixels(key, y, xa, xb, xa);

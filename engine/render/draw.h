@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/render/column_major.h"
 #include "engine/render/plane_spans.h"
 #include "engine/render/texel_loops.h"
 #include "engine/render/view.h"
@@ -484,6 +485,13 @@ bool Canvas::record_step(int x, const WallHit& hit, int near, Draw&& draw) {
   if (top < bottom) return false;
   close(x, hit);
   return true;
+}
+
+inline void Canvas::indexed_flat_row(uint8_t* out, int n, RowCoordinate u, RowCoordinate v, const uint8_t* indices,
+                                     const uint8_t* light_map) const {
+  // Under 16 pixels the vector loop's set-up costs more than it saves.
+  if (vector_flats_ && n >= 16) return flat_row_vbmi(out, n, u, v, indices, light_map);
+  indexed_row(out, n, u, v, indices, light_map);
 }
 
 }  // namespace p3d::render
