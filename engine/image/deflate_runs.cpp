@@ -347,10 +347,9 @@ void write_block(const uint8_t* bytes, size_t begin, size_t end, size_t readable
 
 }  // namespace
 
-// A block per kBlockBytes of input: its runs and bits stay in the cache, and its codes
-// follow the picture as it changes down the image. A block's literals may read up to
-// kLookahead bytes past it (find_runs), so it goes out once they are in too.
-constexpr size_t kBlockBytes = size_t(1) << 16, kLookahead = 3;
+// A block's literals may read up to kLookahead bytes past it (find_runs), so it goes
+// out once they are in too.
+constexpr size_t kBlockBytes = kDeflateBlockBytes, kLookahead = 3;
 
 void deflate_runs(std::span<const uint8_t> in, std::vector<uint8_t>& out) {
   DeflateRuns deflater(out);

@@ -1,7 +1,7 @@
 // A zlib stream (RFC 1950/1951) made of runs and literals only: each byte repeating
 // the one before it sixteen times or more becomes a match at distance 1 (as zlib's Z_RLE
 // strategy, with longer runs), everything else a literal, a block of Huffman codes
-// for each 64 KB.
+// for each 128 KB.
 // A filtered PNG row of a rendered frame is mostly runs (the Up and Sub filters turn a
 // magnified texel into zeros), so this keeps nearly all of a general deflater's
 // compression at a fraction of its work: no hash table and no search.
@@ -12,6 +12,12 @@
 #include <vector>
 
 namespace p3d::image {
+
+// The input a block of codes takes: its runs and bits stay in the cache, and its codes
+// follow the picture as it changes down the image. Each block builds its codes, so
+// fewer, larger blocks take less time: 128 KB rather than 64 KB, captures of a Doom map
+// 2-4% faster, their bytes the same to 0.05%; 256 KB, 2% faster still but 0.4% bigger.
+constexpr size_t kDeflateBlockBytes = size_t(1) << 17;
 
 // Appends the zlib stream of `in` to out; the same bytes give the same stream.
 void deflate_runs(std::span<const uint8_t> in, std::vector<uint8_t>& out);

@@ -59,7 +59,7 @@ TEST(DeflateRuns, PiecesMakeTheSameStreamAsTheWhole) {
   for (const size_t blocks : {0, 1, 2, 3})
     for (int extra = -4; extra <= 4; ++extra) {
       if (blocks == 0 && extra < 0) continue;
-      std::vector<uint8_t> in(blocks * 65536 + size_t(extra));
+      std::vector<uint8_t> in(blocks * kDeflateBlockBytes + size_t(extra));
       for (size_t i = 0; i < in.size(); i += 1 + rng.below(30)) in[i] = uint8_t(rng.below(4));  // runs among literals
       std::vector<uint8_t> whole;
       deflate_runs(in, whole);
