@@ -102,8 +102,8 @@ class BspFrontToBack final : public Renderer {
           s.x0 = edges_[size_t(i)];
           s.x1 = edges_[size_t(i) + 1];
           s.canvas.allow_vector_columns(vector_columns_);
-          s.canvas.begin(level, state, view, frame, camera_sector, probe, s.x0, s.x1,
-                         i > 0 ? &strips_[size_t(i) - 1].canvas : nullptr);
+          s.canvas.begin_strip(level, state, view, frame, camera_sector, probe, s.x0, s.x1,
+                               i > 0 ? &strips_[size_t(i) - 1].canvas : nullptr);
           s.order = one_walk ? &probe->order : nullptr;
           walk(level, view, camera, s);
         },

@@ -2,7 +2,9 @@
 // and the canvas calls it only where vector_columns() says the processor has it.
 // GCC 12's AVX-512 shifts start from a self-initialised "undefined" register, which
 // -Wmaybe-uninitialized reports (GCC bug 105593).
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <immintrin.h>
 
 #include <algorithm>
@@ -25,6 +27,14 @@ inline __m512i look_up_256(const __m512i table[4], __m512i index) {
   return _mm512_mask_blend_epi8(_mm512_movepi8_mask(index), low, high);
 }
 
+// A 256-byte table (a light map) in four registers.
+struct Table256 {
+  __m512i part[4];
+  explicit Table256(const uint8_t* table) {
+    for (int i = 0; i < 4; ++i) part[i] = _mm512_loadu_si512(table + 64 * i);
+  }
+};
+
 // A texture column of up to 256 texels already under its light, in registers:
 // texels[r] = light[source[r]].
 struct LitColumn {
@@ -32,10 +42,9 @@ struct LitColumn {
   bool wide;  // more than 128 texels: the look-up reads bit 7 too
 
   LitColumn(const uint8_t* source, int count, const uint8_t* light) : wide(count > 128) {
-    const __m512i light_table[4] = {_mm512_loadu_si512(light), _mm512_loadu_si512(light + 64),
-                                    _mm512_loadu_si512(light + 128), _mm512_loadu_si512(light + 192)};
+    const Table256 light_table(light);
     for (int i = 0; i < (wide ? 4 : 2); ++i)  // past the column's texels: never looked up
-      texels[i] = count > 64 * i ? look_up_256(light_table, load_first(source + 64 * i, count - 64 * i))
+      texels[i] = count > 64 * i ? look_up_256(light_table.part, load_first(source + 64 * i, count - 64 * i))
                                  : _mm512_setzero_si512();
   }
   // 64 pixels from their texel rows (below the count).
@@ -88,8 +97,7 @@ void tabled_column_vbmi(uint8_t* out, int count, const uint8_t* rows, const uint
 
 void flat_row_vbmi(uint8_t* out, int n, RowCoordinate u, RowCoordinate v, const uint8_t* indices,
                    const uint8_t* light) {
-  const __m512i light_table[4] = {_mm512_loadu_si512(light), _mm512_loadu_si512(light + 64),
-                                  _mm512_loadu_si512(light + 128), _mm512_loadu_si512(light + 192)};
+  const Table256 light_table(light);
   const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
   __m512i us = _mm512_add_epi32(_mm512_set1_epi32(int(u.value)), _mm512_mullo_epi32(lanes, _mm512_set1_epi32(int(u.step))));
   __m512i vs = _mm512_add_epi32(_mm512_set1_epi32(int(v.value)), _mm512_mullo_epi32(lanes, _mm512_set1_epi32(int(v.step))));
@@ -110,7 +118,7 @@ void flat_row_vbmi(uint8_t* out, int n, RowCoordinate u, RowCoordinate v, const 
       texels[k] = indices[at[k]], texels[k + 1] = indices[at[k + 1]];
       texels[k + 2] = indices[at[k + 2]], texels[k + 3] = indices[at[k + 3]];
     }
-    _mm512_mask_storeu_epi8(out + i, first_bytes(count), look_up_256(light_table, _mm512_load_si512(texels)));
+    _mm512_mask_storeu_epi8(out + i, first_bytes(count), look_up_256(light_table.part, _mm512_load_si512(texels)));
   }
 }
 

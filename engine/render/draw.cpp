@@ -93,7 +93,14 @@ void Canvas::prepare_frame(const level::Level& level, Frame& frame) {
 }
 
 void Canvas::begin(const level::Level& level, const level::State& state, const View& view, Frame& frame,
-                   int camera_sector, Probe* probe, int x0, int x1, const Canvas* left) {
+                   int camera_sector, Probe* probe) {
+  prepare_probe(view, probe);
+  prepare_frame(level, frame);
+  begin_strip(level, state, view, frame, camera_sector, probe, 0, view.width, nullptr);
+}
+
+void Canvas::begin_strip(const level::Level& level, const level::State& state, const View& view, Frame& frame,
+                         int camera_sector, Probe* probe, int x0, int x1, const Canvas* left) {
   level_ = &level;
   state_ = &state;
   view_ = &view;
@@ -102,10 +109,6 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
   writes_ = probe && probe->want_writes ? &probe->writes : nullptr;
   x0_ = std::max(0, x0);
   x1_ = std::min(view.width, x1);
-  if (x0_ == 0 && x1_ == view.width) {  // a canvas of the whole frame prepares it (strips: the renderer)
-    prepare_probe(view, probe);
-    prepare_frame(level, frame);
-  }
   columns_.resize(view.width);  // indexed by x; only the owned columns are used
   std::fill(columns_.begin() + x0_, columns_.begin() + x1_, Column{0, view.height, camera_sector});
   if (steps_.size() != size_t(view.width)) steps_.resize(view.width);
@@ -126,8 +129,7 @@ void Canvas::begin(const level::Level& level, const level::State& state, const V
   }
   // Column-major only where the columns are drawn 64 pixels at a time: else turning
   // them into rows costs more than their stores save (4% slower at the five maps' starts).
-  columns_pending_ = indexed_ && vector_columns_allowed_ && vector_columns();
-  vector_flats_ = indexed_ && vector_columns_allowed_ && vector_columns();
+  vector_loops_ = columns_pending_ = indexed_ && vector_columns_allowed_ && vector_columns();
   if (columns_pending_) {
     column_stride_ = (size_t(view.height) + 63) / 64 * 64;  // each column on its own cache lines
     column_scratch_.resize(column_stride_ * size_t(std::max(0, x1_ - x0_)));
@@ -249,11 +251,9 @@ void Canvas::end_columns() {
 
 void Canvas::indexed_wall_column(int x, int y0, int count, int64_t v, int64_t step, int64_t period,
                                  const uint8_t* source, const uint8_t* light) {
-  // Below 16 rows the vector loop's set-up costs more than it saves.
-  constexpr int kVectorRows = 16;
   const int64_t rows = period >> 16;
   const bool pow2_rows = (period & 0xFFFF) == 0 && rows > 0 && (rows & (rows - 1)) == 0;
-  if (columns_pending_ && count >= kVectorRows && pow2_rows && rows <= 256)
+  if (columns_pending_ && count >= kVectorColumnRows && pow2_rows && rows <= 256)
     return wall_column_vbmi(column_pixel(x, y0), count, uint32_t(v), uint32_t(step), std::countr_zero(uint64_t(rows)),
                             source, light);
   wrapped_column(column_pixel(x, y0), column_pitch_, count, v, step, period, IndexedColumn{source, light});

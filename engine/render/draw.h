@@ -35,14 +35,17 @@ struct WallHit {
 
 class Canvas {
  public:
-  // Resets every column to fully open, in `camera_sector` (may be kNone). A canvas may
-  // own only the columns [x0, x1) of the frame (a strip drawn by its own thread): it then
-  // draws nothing outside them, and the probe's arrays must have been sized already
-  // (prepare_probe), since other strips fill them at the same time.
-  // A strip's canvas under Doom's rules also names the canvas of the strip to its left
-  // (its flats' spans may begin there: see finish_strip).
+  // Resets every column to fully open, in `camera_sector` (may be kNone), for a canvas
+  // that owns the whole frame: sizes the frame and the probe first.
   void begin(const level::Level& level, const level::State& state, const View& view, Frame& frame, int camera_sector,
-             Probe* probe, int x0 = 0, int x1 = INT32_MAX, const Canvas* left = nullptr);
+             Probe* probe);
+  // The same for a canvas that owns only the columns [x0, x1) of the frame (a strip
+  // drawn by its own thread): it draws nothing outside them, and its renderer has sized
+  // the frame and the probe's arrays already (prepare_frame, prepare_probe), since other
+  // strips fill them at the same time. Under Doom's rules it also names the canvas of
+  // the strip to its left (its flats' spans may begin there: see finish_strip).
+  void begin_strip(const level::Level& level, const level::State& state, const View& view, Frame& frame,
+                   int camera_sector, Probe* probe, int x0, int x1, const Canvas* left);
   static void prepare_probe(const View& view, Probe* probe);
   // Whether the canvas may draw its columns column-major, and its flats, with AVX-512
   // VBMI where the processor has it (column_major.h); the same pixels either way.
@@ -54,7 +57,7 @@ class Canvas {
   // For a renderer that draws over its own pixels (the painter): write the frame's
   // colours at once rather than palette indices resolved at the end (see indexed_).
   void draw_directly() {
-    indexed_ = columns_pending_ = false;
+    indexed_ = vector_loops_ = columns_pending_ = false;
     frame_->indices.clear();
     if (doom_) start_painted_planes();
   }
@@ -413,7 +416,7 @@ class Canvas {
   std::vector<uint8_t> column_scratch_;
   uint8_t* column_base_ = nullptr;           // column x0_'s row 0
   size_t column_stride_ = 0, column_pitch_ = 0;  // from one column to the next, one row to the next
-  bool vector_flats_ = false;     // flat rows by flat_row_vbmi
+  bool vector_loops_ = false;     // this frame: indices drawn, the vector loops allowed and on this processor
   bool columns_pending_ = false;  // columns in column_scratch_ (only with the vector loops), not yet in the rows
   bool vector_columns_allowed_ = true;
   // What fills show: on paletted levels the palette's nearest colours, so they have indices.
@@ -491,7 +494,7 @@ inline void Canvas::indexed_flat_row(uint8_t* out, int n, RowCoordinate u, RowCo
                                      const uint8_t* light_map) const {
   // A short row keeps the scalar loop, as short wall columns do (8 and 32 pixels as the
   // threshold took the same time as 16).
-  if (vector_flats_ && n >= 16) return flat_row_vbmi(out, n, u, v, indices, light_map);
+  if (vector_loops_ && n >= 16) return flat_row_vbmi(out, n, u, v, indices, light_map);
   indexed_row(out, n, u, v, indices, light_map);
 }
 

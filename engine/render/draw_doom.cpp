@@ -564,7 +564,7 @@ void Canvas::doom_sky_span(int x, int y0, int y1) {
   if (indexed_) {
     const uint8_t* lit = level_->light_indices.data();  // full bright
     const int texels = doom_start >= 0 ? 128 : tex.height;
-    if (columns_pending_ && y1 - y0 >= 16 && !doom_sky_row_bytes_.empty())
+    if (columns_pending_ && y1 - y0 >= kVectorColumnRows && !doom_sky_row_bytes_.empty())
       return tabled_column_vbmi(column_pixel(x, y0), y1 - y0, doom_sky_row_bytes_.data() + y0, indices, texels, lit);
     uint8_t* out = column_pixel(x, y0);
     for (int y = y0; y < y1; ++y, out += column_pitch_) *out = lit[indices[rows[y]]];
