@@ -40,6 +40,10 @@ void columns_to_rows_bytewise(const uint8_t* columns, size_t column_stride, uint
 
 void columns_to_rows(const uint8_t* columns, size_t column_stride, uint8_t* rows, size_t row_pitch, int width,
                      int height) {
+  if (vector_columns()) {
+    const int done = columns_to_rows_vbmi(columns, column_stride, rows, row_pitch, width, height);
+    columns += size_t(done) * column_stride, rows += done, width -= done;
+  }
   int blocked_width = 0, blocked_height = 0;
 #ifdef __SSE2__
   blocked_width = width / 16 * 16, blocked_height = height / 16 * 16;
@@ -67,6 +71,7 @@ bool vector_columns() {
 void wall_column_vbmi(uint8_t*, int, uint32_t, uint32_t, int, const uint8_t*, const uint8_t*) {}
 void tabled_column_vbmi(uint8_t*, int, const uint8_t*, const uint8_t*, int, const uint8_t*) {}
 void flat_row_vbmi(uint8_t*, int, RowCoordinate, RowCoordinate, const uint8_t*, const uint8_t*) {}
+int columns_to_rows_vbmi(const uint8_t*, size_t, uint8_t*, size_t, int, int) { return 0; }
 #endif
 
 }  // namespace p3d::render

@@ -53,6 +53,39 @@ struct LitColumn {
   }
 };
 
+// n rows (at most 16) of 64 columns into the frame's rows: register i holds columns i,
+// 16 + i, 32 + i and 48 + i in its four 128-bit lanes; block_to_rows's 16 x 16
+// interleave, done in every lane at once, leaves row j's 64 bytes in register j. Out of
+// line: inlined in its loop, GCC kept the 64 load addresses apart, on the stack.
+[[gnu::noinline]] void rows_of_64_columns(const uint8_t* columns, size_t column_stride, uint8_t* rows,
+                                                      size_t row_pitch, int n) {
+  const __mmask64 first = first_bytes(n);  // of each lane: nothing read past the column
+  __m512i r[16], t[16];
+  const size_t lane1 = 16 * column_stride, lane2 = 2 * lane1, lane3 = 3 * lane1;
+  const uint8_t* c = columns;
+#pragma GCC unroll 16
+  for (int i = 0; i < 16; ++i, c += column_stride) {  // lane L loaded to its own bytes, 16 L on
+    r[i] = _mm512_maskz_loadu_epi8(first, c);
+    r[i] = _mm512_mask_loadu_epi8(r[i], first << 16, c + lane1 - 16);
+    r[i] = _mm512_mask_loadu_epi8(r[i], first << 32, c + lane2 - 32);
+    r[i] = _mm512_mask_loadu_epi8(r[i], first << 48, c + lane3 - 48);
+  }
+#pragma GCC unroll 4
+  for (int pass = 0; pass < 4; ++pass) {
+#pragma GCC unroll 8
+    for (int i = 0; i < 8; ++i)
+      t[2 * i] = _mm512_unpacklo_epi8(r[i], r[i + 8]), t[2 * i + 1] = _mm512_unpackhi_epi8(r[i], r[i + 8]);
+#pragma GCC unroll 16
+    for (int i = 0; i < 16; ++i) r[i] = t[i];
+  }
+  if (n == 16) {
+#pragma GCC unroll 16
+    for (int j = 0; j < 16; ++j, rows += row_pitch) _mm512_storeu_si512(rows, r[j]);
+  } else {
+    for (int j = 0; j < n; ++j, rows += row_pitch) _mm512_storeu_si512(rows, r[j]);
+  }
+}
+
 }  // namespace
 
 void wall_column_vbmi(uint8_t* out, int count, uint32_t v, uint32_t step, int rows_log2, const uint8_t* source,
@@ -85,6 +118,18 @@ void wall_column_vbmi(uint8_t* out, int count, uint32_t v, uint32_t step, int ro
     for (__m512i& x : vs) x = _mm512_add_epi32(x, step64);
   }
   if (i < count) _mm512_mask_storeu_epi8(out + i, first_bytes(count - i), pixels());
+}
+
+int columns_to_rows_vbmi(const uint8_t* columns, size_t column_stride, uint8_t* rows, size_t row_pitch, int width,
+                         int height) {
+  const int blocked = width / 64 * 64;
+  for (int x = 0; x < blocked; x += 64) {  // down the columns: each column's line read four times while in L1
+    const uint8_t* block = columns + size_t(x) * column_stride;
+    int y = 0;
+    for (; y + 16 <= height; y += 16) rows_of_64_columns(block + y, column_stride, rows + size_t(y) * row_pitch + x, row_pitch, 16);
+    if (y < height) rows_of_64_columns(block + y, column_stride, rows + size_t(y) * row_pitch + x, row_pitch, height - y);
+  }
+  return blocked;
 }
 
 void tabled_column_vbmi(uint8_t* out, int count, const uint8_t* rows, const uint8_t* source, int texels,
