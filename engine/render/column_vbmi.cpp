@@ -20,36 +20,37 @@ inline __mmask64 first_bytes(int n) { return n >= 64 ? ~__mmask64(0) : (__mmask6
 // The first n bytes (at most 64) of a register's load: the bytes past them are not read.
 inline __m512i load_first(const uint8_t* p, int n) { return _mm512_maskz_loadu_epi8(first_bytes(n), p); }
 
-// 64 look-ups in a 256-byte table held in four registers: bit 7 picks the pair.
-inline __m512i look_up_256(const __m512i table[4], __m512i index) {
-  const __m512i low = _mm512_permutex2var_epi8(table[0], index, table[1]);
-  const __m512i high = _mm512_permutex2var_epi8(table[2], index, table[3]);
-  return _mm512_mask_blend_epi8(_mm512_movepi8_mask(index), low, high);
-}
-
-// A 256-byte table (a light map) in four registers.
+// A 256-byte table in four registers, looked up 64 bytes at a time: bit 7 of an index
+// picks the pair. Named registers rather than an array: GCC kept an array's on the stack.
 struct Table256 {
-  __m512i part[4];
-  explicit Table256(const uint8_t* table) {
-    for (int i = 0; i < 4; ++i) part[i] = _mm512_loadu_si512(table + 64 * i);
+  __m512i a, b, c, d;
+  static Table256 load(const uint8_t* table) {
+    return {_mm512_loadu_si512(table), _mm512_loadu_si512(table + 64), _mm512_loadu_si512(table + 128),
+            _mm512_loadu_si512(table + 192)};
+  }
+  __m512i operator()(__m512i index) const {
+    const __m512i low = _mm512_permutex2var_epi8(a, index, b), high = _mm512_permutex2var_epi8(c, index, d);
+    return _mm512_mask_blend_epi8(_mm512_movepi8_mask(index), low, high);
   }
 };
 
 // A texture column of up to 256 texels already under its light, in registers:
-// texels[r] = light[source[r]].
+// texels(r) = light[source[r]].
 struct LitColumn {
-  __m512i texels[4];
+  Table256 texels;
   bool wide;  // more than 128 texels: the look-up reads bit 7 too
 
   LitColumn(const uint8_t* source, int count, const uint8_t* light) : wide(count > 128) {
-    const Table256 light_table(light);
-    for (int i = 0; i < (wide ? 4 : 2); ++i)  // past the column's texels: never looked up
-      texels[i] = count > 64 * i ? look_up_256(light_table.part, load_first(source + 64 * i, count - 64 * i))
-                                 : _mm512_setzero_si512();
+    const Table256 light_table = Table256::load(light);
+    auto part = [&](int i) {  // past the column's texels: zeros, never looked up
+      return count > 64 * i ? light_table(load_first(source + 64 * i, count - 64 * i)) : _mm512_setzero_si512();
+    };
+    texels.a = part(0), texels.b = part(1);
+    texels.c = wide ? part(2) : _mm512_setzero_si512(), texels.d = wide ? part(3) : _mm512_setzero_si512();
   }
   // 64 pixels from their texel rows (below the count).
   __m512i operator()(__m512i rows) const {
-    return wide ? look_up_256(texels, rows) : _mm512_permutex2var_epi8(texels[0], rows, texels[1]);  // bit 7 unread
+    return wide ? texels(rows) : _mm512_permutex2var_epi8(texels.a, rows, texels.b);  // bit 7 unread
   }
 };
 
@@ -142,7 +143,7 @@ void tabled_column_vbmi(uint8_t* out, int count, const uint8_t* rows, const uint
 
 void flat_row_vbmi(uint8_t* out, int n, RowCoordinate u, RowCoordinate v, const uint8_t* indices,
                    const uint8_t* light) {
-  const Table256 light_table(light);
+  const Table256 light_table = Table256::load(light);
   const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
   __m512i us = _mm512_add_epi32(_mm512_set1_epi32(int(u.value)), _mm512_mullo_epi32(lanes, _mm512_set1_epi32(int(u.step))));
   __m512i vs = _mm512_add_epi32(_mm512_set1_epi32(int(v.value)), _mm512_mullo_epi32(lanes, _mm512_set1_epi32(int(v.step))));
@@ -163,7 +164,7 @@ void flat_row_vbmi(uint8_t* out, int n, RowCoordinate u, RowCoordinate v, const 
       texels[k] = indices[at[k]], texels[k + 1] = indices[at[k + 1]];
       texels[k + 2] = indices[at[k + 2]], texels[k + 3] = indices[at[k + 3]];
     }
-    _mm512_mask_storeu_epi8(out + i, first_bytes(count), look_up_256(light_table.part, _mm512_load_si512(texels)));
+    _mm512_mask_storeu_epi8(out + i, first_bytes(count), light_table(_mm512_load_si512(texels)));
   }
 }
 
