@@ -112,6 +112,8 @@ struct Wall {
   bool segment() const { return flags & kSegment; }
   bool two_sided() const { return !segment() && sides[1].sector != kNone; }
   bool solid() const { return !two_sided(); }
+  // The sector behind side `side`: kNone when one-sided.
+  int far_sector(int side) const { return two_sided() ? sides[1 - side].sector : kNone; }
   geom::Line line() const { return geom::Line::through(p1, p2); }
   Vec2 at(double t) const { return a + (b - a) * t; }
 };

@@ -176,8 +176,9 @@ int Canvas::near_sector(const level::Wall& w, const WallHit& hit, int x) const {
 }
 
 bool Canvas::draw_wall(int x, const WallHit& hit) {
-  const int near = near_sector(level_->walls[hit.wall], hit, x);
-  return record_step(x, hit, near, [&](int& top, int& bottom) { return draw_hit(x, hit, near, top, bottom); });
+  const level::Wall& w = level_->walls[hit.wall];
+  const int near = near_sector(w, hit, x);
+  return record_step(x, hit, near, w.far_sector(hit.side), [&](int& top, int& bottom) { return draw_hit(x, hit, near, top, bottom); });
 }
 
 void Canvas::draw_walls(std::span<const HitAt> hits, std::vector<int>& closed) {
@@ -296,7 +297,7 @@ bool Canvas::draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom
   const level::SectorState& s = state_->sectors[near];
   const double scale = view_->d / hit.depth;
   auto row = [&](double z) { return view_->row_at(view_->half_h - (z - view_->eye) * scale); };
-  const int far = w.two_sided() ? w.sides[1 - hit.side].sector : kNone;
+  const int far = w.far_sector(hit.side);
   const level::SectorState* b = far != kNone ? &state_->sectors[far] : nullptr;
   const bool both_sky = b && s.ceiling_texture == kSky && b->ceiling_texture == kSky;
   const int light = side.light != kNone ? side.light : s.light;

@@ -204,9 +204,10 @@ class Canvas {
   bool draw_hit(int x, const WallHit& hit, int near, int& top, int& bottom);
   // draw_wall's bookkeeping around draw(top, bottom), which draws the hit into the
   // column's open rows [top, bottom), narrows them and returns whether it shows a
-  // masked middle texture: the column's new rows and sector, its step; true when closed.
+  // masked middle texture: the column's new rows and sector (far, the sector behind the
+  // wall, when it has one), its step; true when closed.
   template <typename Draw>
-  bool record_step(int x, const WallHit& hit, int near, Draw&& draw);
+  bool record_step(int x, const WallHit& hit, int near, int far, Draw&& draw);
   // Doom's rules (draw_doom.cpp): R_StoreWallRange and R_RenderSegLoop for one column.
   bool draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& bottom);
   // What R_RenderSegLoop's columns of one side share, copied out of its DoomSide (set
@@ -473,13 +474,11 @@ inline void Canvas::doom_plane_span(DoomSide& ds, int x, int y0, int y1, bool ce
 }
 
 template <typename Draw>
-bool Canvas::record_step(int x, const WallHit& hit, int near, Draw&& draw) {
+bool Canvas::record_step(int x, const WallHit& hit, int near, int far, Draw&& draw) {
   Column& c = columns_[x];
-  const level::Wall& w = level_->walls[hit.wall];
   int top = c.top, bottom = c.bottom;
   drawn_doom_side_ = kNoDoomSide;
   const bool masked = draw(top, bottom);
-  const int far = w.two_sided() ? w.sides[1 - hit.side].sector : level::kNone;
   if (far != level::kNone) c.sector = far;
   c.top = top;
   c.bottom = bottom;

@@ -114,7 +114,7 @@ void Canvas::set_up_doom_wall(DoomSide& d, const WallHit& hit, int near) {
   const level::SectorState& s = state_->sectors[near];
   d.wall_ready = true;
   d.near = near;
-  d.far = w.two_sided() ? w.sides[1 - hit.side].sector : kNone;
+  d.far = w.far_sector(hit.side);
   const level::SectorState* b = d.far != kNone ? &state_->sectors[d.far] : nullptr;
   const Fixed viewz = view_->fz;
   const Fixed front_floor = fixed_of(s.floor);
@@ -319,11 +319,12 @@ void Canvas::draw_doom_walls(std::span<const HitAt> hits, std::vector<int>& clos
     run_scales_.resize(end - i);
     for (size_t k = i; k < end; ++k)
       run_scales_[k - i] = doom::scale_at(*doom_, run.seg, view_->fangle, hits[k].x, run.max_scale);
+    const int far = run.side->far;  // the run's: one wall side
     for (size_t k = i; k < end; ++k) {
       const int x = hits[k].x;
       const WallHit& hit = hits[k].hit;
       const Fixed scale = run_scales_[k - i];
-      if (record_step(x, hit, near, [&](int& top, int& bottom) { return doom_column(run, x, scale, top, bottom); }))
+      if (record_step(x, hit, near, far, [&](int& top, int& bottom) { return doom_column(run, x, scale, top, bottom); }))
         closed.push_back(x);
     }
     i = end;
