@@ -40,6 +40,7 @@ void columns_to_rows_bytewise(const uint8_t* columns, size_t column_stride, uint
 
 void columns_to_rows(const uint8_t* columns, size_t column_stride, uint8_t* rows, size_t row_pitch, int width,
                      int height) {
+  if (width <= 0 || height <= 0) return;  // nothing to turn (and no buffers to point into)
   if (vector_columns()) {
     const int done = columns_to_rows_vbmi(columns, column_stride, rows, row_pitch, width, height);
     columns += size_t(done) * column_stride, rows += done, width -= done;
