@@ -9,21 +9,14 @@ namespace p3d::render {
 namespace {
 
 #ifdef __SSE2__
-// Sixteen columns' sixteen bytes into sixteen rows: interleaving the bytes of columns
-// i and i + 8, four times over, transposes a 16 x 16 block.
+// Sixteen columns' sixteen bytes into sixteen rows.
 inline void block_to_rows(const uint8_t* columns, size_t column_stride, uint8_t* rows, size_t row_pitch) {
-  __m128i r[16], t[16];
+  __m128i r[16];
 #pragma GCC unroll 16
   for (int i = 0; i < 16; ++i)
     r[i] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(columns + size_t(i) * column_stride));
-#pragma GCC unroll 4
-  for (int pass = 0; pass < 4; ++pass) {
-#pragma GCC unroll 8
-    for (int i = 0; i < 8; ++i)
-      t[2 * i] = _mm_unpacklo_epi8(r[i], r[i + 8]), t[2 * i + 1] = _mm_unpackhi_epi8(r[i], r[i + 8]);
-#pragma GCC unroll 16
-    for (int i = 0; i < 16; ++i) r[i] = t[i];
-  }
+  interleave_16x16(r, [](__m128i a, __m128i b) { return _mm_unpacklo_epi8(a, b); },
+                   [](__m128i a, __m128i b) { return _mm_unpackhi_epi8(a, b); });
 #pragma GCC unroll 16
   for (int i = 0; i < 16; ++i) _mm_storeu_si128(reinterpret_cast<__m128i*>(rows + size_t(i) * row_pitch), r[i]);
 }

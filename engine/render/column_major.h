@@ -19,6 +19,22 @@ namespace p3d::render {
 void columns_to_rows(const uint8_t* columns, size_t column_stride, uint8_t* rows, size_t row_pitch, int width,
                      int height);
 
+// The 16 x 16 byte transpose of each 128-bit lane of 16 registers: interleaving the
+// bytes of registers i and i + 8, four times over, leaves in lane L of register j byte j
+// of lane L of every register, in order. SSE2's registers are one lane; AVX-512's four,
+// turned at once.
+template <typename Vector, typename UnpackLow, typename UnpackHigh>
+inline void interleave_16x16(Vector (&r)[16], UnpackLow unpack_low, UnpackHigh unpack_high) {
+  Vector t[16];
+#pragma GCC unroll 4
+  for (int pass = 0; pass < 4; ++pass) {
+#pragma GCC unroll 8
+    for (int i = 0; i < 8; ++i) t[2 * i] = unpack_low(r[i], r[i + 8]), t[2 * i + 1] = unpack_high(r[i], r[i + 8]);
+#pragma GCC unroll 16
+    for (int i = 0; i < 16; ++i) r[i] = t[i];
+  }
+}
+
 // Whether this processor has AVX-512 VBMI, and the loops below are built.
 bool vector_columns();
 

@@ -55,13 +55,13 @@ struct LitColumn {
 };
 
 // n rows (at most 16) of 64 columns into the frame's rows: register i holds columns i,
-// 16 + i, 32 + i and 48 + i in its four 128-bit lanes; block_to_rows's 16 x 16
-// interleave, done in every lane at once, leaves row j's 64 bytes in register j. Out of
-// line: inlined in its loop, GCC kept the 64 load addresses apart, on the stack.
+// 16 + i, 32 + i and 48 + i in its four 128-bit lanes; the 16 x 16 interleave, done in
+// every lane at once, leaves row j's 64 bytes in register j. Out of line: inlined in
+// its loop, GCC kept the 64 load addresses apart, on the stack.
 [[gnu::noinline]] void rows_of_64_columns(const uint8_t* columns, size_t column_stride, uint8_t* rows,
                                                       size_t row_pitch, int n) {
   const __mmask64 first = first_bytes(n);  // of each lane: nothing read past the column
-  __m512i r[16], t[16];
+  __m512i r[16];
   const size_t lane1 = 16 * column_stride, lane2 = 2 * lane1, lane3 = 3 * lane1;
   const uint8_t* c = columns;
 #pragma GCC unroll 16
@@ -71,14 +71,8 @@ struct LitColumn {
     r[i] = _mm512_mask_loadu_epi8(r[i], first << 32, c + lane2 - 32);
     r[i] = _mm512_mask_loadu_epi8(r[i], first << 48, c + lane3 - 48);
   }
-#pragma GCC unroll 4
-  for (int pass = 0; pass < 4; ++pass) {
-#pragma GCC unroll 8
-    for (int i = 0; i < 8; ++i)
-      t[2 * i] = _mm512_unpacklo_epi8(r[i], r[i + 8]), t[2 * i + 1] = _mm512_unpackhi_epi8(r[i], r[i + 8]);
-#pragma GCC unroll 16
-    for (int i = 0; i < 16; ++i) r[i] = t[i];
-  }
+  interleave_16x16(r, [](__m512i a, __m512i b) { return _mm512_unpacklo_epi8(a, b); },
+                   [](__m512i a, __m512i b) { return _mm512_unpackhi_epi8(a, b); });
   if (n == 16) {
 #pragma GCC unroll 16
     for (int j = 0; j < 16; ++j, rows += row_pitch) _mm512_storeu_si512(rows, r[j]);
