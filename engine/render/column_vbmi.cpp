@@ -58,8 +58,8 @@ struct LitColumn {
 // 16 + i, 32 + i and 48 + i in its four 128-bit lanes; the 16 x 16 interleave, done in
 // every lane at once, leaves row j's 64 bytes in register j. Out of line: inlined in
 // its loop, GCC kept the 64 load addresses apart, on the stack.
-[[gnu::noinline]] void rows_of_64_columns(const uint8_t* columns, size_t column_stride, uint8_t* rows,
-                                                      size_t row_pitch, int n) {
+[[gnu::noinline]] void rows_of_64_columns(const uint8_t* columns, size_t column_stride, uint8_t* rows, size_t row_pitch,
+                                         int n) {
   const __mmask64 first = first_bytes(n);  // of each lane: nothing read past the column
   __m512i r[16];
   const size_t lane1 = 16 * column_stride, lane2 = 2 * lane1, lane3 = 3 * lane1;
@@ -119,10 +119,13 @@ int columns_to_rows_vbmi(const uint8_t* columns, size_t column_stride, uint8_t* 
                          int height) {
   const int blocked = width / 64 * 64;
   for (int x = 0; x < blocked; x += 64) {  // down the columns: each column's line read four times while in L1
-    const uint8_t* block = columns + size_t(x) * column_stride;
+    auto turn = [&](int y, int n) {
+      rows_of_64_columns(columns + size_t(x) * column_stride + size_t(y), column_stride,
+                         rows + size_t(y) * row_pitch + size_t(x), row_pitch, n);
+    };
     int y = 0;
-    for (; y + 16 <= height; y += 16) rows_of_64_columns(block + y, column_stride, rows + size_t(y) * row_pitch + x, row_pitch, 16);
-    if (y < height) rows_of_64_columns(block + y, column_stride, rows + size_t(y) * row_pitch + x, row_pitch, height - y);
+    for (; y + 16 <= height; y += 16) turn(y, 16);
+    if (y < height) turn(y, height - y);
   }
   return blocked;
 }

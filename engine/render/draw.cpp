@@ -178,7 +178,8 @@ int Canvas::near_sector(const level::Wall& w, const WallHit& hit, int x) const {
 bool Canvas::draw_wall(int x, const WallHit& hit) {
   const level::Wall& w = level_->walls[hit.wall];
   const int near = near_sector(w, hit, x);
-  return record_step(x, hit, near, w.far_sector(hit.side), [&](int& top, int& bottom) { return draw_hit(x, hit, near, top, bottom); });
+  return record_step(x, hit, near, w.far_sector(hit.side),
+                     [&](int& top, int& bottom) { return draw_hit(x, hit, near, top, bottom); });
 }
 
 void Canvas::draw_walls(std::span<const HitAt> hits, std::vector<int>& closed) {
