@@ -63,6 +63,7 @@ bool vector_columns() {
 #ifndef P3D_VBMI_COLUMNS
 // Never called: vector_columns() is false.
 void wall_column_vbmi(uint8_t*, int, uint32_t, uint32_t, int, const uint8_t*, const uint8_t*) {}
+void wrapped_column_vbmi(uint8_t*, int, uint32_t, uint32_t, int, const uint8_t*, const uint8_t*) {}
 void tabled_column_vbmi(uint8_t*, int, const uint8_t*, const uint8_t*, int, const uint8_t*) {}
 void flat_row_vbmi(uint8_t*, int, RowCoordinate, RowCoordinate, const uint8_t*, const uint8_t*) {}
 int columns_to_rows_vbmi(const uint8_t*, size_t, uint8_t*, size_t, int, int) { return 0; }

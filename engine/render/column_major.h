@@ -53,6 +53,11 @@ constexpr int kVectorColumnRows = 16;
 // source (rows_log2 <= 8). Only where vector_columns() is true.
 void wall_column_vbmi(uint8_t* out, int count, uint32_t v, uint32_t step, int rows_log2, const uint8_t* source,
                       const uint8_t* light);
+// The same for a column of any number of rows up to 256 (Crispy's textures of 72 or 96
+// rows wrap at their height): row (v + i * step) >> 16 modulo the period rows << 16, v
+// and step below it as the canvas reduces them.
+void wrapped_column_vbmi(uint8_t* out, int count, uint32_t v, uint32_t step, int rows, const uint8_t* source,
+                         const uint8_t* light);
 // count adjacent bytes of a column whose texel rows come from a table (the sky's):
 // out[i] = light[source[rows[i]]], every row below texels (at most 256).
 void tabled_column_vbmi(uint8_t* out, int count, const uint8_t* rows, const uint8_t* source, int texels,

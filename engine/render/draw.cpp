@@ -254,10 +254,12 @@ void Canvas::end_columns() {
 void Canvas::indexed_wall_column(int x, int y0, int count, int64_t v, int64_t step, int64_t period,
                                  const uint8_t* source, const uint8_t* light) {
   const int64_t rows = period >> 16;
-  const bool pow2_rows = (period & 0xFFFF) == 0 && rows > 0 && (rows & (rows - 1)) == 0;
-  if (columns_pending_ && count >= kVectorColumnRows && pow2_rows && rows <= 256)
-    return wall_column_vbmi(column_pixel(x, y0), count, uint32_t(v), uint32_t(step), std::countr_zero(uint64_t(rows)),
-                            source, light);
+  if (columns_pending_ && count >= kVectorColumnRows && (period & 0xFFFF) == 0 && rows > 0 && rows <= 256) {
+    if ((rows & (rows - 1)) == 0)
+      return wall_column_vbmi(column_pixel(x, y0), count, uint32_t(v), uint32_t(step), std::countr_zero(uint64_t(rows)),
+                              source, light);
+    return wrapped_column_vbmi(column_pixel(x, y0), count, uint32_t(v), uint32_t(step), int(rows), source, light);
+  }
   wrapped_column(column_pixel(x, y0), column_pitch_, count, v, step, period, IndexedColumn{source, light});
 }
 

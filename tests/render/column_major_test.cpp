@@ -59,6 +59,39 @@ TEST(ColumnMajor, VectorWallColumnDrawsTheScalarLoopsBytes) {
   }
 }
 
+// Columns of any number of rows to 256 (Crispy's textures wrap at their own height):
+// the scalar loop's bytes, each pixel's v taken modulo the period.
+TEST(ColumnMajor, VectorWrappedColumnDrawsTheScalarLoopsBytes) {
+  if (!vector_columns()) GTEST_SKIP() << "no AVX-512 VBMI on this processor";
+  Rng rng(10);
+  std::vector<uint8_t> light(256);
+  for (uint8_t& b : light) b = uint8_t(rng.next());
+  constexpr int kGuard = 64;
+  for (int rows : {1, 3, 5, 63, 64, 65, 72, 96, 100, 127, 128, 129, 136, 200, 255, 256}) {
+    const int64_t period = int64_t(rows) << 16;
+    std::vector<uint8_t> source(static_cast<size_t>(rows));  // exactly the column: nothing past it is read
+    for (int trial = 0; trial < 300; ++trial) {
+      for (uint8_t& b : source) b = uint8_t(rng.next());
+      const int count = trial < 150 ? rng.range(1, 300) : 64 * rng.range(1, 4) + rng.range(-1, 1);
+      // Below the period, as the canvas reduces them; now and then a step of whole rows,
+      // or the largest, so that every pixel wraps.
+      const uint32_t v = uint32_t(rng.below(uint64_t(period)));
+      const uint32_t step = trial % 10 == 0 ? uint32_t(period - 1)
+                            : trial % 10 == 1 ? uint32_t(rng.below(uint64_t(rows))) << 16
+                                              : uint32_t(rng.below(uint64_t(period)));
+      std::vector<uint8_t> want(static_cast<size_t>(count)), got(static_cast<size_t>(count + 2 * kGuard), 0x5A);
+      wrapped_column(want.data(), 1, count, v, step, period, IndexedColumn{source.data(), light.data()});
+      wrapped_column_vbmi(got.data() + kGuard, count, v, step, rows, source.data(), light.data());
+      const std::string what = std::to_string(rows) + " rows, " + std::to_string(count) + " pixels";
+      for (int i = 0; i < count; ++i) ASSERT_EQ(got[size_t(kGuard + i)], want[size_t(i)]) << what << ", pixel " << i;
+      for (int i = 0; i < kGuard; ++i) {
+        ASSERT_EQ(got[size_t(i)], 0x5A) << what << ": wrote before the column";
+        ASSERT_EQ(got[size_t(kGuard + count + i)], 0x5A) << what << ": wrote past the column";
+      }
+    }
+  }
+}
+
 TEST(ColumnMajor, TabledColumnLooksUpEachRowsTexel) {
   if (!vector_columns()) GTEST_SKIP() << "no AVX-512 VBMI on this processor";
   Rng rng(8);
