@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+
+#include "engine/image/deflate_find_runs.h"
 #include "engine/image/deflate_runs.h"
 #include "engine/util/rng.h"
 
@@ -115,6 +118,43 @@ TEST(DeflateRuns, LiteralsOfTheLongestCodesComeBackFourToAPut) {
   bytes.insert(bytes.end(), most, uint8_t(15 * 16));
   ASSERT_EQ(bytes.size(), size_t(65535));
   expect_round_trip(bytes, "powers of two, the rarest first");
+}
+
+// The scans for runs 64 bytes at a time (AVX-512BW) find the SSE2 scans' very runs and
+// count the same literals, so the stream is the same on any processor: runs of every
+// length from 1 to 300 among literals, blocks starting and ending anywhere.
+TEST(DeflateRuns, WideScansFindTheSameRuns) {
+#if defined(__x86_64__)
+  if (!__builtin_cpu_supports("avx512f") || !__builtin_cpu_supports("avx512bw"))
+    GTEST_SKIP() << "no AVX-512BW on this processor";
+  Rng rng(13);
+  for (int trial = 0; trial < 400; ++trial) {
+    std::vector<uint8_t> in;
+    const size_t size = size_t(rng.range(1, trial < 200 ? 300 : 6000));
+    while (in.size() < size) {  // short stretches and long runs, of few byte values (so runs meet)
+      const size_t length = size_t(rng.below(4) == 0 ? rng.range(1, 300) : rng.range(1, 24));
+      in.insert(in.end(), length, uint8_t(rng.below(3) == 0 ? rng.next() : rng.below(3)));
+    }
+    const size_t begin = size_t(rng.below(in.size())), end = begin + size_t(rng.below(in.size() - begin + 1));
+    const size_t readable = end + size_t(rng.below(in.size() - end + 1));
+    const size_t room = (end - begin) / deflate::kShortestMatch + 1;
+    std::vector<deflate::Run> narrow(room), wide(room);
+    std::array<uint32_t, 286> narrow_counts{}, wide_counts{};
+    const size_t n = deflate::find_runs<deflate::Sse2Scan>(in.data(), begin, end, readable, narrow.data(),
+                                                            narrow_counts.data());
+    const size_t w = deflate::find_runs_avx512(in.data(), begin, end, readable, wide.data(), wide_counts.data());
+    const std::string what = "trial " + std::to_string(trial) + ", bytes [" + std::to_string(begin) + ", " +
+                             std::to_string(end) + ") of " + std::to_string(in.size());
+    ASSERT_EQ(w, n) << what;
+    for (size_t r = 0; r < n; ++r) {
+      ASSERT_EQ(wide[r].at, narrow[r].at) << what << ", run " << r;
+      ASSERT_EQ(wide[r].length, narrow[r].length) << what << ", run " << r;
+    }
+    ASSERT_EQ(wide_counts, narrow_counts) << what;
+  }
+#else
+  GTEST_SKIP() << "the AVX-512 scans are built on x86-64 only";
+#endif
 }
 
 TEST(DeflateRuns, RunsCompress) {
