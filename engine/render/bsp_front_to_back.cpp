@@ -169,7 +169,7 @@ class BspFrontToBack final : public Renderer {
     // Doom's rules clip a sprite by the walls' silhouettes, not by what the walk culls:
     // every thing goes to the canvas, as in the reference (projected once a frame: render).
     const bool every_thing = view.doom != nullptr;
-    if (every_thing) s.canvas.add_projected_sprites(projected_);
+    if (every_thing) s.canvas.add_projected_sprites(projected_, true);
     while (!s.stack.empty() && !s.mask.full()) {
       const Item item = s.stack.back();
       s.stack.pop_back();

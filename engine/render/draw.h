@@ -106,8 +106,10 @@ class Canvas {
   // clipped to the screen, once a frame for all the strips rather than by each.
   static void project_doom_sprites(const level::Level& level, const level::State& state, const View& view,
                                    std::vector<Sprite>& out);
-  // Those of a frame's projected sprites that cross this canvas's columns.
-  void add_projected_sprites(std::span<const Sprite> sprites);
+  // Those of a frame's projected sprites that cross this canvas's columns. With
+  // `all`, they are every sprite the canvas will draw, added before any wall: a
+  // column's steps are then kept only where a sprite or a masked middle needs them.
+  void add_projected_sprites(std::span<const Sprite> sprites, bool all = false);
 
   // A thing that may be seen, by its index in state.things (the BSP renderer adds those
   // its walk reaches, the others all of them); things showing no frame are ignored.
@@ -152,6 +154,7 @@ class Canvas {
     int top, bottom;  // open rows [top, bottom)
     int sector;
     uint32_t nearest_masked = UINT32_MAX;  // its first step with a masked middle texture (none: UINT32_MAX)
+    bool sprite = false;                   // a sprite crosses it (add_projected_sprites)
   };
   // One wall met by one column, front to back: what stays open behind it.
   static constexpr uint32_t kNoDoomSide = UINT32_MAX;
@@ -376,6 +379,7 @@ class Canvas {
   std::vector<PaintedPlane> painted_;
   size_t painted_count_ = 0;
   std::vector<Sprite> sprites_;
+  bool sprites_known_ = false;  // sprites_ holds every sprite of the strip (add_projected_sprites)
   std::vector<uint32_t> things_drawn_;
   int x0_ = 0, x1_ = 0;  // the columns this canvas owns
   std::vector<int> layer_cursor_;  // draw_layers: per column, the farthest step not yet passed
@@ -483,7 +487,7 @@ bool Canvas::record_step(int x, const WallHit& hit, int near, int far, Draw&& dr
   c.top = top;
   c.bottom = bottom;
   if (masked && c.nearest_masked == UINT32_MAX) c.nearest_masked = uint32_t(steps_[x].size());
-  steps_[x].push_back({hit, near, far, top, bottom, masked, drawn_doom_side_});
+  if (masked || c.sprite || !sprites_known_) steps_[x].push_back({hit, near, far, top, bottom, masked, drawn_doom_side_});
   if (top < bottom) return false;
   close(x, hit);
   return true;

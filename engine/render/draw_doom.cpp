@@ -635,11 +635,14 @@ void Canvas::project_doom_sprites(const level::Level& level, const level::State&
     if (project_doom_sprite(level, state, view, i, s)) out.push_back(s);
 }
 
-void Canvas::add_projected_sprites(std::span<const Sprite> sprites) {
+void Canvas::add_projected_sprites(std::span<const Sprite> sprites, bool all) {
   for (Sprite s : sprites) {
     s.x0 = std::max(s.x0, x0_), s.x1 = std::min(s.x1, x1_ - 1);
-    if (s.x0 <= s.x1) sprites_.push_back(s);
+    if (s.x0 > s.x1) continue;
+    sprites_.push_back(s);
+    for (int x = s.x0; x <= s.x1; ++x) columns_[x].sprite = true;
   }
+  sprites_known_ = all;
 }
 
 
