@@ -154,13 +154,18 @@ class BspFrontToBack final : public Renderer {
     std::vector<uint32_t> fragments_drawn;
     std::vector<int32_t> entered;  // the nodes and leaves (leaf_child values) walked into
     std::vector<Canvas::HitAt> hits;  // draw_fragment's scratch
+    std::vector<int32_t> hit_x;       // and open_column_hits_avx512's
+    std::vector<double> hit_depth, hit_t;
     std::vector<int> closed;
     RenderStats stats;
+    bool vector_projection = false;
   };
 
   void walk(const level::Level& level, const View& view, const Camera& camera, Strip& s) {
     s.mask.reset(view.width);
     s.mask.close_outside(s.x0, s.x1);
+    s.vector_projection = vector_projection();
+    if (s.vector_projection) s.hit_x.resize(size_t(view.width)), s.hit_depth.resize(size_t(view.width)), s.hit_t.resize(size_t(view.width));
     s.stats = {};
     s.fragments_drawn.clear();
     s.entered.clear();
@@ -321,10 +326,16 @@ class BspFrontToBack final : public Renderer {
     if (range.empty()) return false;
     const WallProjector projector(view, wall.a, wall.b);
     s.hits.clear();  // the open columns' hits, then drawn together
-    s.mask.for_each_open(range.x0, range.x1, [&](int x) {
-      double depth, t;
-      if (projector.hit(x, depth, t) && in_fragment(f, t)) s.hits.push_back({x, {f.wall, side, depth, t, int32_t(i)}});
-    });
+    if (s.vector_projection) {
+      const size_t n = open_column_hits_avx512(projector, span_of(f), s.mask.words(), range.x0, range.x1,
+                                               {s.hit_x.data(), s.hit_depth.data(), s.hit_t.data()});
+      for (size_t k = 0; k < n; ++k) s.hits.push_back({s.hit_x[k], {f.wall, side, s.hit_depth[k], s.hit_t[k], int32_t(i)}});
+    } else {
+      s.mask.for_each_open(range.x0, range.x1, [&](int x) {
+        double depth, t;
+        if (projector.hit(x, depth, t) && in_fragment(f, t)) s.hits.push_back({x, {f.wall, side, depth, t, int32_t(i)}});
+      });
+    }
     s.closed.clear();
     s.canvas.draw_walls(s.hits, s.closed);
     for (const int x : s.closed) s.mask.close(x);

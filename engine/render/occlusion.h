@@ -30,6 +30,7 @@ class ColumnMask {
   bool full() const { return closed_ == width_; }
   int closed_count() const { return closed_; }
   bool is_closed(int x) const { return words_[x >> 6] >> (x & 63) & 1; }
+  const uint64_t* words() const { return words_.data(); }  // bit x of word x / 64: column x closed
 
   void close(int x) {
     uint64_t& w = words_[x >> 6];

@@ -50,4 +50,20 @@ ColumnRange columns_of_box(const View& v, const geom::BBox& box) {
   return project(v, pts, 4);
 }
 
+bool vector_projection() {
+#ifdef P3D_AVX512_PROJECTION
+  static const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl");
+  return avx512;
+#else
+  return false;
+#endif
+}
+
+#ifndef P3D_AVX512_PROJECTION
+// Never called: vector_projection() is false.
+size_t open_column_hits_avx512(const WallProjector&, const FragmentSpan&, const uint64_t*, int, int, RayHits) {
+  return 0;
+}
+#endif
+
 }  // namespace p3d::render

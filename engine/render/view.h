@@ -130,6 +130,28 @@ inline bool in_fragment(const level::Fragment& f, double t) {
   return t >= f.t0 && (f.cut[1] == level::kNone ? t <= f.t1 : t < f.t1);
 }
 
+// A fragment's share of its wall as in_fragment takes it: [t0, t1], or [t0, t1) when
+// cut at t1.
+struct FragmentSpan {
+  double t0, t1;
+  bool t1_closed;
+};
+inline FragmentSpan span_of(const level::Fragment& f) { return {f.t0, f.t1, f.cut[1] == level::kNone}; }
+
+// Where the rays of open columns hit: parallel arrays with room for every column asked about.
+struct RayHits {
+  int32_t* x;
+  double* depth;
+  double* t;
+};
+// Whether this processor has AVX-512 (F and VL), and open_column_hits_avx512 is built.
+bool vector_projection();
+// WallProjector::hit and in_fragment for each column of [x0, x1] whose bit in `closed`
+// (ColumnMask's words) is clear, eight at a time: the hits in column order, how many.
+// The same hits as the scalar test, to the bit. Only where vector_projection() is true.
+size_t open_column_hits_avx512(const WallProjector& p, const FragmentSpan& span, const uint64_t* closed, int x0, int x1,
+                               RayHits out);
+
 // A conservative range of screen columns [x0, x1]; empty when x0 > x1.
 struct ColumnRange {
   int x0 = 1, x1 = 0;
