@@ -105,8 +105,8 @@ struct Sse2Scan {
 
 // The runs of bytes [begin, end) (a run may repeat the byte before `begin`), found by
 // Scan's next_run and run_length, and the frequencies of the block's symbols: its
-// literals (every byte outside a run) and its runs' length codes. `runs` has room for (end - begin) / kShortestMatch + 1. Returns
-// how many runs.
+// literals (every byte outside a run) and its runs' length codes. `runs` has room for
+// (end - begin) / kShortestMatch + 1. Returns how many runs.
 // The literals between two runs are counted (and written, write_block) four at a time,
 // the last four masked to what is left: they may read three bytes past the stretch,
 // so they do where that is inside the input (bytes [0, readable)). A loop for the last

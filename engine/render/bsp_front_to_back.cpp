@@ -164,8 +164,11 @@ class BspFrontToBack final : public Renderer {
   void walk(const level::Level& level, const View& view, const Camera& camera, Strip& s) {
     s.mask.reset(view.width);
     s.mask.close_outside(s.x0, s.x1);
-    s.vector_projection = vector_projection();
-    if (s.vector_projection) s.hit_x.resize(size_t(view.width)), s.hit_depth.resize(size_t(view.width)), s.hit_t.resize(size_t(view.width));
+    s.vector_projection = vector_columns_ && vector_projection();
+    if (s.vector_projection) {
+      const size_t width = size_t(view.width);
+      s.hit_x.resize(width), s.hit_depth.resize(width), s.hit_t.resize(width);
+    }
     s.stats = {};
     s.fragments_drawn.clear();
     s.entered.clear();
@@ -329,11 +332,13 @@ class BspFrontToBack final : public Renderer {
     if (s.vector_projection) {
       const size_t n = open_column_hits_avx512(projector, span_of(f), s.mask.words(), range.x0, range.x1,
                                                {s.hit_x.data(), s.hit_depth.data(), s.hit_t.data()});
-      for (size_t k = 0; k < n; ++k) s.hits.push_back({s.hit_x[k], {f.wall, side, s.hit_depth[k], s.hit_t[k], int32_t(i)}});
+      for (size_t k = 0; k < n; ++k)
+        s.hits.push_back({s.hit_x[k], {f.wall, side, s.hit_depth[k], s.hit_t[k], int32_t(i)}});
     } else {
       s.mask.for_each_open(range.x0, range.x1, [&](int x) {
         double depth, t;
-        if (projector.hit(x, depth, t) && in_fragment(f, t)) s.hits.push_back({x, {f.wall, side, depth, t, int32_t(i)}});
+        if (projector.hit(x, depth, t) && in_fragment(f, t))
+          s.hits.push_back({x, {f.wall, side, depth, t, int32_t(i)}});
       });
     }
     s.closed.clear();

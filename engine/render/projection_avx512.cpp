@@ -42,7 +42,8 @@ size_t open_column_hits_avx512(const WallProjector& p, const FragmentSpan& span,
       const __m512d from_start = _mm512_add_pd(end0, _mm512_mul_pd(span_depth, t));
       const __m512d from_end = _mm512_sub_pd(end1, _mm512_mul_pd(span_depth, _mm512_sub_pd(one, t)));
       const __m512d depth = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(t, half, _CMP_LE_OQ), from_end, from_start);
-      const __mmask8 below_end = span.t1_closed ? _mm512_cmp_pd_mask(t, t1, _CMP_LE_OQ) : _mm512_cmp_pd_mask(t, t1, _CMP_LT_OQ);
+      const __mmask8 below_end =
+          span.t1_closed ? _mm512_cmp_pd_mask(t, t1, _CMP_LE_OQ) : _mm512_cmp_pd_mask(t, t1, _CMP_LT_OQ);
       const __mmask8 in_span = _mm512_cmp_pd_mask(t, t0, _CMP_GE_OQ) & below_end;
       const __mmask8 hit = lanes_open & apart & _mm512_cmp_pd_mask(depth, near, _CMP_GT_OQ) & in_span;
       if (!hit) continue;

@@ -18,7 +18,7 @@ struct RendererOptions {
   double sphere_relaxation = 1.6;  // over-relaxation factor omega in [1, 2); 1 is plain sphere tracing
   int sphere_max_steps = 512;      // marching steps before a ray gives up (grazing rays)
   int threads = 1;                 // bsp: threads drawing the frame's column strips (same frame for any count)
-  bool vector_columns = true;      // bsp: AVX-512 VBMI column and flat loops where the processor has them (same frame)
+  bool vector_columns = true;      // bsp: AVX-512 column, flat and projection loops where the processor has them (same frame)
 };
 
 class Renderer {

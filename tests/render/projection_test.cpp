@@ -32,7 +32,8 @@ TEST(Projection, VectorHitsAreTheScalarHits) {
       p.end_depth[i] = rng.uniform(-20, 500);
     }
     if (trial % 7 == 0) p.side0[0] = 0, p.side_dx[0] = 0;  // an end on every ray: t = 0
-    if (trial % 11 == 0) p.side0[1] = -p.side0[0], p.side_dx[1] = -p.side_dx[0];  // t = 0.5 exactly, where the depth's two sums part
+    // t = 0.5 exactly, where the depth's two sums may part in the last bit
+    if (trial % 11 == 0) p.side0[1] = -p.side0[0], p.side_dx[1] = -p.side_dx[0];
     if (trial % 2) {  // Doom's rays: a column's own lateral offset
       for (int x = 0; x < width; ++x) lateral[size_t(x)] = (x - width / 2) * rng.uniform(0.9, 1.1);
       p.lateral = lateral.data();
@@ -47,7 +48,8 @@ TEST(Projection, VectorHitsAreTheScalarHits) {
     std::vector<Hit> want;
     mask.for_each_open(x0, x1, [&](int x) {
       double depth, t;
-      if (p.hit(x, depth, t) && t >= span.t0 && (span.t1_closed ? t <= span.t1 : t < span.t1)) want.push_back({x, depth, t});
+      if (p.hit(x, depth, t) && t >= span.t0 && (span.t1_closed ? t <= span.t1 : t < span.t1))
+        want.push_back({x, depth, t});
     });
     std::vector<int32_t> xs(static_cast<size_t>(width));
     std::vector<double> depths(static_cast<size_t>(width)), ts(static_cast<size_t>(width));
