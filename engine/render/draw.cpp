@@ -115,6 +115,7 @@ void Canvas::begin_strip(const level::Level& level, const level::State& state, c
   for (int x = x0_; x < x1_; ++x) steps_[x].clear();
   sprites_.clear();
   sprites_known_ = false;
+  vector_scales_ = vector_columns_allowed_ && vector_projection();
   things_drawn_.clear();
   fuzz_ready_ = level.generation != 0 && fuzz_index_for_ == level.generation;
   indexed_ = !level.light_indices.empty();

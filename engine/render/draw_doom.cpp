@@ -317,8 +317,22 @@ void Canvas::draw_doom_walls(std::span<const HitAt> hits, std::vector<int>& clos
     // The run's scales first: their divisions overlap one another rather than each
     // waiting behind the last column's work.
     run_scales_.resize(end - i);
-    for (size_t k = i; k < end; ++k)
-      run_scales_[k - i] = doom::scale_at(*doom_, run.seg, view_->fangle, hits[k].x, run.max_scale);
+    if (vector_scales_) {  // scale_at's two sines looked up, the rest eight at a time
+      run_sines_.resize(2 * (end - i));
+      Fixed* sine_view = run_sines_.data();
+      Fixed* sine_seg = sine_view + (end - i);
+      const doom::Tables& t = *doom_;
+      for (size_t k = i; k < end; ++k) {
+        const Angle beside = t.xtoviewangle[size_t(hits[k].x)];
+        sine_view[k - i] = play::sine(kAngle90 + beside);
+        sine_seg[k - i] = play::sine(kAngle90 + (view_->fangle + beside - run.seg.normal));
+      }
+      doom_scales_avx512(sine_view, sine_seg, end - i, t.projection, run.seg.distance, run.max_scale,
+                         run_scales_.data());
+    } else {
+      for (size_t k = i; k < end; ++k)
+        run_scales_[k - i] = doom::scale_at(*doom_, run.seg, view_->fangle, hits[k].x, run.max_scale);
+    }
     const int far = run.side->far;  // the run's: one wall side
     for (size_t k = i; k < end; ++k) {
       const int x = hits[k].x;

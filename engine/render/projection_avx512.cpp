@@ -56,4 +56,39 @@ size_t open_column_hits_avx512(const WallProjector& p, const FragmentSpan& span,
   return n;
 }
 
+void doom_scales_avx512(const doom::Fixed* sine_view, const doom::Fixed* sine_seg, size_t n, doom::Fixed projection,
+                        doom::Fixed distance, doom::Fixed max_scale, doom::Fixed* out) {
+  const __m512i projections = _mm512_set1_epi64(projection), distances = _mm512_set1_epi64(distance);
+  const __m512i most = _mm512_set1_epi64(max_scale), least = _mm512_set1_epi64(256);
+  const __m512i int_min = _mm512_set1_epi64(INT32_MIN), int_max = _mm512_set1_epi64(INT32_MAX);
+  const __m512i zero = _mm512_setzero_si512();
+  // A 64-bit product's low 32 bits, sign-extended: the Fixed it is cast to.
+  auto as_fixed = [](__m512i v) { return _mm512_cvtepi32_epi64(_mm512_cvtepi64_epi32(v)); };
+  for (size_t i = 0; i < n; i += 8) {
+    const __mmask8 lanes = n - i >= 8 ? __mmask8(0xFF) : __mmask8((1u << (n - i)) - 1);
+    const __m512i sinea = _mm512_cvtepi32_epi64(_mm256_maskz_loadu_epi32(lanes, sine_view + i));
+    const __m512i sineb = _mm512_cvtepi32_epi64(_mm256_maskz_loadu_epi32(lanes, sine_seg + i));
+    const __m512i num = as_fixed(_mm512_srai_epi64(_mm512_mullo_epi64(projections, sineb), 16));
+    const __m512i den = as_fixed(_mm512_srai_epi64(_mm512_mullo_epi64(distances, sinea), 16));
+    const __mmask8 in_front = _mm512_cmpgt_epi64_mask(den, _mm512_srai_epi64(num, 16));
+    // fixed_div: saturated where |num| >> 14 >= |den|, else (num << 16) / den truncated.
+    const __mmask8 saturated =
+        _mm512_cmpge_epi64_mask(_mm512_srai_epi64(_mm512_abs_epi64(num), 14), _mm512_abs_epi64(den));
+    const __mmask8 negative = _mm512_cmplt_epi64_mask(_mm512_xor_si512(num, den), zero);
+    // The quotient in doubles, truncated, is the integer one: n = num << 16 and den are
+    // exact (|n| < 2^47), the division is correctly rounded, so its error is below
+    // |n| / |den| * 2^-53 < 1 / |den|, and a quotient that is not a whole number lies at
+    // least 1 / |den| from one. (A saturated lane's division may be by zero: unused.)
+    const __m512d quotient = _mm512_div_pd(_mm512_cvtepi64_pd(_mm512_slli_epi64(num, 16)), _mm512_cvtepi64_pd(den));
+    const __m512i q = _mm512_cvttpd_epi64(quotient);
+    const __m512i saturation = _mm512_mask_blend_epi64(negative, int_max, int_min);
+    __m512i scale = _mm512_mask_blend_epi64(saturated, as_fixed(q), saturation);
+    // Both clamps judged on the quotient, max_scale's applied last: it wins, as in scale_at.
+    const __mmask8 above = _mm512_cmpgt_epi64_mask(scale, most), below = _mm512_cmplt_epi64_mask(scale, least);
+    scale = _mm512_mask_blend_epi64(below, scale, least);
+    scale = _mm512_mask_blend_epi64(above | ~in_front, scale, most);
+    _mm256_mask_storeu_epi32(out + i, lanes, _mm512_cvtepi64_epi32(scale));
+  }
+}
+
 }  // namespace p3d::render

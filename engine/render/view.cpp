@@ -52,7 +52,8 @@ ColumnRange columns_of_box(const View& v, const geom::BBox& box) {
 
 bool vector_projection() {
 #ifdef P3D_AVX512_PROJECTION
-  static const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl");
+  static const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+                             __builtin_cpu_supports("avx512dq");
   return avx512;
 #else
   return false;
@@ -64,6 +65,8 @@ bool vector_projection() {
 size_t open_column_hits_avx512(const WallProjector&, const FragmentSpan&, const uint64_t*, int, int, RayHits) {
   return 0;
 }
+void doom_scales_avx512(const doom::Fixed*, const doom::Fixed*, size_t, doom::Fixed, doom::Fixed, doom::Fixed,
+                        doom::Fixed*) {}
 #endif
 
 }  // namespace p3d::render

@@ -144,13 +144,20 @@ struct RayHits {
   double* depth;
   double* t;
 };
-// Whether this processor has AVX-512 (F and VL), and open_column_hits_avx512 is built.
+// Whether this processor has AVX-512 (F, VL and DQ), and the loops below are built.
 bool vector_projection();
 // WallProjector::hit and in_fragment for each column of [x0, x1] whose bit in `closed`
 // (ColumnMask's words) is clear, eight at a time: the hits in column order, how many.
 // The same hits as the scalar test, to the bit. Only where vector_projection() is true.
 size_t open_column_hits_avx512(const WallProjector& p, const FragmentSpan& span, const uint64_t* closed, int x0, int x1,
                                RayHits out);
+// doom::scale_at for n columns of one seg from their two sines (of kAngle90 plus the
+// column's angle from the view's axis, and plus its angle from the seg's normal), eight
+// at a time: R_ScaleFromGlobalAngle's products, its division (in doubles, which give
+// the integer quotient exactly here) and its clamps, the same scales to the bit. Only
+// where vector_projection() is true.
+void doom_scales_avx512(const doom::Fixed* sine_view, const doom::Fixed* sine_seg, size_t n, doom::Fixed projection,
+                        doom::Fixed distance, doom::Fixed max_scale, doom::Fixed* out);
 
 // A conservative range of screen columns [x0, x1]; empty when x0 > x1.
 struct ColumnRange {

@@ -2,9 +2,14 @@
 // WallProjector::hit and in_fragment: the same hits, in column order, to the bit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "engine/play/angle.h"
+#include "engine/render/doom_rules.h"
 #include "engine/render/occlusion.h"
 #include "engine/render/view.h"
 #include "engine/util/rng.h"
@@ -60,6 +65,68 @@ TEST(Projection, VectorHitsAreTheScalarHits) {
     hits += n;
   }
   EXPECT_GT(hits, size_t(60000));  // rays that meet the segment, and many that do not
+}
+
+// Doom's wall scales eight at a time: doom::scale_at's, to the bit, for random segs,
+// views and columns (the division in doubles, saturated quotients, the clamps), at
+// Crispy's and vanilla's widths; and for raw quotients chosen just below whole numbers.
+TEST(Projection, VectorScalesAreScaleAt) {
+  if (!vector_projection()) GTEST_SKIP() << "no AVX-512 on this processor";
+  Rng rng(22);
+  size_t clamped = 0, saturated = 0;
+  for (const auto& [width, height] : {std::pair{640, 400}, std::pair{320, 200}, std::pair{1920, 1080}}) {
+    const doom::Tables& t = doom::tables(width, height);
+    for (int trial = 0; trial < 3000; ++trial) {
+      doom::Seg seg;
+      seg.normal = doom::Angle(rng.next());
+      // Distances near and far (down to zero and negative: a seg seen edge-on or behind).
+      seg.distance = trial % 3 == 0 ? doom::Fixed(rng.next()) : doom::Fixed(rng.below(uint64_t(1) << (10 + trial % 20)));
+      const doom::Angle view_angle = doom::Angle(rng.next());
+      const doom::Fixed max_scale = trial % 8 == 0   ? doom::Fixed(rng.range(1, 512))  // below 256: the clamps' order
+                                    : trial % 4 == 0 ? doom::Fixed(rng.range(1, 1 << 30))
+                                                     : 64 * doom::kFracUnit;
+      const size_t n = size_t(rng.range(1, 40));
+      std::vector<int> xs(n);
+      std::vector<doom::Fixed> sine_view(n), sine_seg(n), got(n + 8, 0x5A5A5A5A);
+      for (size_t k = 0; k < n; ++k) {
+        xs[k] = int(rng.below(uint64_t(width)));
+        const doom::Angle beside = t.xtoviewangle[size_t(xs[k])];
+        sine_view[k] = play::sine(play::kAngle90 + beside);
+        sine_seg[k] = play::sine(play::kAngle90 + (view_angle + beside - seg.normal));
+      }
+      doom_scales_avx512(sine_view.data(), sine_seg.data(), n, t.projection, seg.distance, max_scale, got.data());
+      for (size_t k = 0; k < n; ++k) {
+        const doom::Fixed want = doom::scale_at(t, seg, view_angle, xs[k], max_scale);
+        ASSERT_EQ(got[k], want) << width << " columns, trial " << trial << ", x " << xs[k];
+        clamped += want == max_scale || want == 256;
+        const doom::Fixed num = play::fixed_mul(t.projection, sine_seg[k]);
+        const doom::Fixed den = play::fixed_mul(seg.distance, sine_view[k]);
+        saturated += den > (num >> doom::kFracBits) && (std::abs(int64_t(num)) >> 14) >= std::abs(int64_t(den));
+      }
+      for (size_t k = n; k < n + 8; ++k) ASSERT_EQ(got[k], 0x5A5A5A5A) << "wrote past the columns";
+    }
+  }
+  EXPECT_GT(clamped, size_t(1000));  // every branch of scale_at taken
+  EXPECT_GT(saturated, size_t(10));
+
+  // Sines of one: the products are the projection and the distance themselves, so the
+  // quotient (num << 16) / den can be put just below (or above) a whole number, where a
+  // division in doubles could round across it.
+  auto reference = [](doom::Fixed num, doom::Fixed den, doom::Fixed max_scale) {
+    if (den <= (num >> doom::kFracBits)) return max_scale;
+    const doom::Fixed scale = play::fixed_div(num, den);
+    return scale > max_scale ? max_scale : scale < 256 ? 256 : scale;
+  };
+  const std::vector<doom::Fixed> ones(8, doom::kFracUnit);
+  for (int trial = 0; trial < 200000; ++trial) {
+    const doom::Fixed den = doom::Fixed(rng.range(1 << 16, INT32_MAX)) * (trial % 2 ? 1 : -1);
+    const int64_t whole = int64_t(rng.range(1, 1 << 14)) * (trial % 4 < 2 ? 1 : -1);
+    const int64_t dividend = whole * den + (trial % 3 == 0 ? 1 : -1);  // one off a multiple of den
+    const doom::Fixed num = doom::Fixed(std::clamp<int64_t>(dividend >> 16, INT32_MIN, INT32_MAX));
+    doom::Fixed got[8];
+    doom_scales_avx512(ones.data(), ones.data(), 1, num, den, INT32_MAX, got);
+    ASSERT_EQ(got[0], reference(num, den, INT32_MAX)) << "num " << num << ", den " << den;
+  }
 }
 
 }  // namespace
