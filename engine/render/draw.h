@@ -218,8 +218,17 @@ class Canvas {
   // rather than reading them again behind every pixel store (bytes may alias anything).
   struct DoomRun;
   DoomRun doom_run(DoomSide& ds, const WallHit& hit, int near);
-  // One column of R_RenderSegLoop from its side's run.
-  bool doom_column(DoomRun& run, int x, doom::Fixed scale, int& top, int& bottom);
+  // A column's wall edges as screen rows before any clip: R_RenderSegLoop's yl and yh
+  // (top, bottom) and its upper and lower parts' mid rows (high, low; set only where
+  // the run has those parts).
+  struct EdgeRows {
+    std::vector<int32_t> top, bottom, high, low;
+  };
+  // The edges of n columns of a run from their scales, worked out together before any
+  // column is drawn (eight at a time where vector_scales_).
+  void doom_edge_rows(const DoomRun& run, const doom::Fixed* scales, size_t n, EdgeRows& rows) const;
+  // One column of R_RenderSegLoop from its side's run; k its place in the run's rows.
+  bool doom_column(DoomRun& run, int x, doom::Fixed scale, const EdgeRows& edges, size_t k, int& top, int& bottom);
   void draw_doom_walls(std::span<const HitAt> hits, std::vector<int>& closed);
   // A step's DoomSide: the one its column drew, so the sprites' scan of every
   // column's walls skips the search for the seg.
@@ -435,6 +444,7 @@ class Canvas {
   uint32_t doom_stamp_ = 0;
   std::vector<doom::Fixed> run_scales_;  // draw_doom_walls' scratch: a run's columns' scales
   std::vector<doom::Fixed> run_sines_;   // and their two sines each (doom_scales_avx512)
+  EdgeRows run_edges_;                    // and their edges' rows
   bool vector_scales_ = false;           // this frame: the scales eight at a time (vector_projection())
   uint32_t drawn_doom_side_ = kNoDoomSide;  // the DoomSide draw_hit_doom last drew, for its Step
   // This frame's sides in the order first met, packed: a strip touches a few hundred of

@@ -203,9 +203,31 @@ Canvas::DoomRun Canvas::doom_run(DoomSide& ds, const WallHit& hit, int near) {
   return r;
 }
 
+// The edges' rows: centery - world * scale in the run's fixed point (Crispy's in 64
+// bits, vanilla's wrapping in 32), rounded up for a top edge (the first row whose top
+// lies within the wall) and down for a bottom one.
+void Canvas::doom_edge_rows(const DoomRun& r, const Fixed* scales, size_t n, EdgeRows& rows) const {
+  const int64_t round_up = (int64_t(1) << r.bits) - 1;
+  auto fill = [&](std::vector<int32_t>& out, Fixed world, int64_t round) {
+    out.resize(n);
+    if (vector_scales_)
+      return doom_edge_rows_avx512(scales, n, world, r.center, r.bits, r.crispy, round, out.data());
+    for (size_t k = 0; k < n; ++k) {
+      const int64_t product = (int64_t(world) * scales[k]) >> kFracBits;
+      const int64_t edge = r.crispy ? r.center - product : int64_t(play::wrap_sub(Fixed(r.center), Fixed(product)));
+      out[k] = int32_t(std::clamp<int64_t>((edge + round) >> r.bits, INT_MIN / 2, INT_MAX / 2));
+    }
+  };
+  fill(rows.top, r.top, round_up);
+  fill(rows.bottom, r.bottom, 0);
+  if (r.upper) fill(rows.high, r.high, 0);
+  if (r.lower) fill(rows.low, r.low, round_up);
+}
+
 // One column of R_RenderSegLoop. [top, bottom) are the open rows: Doom's ceilingclip + 1
 // and floorclip.
-[[gnu::always_inline]] inline bool Canvas::doom_column(DoomRun& r, int x, Fixed scale, int& top, int& bottom) {
+[[gnu::always_inline]] inline bool Canvas::doom_column(DoomRun& r, int x, Fixed scale, const EdgeRows& edges, size_t k,
+                                                       int& top, int& bottom) {
   const doom::Tables& t = *doom_;
   drawn_doom_side_ = r.side_index;
   // What a drawn part's texels need, worked out for the column's first drawn part: most
@@ -223,16 +245,8 @@ Canvas::DoomRun Canvas::doom_run(DoomSide& ds, const WallHit& hit, int near) {
     doom_wall_rows(x, y0, y1, r.textures[part], r.mid[part], int32_t(play::wrap_add(column, r.part_x[part]) >> kFracBits),
                    iscale, map);
   };
-  const int64_t unit = int64_t(1) << r.bits;
-  auto edge = [&](Fixed world) -> int64_t {
-    const int64_t product = (int64_t(world) * scale) >> kFracBits;
-    return r.crispy ? r.center - product : int64_t(play::wrap_sub(Fixed(r.center), Fixed(product)));
-  };
-  auto row_up = [&](Fixed world) { return int(std::clamp<int64_t>((edge(world) + unit - 1) >> r.bits, INT_MIN / 2, INT_MAX / 2)); };
-  auto row_down = [&](Fixed world) { return int(std::clamp<int64_t>(edge(world) >> r.bits, INT_MIN / 2, INT_MAX / 2)); };
-
   const int ceiling_clip = top - 1, floor_clip = bottom;
-  int yl = row_up(r.top);
+  int yl = edges.top[k];
   if (yl < ceiling_clip + 1) yl = ceiling_clip + 1;
   int ceiling_end = ceiling_clip + 1;  // the rows the ceiling took
   if (r.mark_ceiling) {
@@ -242,7 +256,7 @@ Canvas::DoomRun Canvas::doom_run(DoomSide& ds, const WallHit& hit, int near) {
     else
       fill_span(x, ceiling_clip + 1, y1, Fill::kVoid);  // Doom marks nothing: we fill it
   }
-  int yh = row_down(r.bottom);
+  int yh = edges.bottom[k];
   if (yh >= floor_clip) yh = floor_clip - 1;
   // Where a wall's edges cross (its top row below its bottom one) both planes claim the
   // rows between: the ceiling keeps them, as Doom draws its ceilings after its floors.
@@ -265,7 +279,7 @@ Canvas::DoomRun Canvas::doom_run(DoomSide& ds, const WallHit& hit, int near) {
   }
   int new_ceiling = ceiling_clip, new_floor = floor_clip;
   if (r.upper) {
-    int mid = row_down(r.high);
+    int mid = edges.high[k];
     if (mid >= floor_clip) mid = floor_clip - 1;
     if (mid >= yl) {
       // An upper part reaching below the floor's first row: Doom draws its planes last.
@@ -278,7 +292,7 @@ Canvas::DoomRun Canvas::doom_run(DoomSide& ds, const WallHit& hit, int near) {
     new_ceiling = yl - 1;
   }
   if (r.lower) {
-    int mid = row_up(r.low);
+    int mid = edges.low[k];
     if (mid <= new_ceiling) mid = new_ceiling + 1;
     if (mid <= yh) {
       draw_part(mid, yh + 1, level::kLowerPart);
@@ -296,7 +310,9 @@ Canvas::DoomRun Canvas::doom_run(DoomSide& ds, const WallHit& hit, int near) {
 
 bool Canvas::draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& bottom) {
   DoomRun run = doom_run(doom_side(hit.wall, hit.side, hit.t), hit, near);
-  return doom_column(run, x, doom::scale_at(*doom_, run.seg, view_->fangle, x, run.max_scale), top, bottom);
+  const Fixed scale = doom::scale_at(*doom_, run.seg, view_->fangle, x, run.max_scale);
+  doom_edge_rows(run, &scale, 1, run_edges_);
+  return doom_column(run, x, scale, run_edges_, 0, top, bottom);
 }
 
 // The hits of a seg with a sector in front of it, as runs: the seg looked up once, its
@@ -333,12 +349,14 @@ void Canvas::draw_doom_walls(std::span<const HitAt> hits, std::vector<int>& clos
       for (size_t k = i; k < end; ++k)
         run_scales_[k - i] = doom::scale_at(*doom_, run.seg, view_->fangle, hits[k].x, run.max_scale);
     }
+    doom_edge_rows(run, run_scales_.data(), end - i, run_edges_);
     const int far = run.side->far;  // the run's: one wall side
     for (size_t k = i; k < end; ++k) {
       const int x = hits[k].x;
       const WallHit& hit = hits[k].hit;
       const Fixed scale = run_scales_[k - i];
-      if (record_step(x, hit, near, far, [&](int& top, int& bottom) { return doom_column(run, x, scale, top, bottom); }))
+      if (record_step(x, hit, near, far,
+                      [&](int& top, int& bottom) { return doom_column(run, x, scale, run_edges_, k - i, top, bottom); }))
         closed.push_back(x);
     }
     i = end;

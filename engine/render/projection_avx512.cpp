@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <climits>
 
 #include "engine/render/view.h"
 
@@ -88,6 +89,25 @@ void doom_scales_avx512(const doom::Fixed* sine_view, const doom::Fixed* sine_se
     scale = _mm512_mask_blend_epi64(below, scale, least);
     scale = _mm512_mask_blend_epi64(above | ~in_front, scale, most);
     _mm256_mask_storeu_epi32(out + i, lanes, _mm512_cvtepi64_epi32(scale));
+  }
+}
+
+void doom_edge_rows_avx512(const doom::Fixed* scales, size_t n, doom::Fixed world, int64_t center, int bits, bool crispy,
+                           int64_t round, int32_t* rows) {
+  const __m512i worlds = _mm512_set1_epi64(world), centers = _mm512_set1_epi64(center);
+  const __m512i rounds = _mm512_set1_epi64(round);
+  const __m512i lowest = _mm512_set1_epi64(INT_MIN / 2), highest = _mm512_set1_epi64(INT_MAX / 2);
+  const __m128i shift = _mm_cvtsi32_si128(bits);
+  auto as_fixed = [](__m512i v) { return _mm512_cvtepi32_epi64(_mm512_cvtepi64_epi32(v)); };
+  for (size_t i = 0; i < n; i += 8) {
+    const __mmask8 lanes = n - i >= 8 ? __mmask8(0xFF) : __mmask8((1u << (n - i)) - 1);
+    const __m512i scale = _mm512_cvtepi32_epi64(_mm256_maskz_loadu_epi32(lanes, scales + i));
+    const __m512i product = _mm512_srai_epi64(_mm512_mul_epi32(worlds, scale), 16);  // signed 32 x 32 bits
+    const __m512i edge = crispy ? _mm512_sub_epi64(centers, product)
+                                : as_fixed(_mm512_sub_epi64(as_fixed(centers), as_fixed(product)));
+    const __m512i row = _mm512_sra_epi64(_mm512_add_epi64(edge, rounds), shift);
+    const __m512i clamped = _mm512_max_epi64(_mm512_min_epi64(row, highest), lowest);
+    _mm256_mask_storeu_epi32(rows + i, lanes, _mm512_cvtepi64_epi32(clamped));
   }
 }
 

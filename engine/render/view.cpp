@@ -67,6 +67,7 @@ size_t open_column_hits_avx512(const WallProjector&, const FragmentSpan&, const 
 }
 void doom_scales_avx512(const doom::Fixed*, const doom::Fixed*, size_t, doom::Fixed, doom::Fixed, doom::Fixed,
                         doom::Fixed*) {}
+void doom_edge_rows_avx512(const doom::Fixed*, size_t, doom::Fixed, int64_t, int, bool, int64_t, int32_t*) {}
 #endif
 
 }  // namespace p3d::render

@@ -158,6 +158,13 @@ size_t open_column_hits_avx512(const WallProjector& p, const FragmentSpan& span,
 // where vector_projection() is true.
 void doom_scales_avx512(const doom::Fixed* sine_view, const doom::Fixed* sine_seg, size_t n, doom::Fixed projection,
                         doom::Fixed distance, doom::Fixed max_scale, doom::Fixed* out);
+// The rows of a wall edge at height `world` (in the run's fixed point of `bits`
+// fraction bits, as center) for n columns of scales, eight at a time: center - world *
+// scale >> 16 (in 64 bits for Crispy, wrapping in 32 for vanilla), plus `round`,
+// shifted down by bits and clamped to [INT_MIN / 2, INT_MAX / 2]. Only where
+// vector_projection() is true.
+void doom_edge_rows_avx512(const doom::Fixed* scales, size_t n, doom::Fixed world, int64_t center, int bits, bool crispy,
+                           int64_t round, int32_t* rows);
 
 // A conservative range of screen columns [x0, x1]; empty when x0 > x1.
 struct ColumnRange {

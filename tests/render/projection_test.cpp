@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <climits>
 #include <cstdlib>
 #include <string>
 #include <utility>
@@ -126,6 +127,33 @@ TEST(Projection, VectorScalesAreScaleAt) {
     doom::Fixed got[8];
     doom_scales_avx512(ones.data(), ones.data(), 1, num, den, INT32_MAX, got);
     ASSERT_EQ(got[0], reference(num, den, INT32_MAX)) << "num " << num << ", den " << den;
+  }
+}
+
+// A wall edge's rows eight at a time: R_RenderSegLoop's (Crispy's in 64 bits, vanilla's
+// wrapping in 32), rounded up or down, clamped, for random heights, scales and
+// precisions; nothing written past the columns.
+TEST(Projection, VectorEdgeRowsAreTheScalarRows) {
+  if (!vector_projection()) GTEST_SKIP() << "no AVX-512 on this processor";
+  Rng rng(23);
+  for (int trial = 0; trial < 20000; ++trial) {
+    const bool crispy = trial % 2 == 0;
+    const int bits = crispy ? int(rng.range(4, 16)) : 12;
+    const int64_t center = crispy ? int64_t(rng.range(0, 1 << 20)) << (bits - 4) : int64_t(rng.range(0, 200 << 12));
+    const doom::Fixed world = doom::Fixed(trial % 5 == 0 ? rng.next() : rng.range(-(1 << 24), 1 << 24));
+    const int64_t round = trial % 3 == 0 ? 0 : (int64_t(1) << bits) - 1;
+    const size_t n = size_t(rng.range(1, 30));
+    std::vector<doom::Fixed> scales(n);
+    for (doom::Fixed& scale : scales) scale = trial % 7 == 0 ? doom::Fixed(rng.next()) : doom::Fixed(rng.range(256, 64 << 16));
+    std::vector<int32_t> got(n + 8, 0x5A5A5A5A);
+    doom_edge_rows_avx512(scales.data(), n, world, center, bits, crispy, round, got.data());
+    for (size_t k = 0; k < n; ++k) {
+      const int64_t product = (int64_t(world) * scales[k]) >> doom::kFracBits;
+      const int64_t edge = crispy ? center - product : int64_t(play::wrap_sub(doom::Fixed(center), doom::Fixed(product)));
+      const int32_t want = int32_t(std::clamp<int64_t>((edge + round) >> bits, INT_MIN / 2, INT_MAX / 2));
+      ASSERT_EQ(got[k], want) << "trial " << trial << ", column " << k;
+    }
+    for (size_t k = n; k < n + 8; ++k) ASSERT_EQ(got[k], 0x5A5A5A5A) << "wrote past the columns";
   }
 }
 
