@@ -61,6 +61,30 @@ alignas(64) constexpr uint8_t kByte2[64] = {
     90, 94, 98, 102, 106, 110, 114, 118, 122, 126, 2, 6, 10, 14, 18, 22, 26, 30, 34, 38, 42, 46,
     50, 54, 58, 62, 66, 70, 74, 78, 82, 86, 90, 94, 98, 102, 106, 110, 114, 118, 122, 126};
 
+// Each 32-bit lane its own index.
+inline __m512i lanes16() { return _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15); }
+
+// count adjacent bytes of a wall column from its 16.16 coordinates: pixel i's in lane
+// i % 16 of vs[i / 16]. Each 64 pixels' texel rows are the coordinates' bytes 2 (bits
+// 16 to 23), gathered from the four registers into one and passed through `rows`; then
+// `advance` moves every register on by 64 pixels.
+template <typename Rows, typename Advance>
+inline void stepped_column(uint8_t* out, int count, const LitColumn& column, __m512i (&vs)[4], Rows rows,
+                           Advance advance) {
+  const __m512i row_bytes = _mm512_load_si512(kByte2);
+  auto pixels = [&] {
+    const __m512i low = _mm512_permutex2var_epi8(vs[0], row_bytes, vs[1]);
+    const __m512i high = _mm512_permutex2var_epi8(vs[2], row_bytes, vs[3]);
+    return column(rows(_mm512_mask_blend_epi8(~__mmask64(0) << 32, low, high)));
+  };
+  int i = 0;
+  for (; i + 64 <= count; i += 64) {
+    _mm512_storeu_si512(out + i, pixels());
+    for (__m512i& x : vs) x = advance(x);
+  }
+  if (i < count) _mm512_mask_storeu_epi8(out + i, first_bytes(count - i), pixels());
+}
+
 // n rows (at most 16) of 64 columns into the frame's rows: register i holds columns i,
 // 16 + i, 32 + i and 48 + i in its four 128-bit lanes; the 16 x 16 interleave, done in
 // every lane at once, leaves row j's 64 bytes in register j. Out of line: inlined in
@@ -92,67 +116,40 @@ alignas(64) constexpr uint8_t kByte2[64] = {
 
 void wall_column_vbmi(uint8_t* out, int count, uint32_t v, uint32_t step, int rows_log2, const uint8_t* source,
                       const uint8_t* light) {
-  const LitColumn column(source, 1 << rows_log2, light);
-  // Pixel i's v in lane i % 16 of register i / 16; its row is the v's byte 2 (bits 16
-  // to 23), gathered from the four registers into one.
-  const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
-  const __m512i steps = _mm512_set1_epi32(int(step)), step16 = _mm512_set1_epi32(int(step * 16));
-  const __m512i step64 = _mm512_set1_epi32(int(step * 64));
   __m512i vs[4];
-  vs[0] = _mm512_add_epi32(_mm512_set1_epi32(int(v)), _mm512_mullo_epi32(lanes, steps));
+  vs[0] = _mm512_add_epi32(_mm512_set1_epi32(int(v)), _mm512_mullo_epi32(lanes16(), _mm512_set1_epi32(int(step))));
+  const __m512i step16 = _mm512_set1_epi32(int(step * 16)), step64 = _mm512_set1_epi32(int(step * 64));
   for (int i = 1; i < 4; ++i) vs[i] = _mm512_add_epi32(vs[i - 1], step16);
-  const __m512i row_bytes = _mm512_load_si512(kByte2);
   const __m512i row_mask = _mm512_set1_epi8(char((1 << rows_log2) - 1));
-  auto pixels = [&] {
-    const __m512i low = _mm512_permutex2var_epi8(vs[0], row_bytes, vs[1]);
-    const __m512i high = _mm512_permutex2var_epi8(vs[2], row_bytes, vs[3]);
-    __m512i row = _mm512_mask_blend_epi8(~__mmask64(0) << 32, low, high);
-    if (rows_log2 < 7) row = _mm512_and_si512(row, row_mask);
-    return column(row);
+  auto masked = [&](__m512i texel_rows) {  // 128 rows or more: the look-up reads only the bits it needs
+    return rows_log2 < 7 ? _mm512_and_si512(texel_rows, row_mask) : texel_rows;
   };
-  int i = 0;
-  for (; i + 64 <= count; i += 64) {
-    _mm512_storeu_si512(out + i, pixels());
-    for (__m512i& x : vs) x = _mm512_add_epi32(x, step64);
-  }
-  if (i < count) _mm512_mask_storeu_epi8(out + i, first_bytes(count - i), pixels());
+  stepped_column(out, count, LitColumn(source, 1 << rows_log2, light), vs, masked,
+                 [&](__m512i x) { return _mm512_add_epi32(x, step64); });
 }
 
 void wrapped_column_vbmi(uint8_t* out, int count, uint32_t v, uint32_t step, int rows, const uint8_t* source,
                          const uint8_t* light) {
-  const LitColumn column(source, rows, light);
-  // Pixel i's v, (v + i * step) modulo the period, in lane i % 16 of register i / 16.
-  // Each is kept below the period: a step of 16 or 64 pixels is taken modulo it first,
-  // so one subtraction wraps a sum.
+  // Each lane's v is kept below the period: a step of 16 or 64 pixels is taken modulo it
+  // first, so one subtraction wraps a sum.
   const uint32_t period = uint32_t(rows) << 16;
   const __m512i periods = _mm512_set1_epi32(int(period));
   auto wrap = [&](__m512i sum) {  // below two periods
     return _mm512_mask_sub_epi32(sum, _mm512_cmpge_epu32_mask(sum, periods), sum, periods);
   };
-  const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
   // v + lane * step is below 16 periods (each term below one): 8, 4, 2 and 1 periods off.
-  __m512i first = _mm512_add_epi32(_mm512_set1_epi32(int(v)), _mm512_mullo_epi32(lanes, _mm512_set1_epi32(int(step))));
+  __m512i vs[4];
+  vs[0] = _mm512_add_epi32(_mm512_set1_epi32(int(v)), _mm512_mullo_epi32(lanes16(), _mm512_set1_epi32(int(step))));
   for (uint32_t k = 8; k >= 1; k /= 2) {
     const __m512i off = _mm512_set1_epi32(int(k * period));
-    first = _mm512_mask_sub_epi32(first, _mm512_cmpge_epu32_mask(first, off), first, off);
+    vs[0] = _mm512_mask_sub_epi32(vs[0], _mm512_cmpge_epu32_mask(vs[0], off), vs[0], off);
   }
   const __m512i step16 = _mm512_set1_epi32(int(uint64_t(step) * 16 % period));
   const __m512i step64 = _mm512_set1_epi32(int(uint64_t(step) * 64 % period));
-  __m512i vs[4];
-  vs[0] = first;
   for (int i = 1; i < 4; ++i) vs[i] = wrap(_mm512_add_epi32(vs[i - 1], step16));
-  const __m512i row_bytes = _mm512_load_si512(kByte2);
-  auto pixels = [&] {  // a row is below 256: the v's byte 2
-    const __m512i low = _mm512_permutex2var_epi8(vs[0], row_bytes, vs[1]);
-    const __m512i high = _mm512_permutex2var_epi8(vs[2], row_bytes, vs[3]);
-    return column(_mm512_mask_blend_epi8(~__mmask64(0) << 32, low, high));
-  };
-  int i = 0;
-  for (; i + 64 <= count; i += 64) {
-    _mm512_storeu_si512(out + i, pixels());
-    for (__m512i& x : vs) x = wrap(_mm512_add_epi32(x, step64));
-  }
-  if (i < count) _mm512_mask_storeu_epi8(out + i, first_bytes(count - i), pixels());
+  auto as_is = [](__m512i texel_rows) { return texel_rows; };  // below the height, so below 256
+  stepped_column(out, count, LitColumn(source, rows, light), vs, as_is,
+                 [&](__m512i x) { return wrap(_mm512_add_epi32(x, step64)); });
 }
 
 int columns_to_rows_vbmi(const uint8_t* columns, size_t column_stride, uint8_t* rows, size_t row_pitch, int width,
@@ -181,7 +178,7 @@ void tabled_column_vbmi(uint8_t* out, int count, const uint8_t* rows, const uint
 void flat_row_vbmi(uint8_t* out, int n, RowCoordinate u, RowCoordinate v, const uint8_t* indices,
                    const uint8_t* light) {
   const Table256 light_table = Table256::load(light);
-  const __m512i lanes = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  const __m512i lanes = lanes16();
   __m512i us = _mm512_add_epi32(_mm512_set1_epi32(int(u.value)), _mm512_mullo_epi32(lanes, _mm512_set1_epi32(int(u.step))));
   __m512i vs = _mm512_add_epi32(_mm512_set1_epi32(int(v.value)), _mm512_mullo_epi32(lanes, _mm512_set1_epi32(int(v.step))));
   const __m512i du = _mm512_set1_epi32(int(16 * u.step)), dv = _mm512_set1_epi32(int(16 * v.step));

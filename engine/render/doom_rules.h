@@ -141,19 +141,31 @@ void seg_columns(const Tables& t, Fixed vx, Fixed vy, Angle view_angle, Fixed v1
 // R_PointOnSegSide: 0 on the seg's front (right of v1 -> v2), 1 behind.
 int point_on_seg_side(Fixed x, Fixed y, Fixed v1x, Fixed v1y, Fixed v2x, Fixed v2y);
 
-// R_ScaleFromGlobalAngle at column x, at most max_scale (inline: every wall column takes one).
-inline Fixed scale_at(const Tables& t, const Seg& seg, Angle view_angle, int x, Fixed max_scale = 64 * kFracUnit) {
+// The two sines R_ScaleFromGlobalAngle takes at column x: of 90 degrees plus the
+// column's angle from the view's axis (anglea), and plus its angle from the seg's
+// normal (angleb).
+struct ScaleSines {
+  Fixed view, seg;
+};
+inline ScaleSines scale_sines(const Tables& t, const Seg& seg, Angle view_angle, int x) {
   const Angle visangle = view_angle + t.xtoviewangle[size_t(x)];
   const Angle anglea = play::kAngle90 + (visangle - view_angle), angleb = play::kAngle90 + (visangle - seg.normal);
-  const Fixed sinea = play::kFineSine[anglea >> play::kAngleToFineShift];
-  const Fixed sineb = play::kFineSine[angleb >> play::kAngleToFineShift];
-  const Fixed num = play::fixed_mul(t.projection, sineb);
-  const Fixed den = play::fixed_mul(seg.distance, sinea);
+  return {play::kFineSine[anglea >> play::kAngleToFineShift], play::kFineSine[angleb >> play::kAngleToFineShift]};
+}
+// The rest of R_ScaleFromGlobalAngle: the scale from those sines (Tables::projection,
+// the seg's distance), at most max_scale.
+inline Fixed scale_from_sines(Fixed projection, ScaleSines sines, Fixed distance, Fixed max_scale) {
+  const Fixed num = play::fixed_mul(projection, sines.seg);
+  const Fixed den = play::fixed_mul(distance, sines.view);
   if (den > (num >> kFracBits)) {
     const Fixed scale = play::fixed_div(num, den);
     return scale > max_scale ? max_scale : scale < 256 ? 256 : scale;
   }
   return max_scale;
+}
+// R_ScaleFromGlobalAngle at column x, at most max_scale (inline: every wall column takes one).
+inline Fixed scale_at(const Tables& t, const Seg& seg, Angle view_angle, int x, Fixed max_scale = 64 * kFracUnit) {
+  return scale_from_sines(t.projection, scale_sines(t, seg, view_angle, x), seg.distance, max_scale);
 }
 // The texture column (R_RenderSegLoop's texturecolumn before >> 16) at column x.
 inline Fixed texture_column(const Tables& t, const Seg& seg, int x) {

@@ -33,7 +33,6 @@ using level::kNone;
 using level::kSky;
 using play::fixed_div;
 using play::fixed_mul;
-using play::kAngle90;
 using play::kAngleToFineShift;
 using play::kFineAngles;
 using play::kFineSine;
@@ -337,13 +336,11 @@ void Canvas::draw_doom_walls(std::span<const HitAt> hits, std::vector<int>& clos
       run_sines_.resize(2 * (end - i));
       Fixed* sine_view = run_sines_.data();
       Fixed* sine_seg = sine_view + (end - i);
-      const doom::Tables& t = *doom_;
       for (size_t k = i; k < end; ++k) {
-        const Angle beside = t.xtoviewangle[size_t(hits[k].x)];
-        sine_view[k - i] = play::sine(kAngle90 + beside);
-        sine_seg[k - i] = play::sine(kAngle90 + (view_->fangle + beside - run.seg.normal));
+        const doom::ScaleSines sines = doom::scale_sines(*doom_, run.seg, view_->fangle, hits[k].x);
+        sine_view[k - i] = sines.view, sine_seg[k - i] = sines.seg;
       }
-      doom_scales_avx512(sine_view, sine_seg, end - i, t.projection, run.seg.distance, run.max_scale,
+      doom_scales_avx512(sine_view, sine_seg, end - i, doom_->projection, run.seg.distance, run.max_scale,
                          run_scales_.data());
     } else {
       for (size_t k = i; k < end; ++k)

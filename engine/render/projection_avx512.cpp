@@ -1,7 +1,10 @@
-// WallProjector::hit for eight columns at a time with AVX-512: this file alone is built
-// for it (engine/CMakeLists.txt), and the walk calls it only where vector_projection()
-// says the processor has it. The same IEEE operations in the same order as the scalar
-// hit, lane by lane (no fused multiply-adds: -ffp-contract=off), so the same hits.
+// The walk's projection of a wall onto the screen eight columns at a time with AVX-512:
+// which open columns its rays hit (WallProjector::hit), and under Doom's rules a run's
+// scales and edge rows. This file alone is built for it (engine/CMakeLists.txt), and the
+// walk calls it only where vector_projection() says the processor has it. The same
+// operations in the same order as the scalar code, lane by lane (no fused
+// multiply-adds: -ffp-contract=off), so the same results to the bit. It calls no inline
+// function of the engine's headers: one built here could stand in for the generic one.
 // GCC 12's AVX-512 conversions start from a self-initialised "undefined" register, which
 // -Wmaybe-uninitialized reports (GCC bug 105593).
 #if defined(__GNUC__) && !defined(__clang__)
@@ -22,12 +25,13 @@ size_t open_column_hits_avx512(const WallProjector& p, const FragmentSpan& span,
   const __m512d side0_a = _mm512_set1_pd(p.side0[0]), side0_b = _mm512_set1_pd(p.side0[1]);
   const __m512d dx_a = _mm512_set1_pd(p.side_dx[0]), dx_b = _mm512_set1_pd(p.side_dx[1]);
   const __m512d end0 = _mm512_set1_pd(p.end_depth[0]), end1 = _mm512_set1_pd(p.end_depth[1]);
+  const __m512d span_depth = _mm512_sub_pd(end1, end0);
   const __m512d zero = _mm512_setzero_pd(), half = _mm512_set1_pd(0.5), one = _mm512_set1_pd(1.0);
   const __m512d near = _mm512_set1_pd(kNearDepth), t0 = _mm512_set1_pd(span.t0), t1 = _mm512_set1_pd(span.t1);
   const __m256i lanes = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
   size_t n = 0;
   for (int w = x0 >> 6; w <= x1 >> 6; ++w) {
-    const int lo = std::max(x0 - (w << 6), 0), hi = std::min(x1 - (w << 6), 63);
+    const int lo = std::max(x0 - (w << 6), 0), hi = std::min(x1 - (w << 6), 63);  // ColumnMask::range_bits
     uint64_t open = ~closed[w] & (~uint64_t{0} >> (63 - hi)) & (~uint64_t{0} << lo);
     for (; open; open &= ~(uint64_t{0xFF} << (std::countr_zero(open) & ~7))) {
       const int group = std::countr_zero(open) & ~7;  // the eight columns from base
@@ -39,7 +43,6 @@ size_t open_column_hits_avx512(const WallProjector& p, const FragmentSpan& span,
       const __m512d s1 = _mm512_add_pd(side0_b, _mm512_mul_pd(dx_b, at));
       const __mmask8 apart = _mm512_cmp_pd_mask(s0, zero, _CMP_LT_OQ) ^ _mm512_cmp_pd_mask(s1, zero, _CMP_LT_OQ);
       const __m512d t = _mm512_div_pd(s0, _mm512_sub_pd(s0, s1));
-      const __m512d span_depth = _mm512_sub_pd(end1, end0);
       const __m512d from_start = _mm512_add_pd(end0, _mm512_mul_pd(span_depth, t));
       const __m512d from_end = _mm512_sub_pd(end1, _mm512_mul_pd(span_depth, _mm512_sub_pd(one, t)));
       const __m512d depth = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(t, half, _CMP_LE_OQ), from_end, from_start);

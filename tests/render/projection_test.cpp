@@ -91,9 +91,8 @@ TEST(Projection, VectorScalesAreScaleAt) {
       std::vector<doom::Fixed> sine_view(n), sine_seg(n), got(n + 8, 0x5A5A5A5A);
       for (size_t k = 0; k < n; ++k) {
         xs[k] = int(rng.below(uint64_t(width)));
-        const doom::Angle beside = t.xtoviewangle[size_t(xs[k])];
-        sine_view[k] = play::sine(play::kAngle90 + beside);
-        sine_seg[k] = play::sine(play::kAngle90 + (view_angle + beside - seg.normal));
+        const doom::ScaleSines sines = doom::scale_sines(t, seg, view_angle, xs[k]);
+        sine_view[k] = sines.view, sine_seg[k] = sines.seg;
       }
       doom_scales_avx512(sine_view.data(), sine_seg.data(), n, t.projection, seg.distance, max_scale, got.data());
       for (size_t k = 0; k < n; ++k) {
@@ -113,11 +112,6 @@ TEST(Projection, VectorScalesAreScaleAt) {
   // Sines of one: the products are the projection and the distance themselves, so the
   // quotient (num << 16) / den can be put just below (or above) a whole number, where a
   // division in doubles could round across it.
-  auto reference = [](doom::Fixed num, doom::Fixed den, doom::Fixed max_scale) {
-    if (den <= (num >> doom::kFracBits)) return max_scale;
-    const doom::Fixed scale = play::fixed_div(num, den);
-    return scale > max_scale ? max_scale : scale < 256 ? 256 : scale;
-  };
   const std::vector<doom::Fixed> ones(8, doom::kFracUnit);
   for (int trial = 0; trial < 200000; ++trial) {
     const doom::Fixed den = doom::Fixed(rng.range(1 << 16, INT32_MAX)) * (trial % 2 ? 1 : -1);
@@ -126,7 +120,8 @@ TEST(Projection, VectorScalesAreScaleAt) {
     const doom::Fixed num = doom::Fixed(std::clamp<int64_t>(dividend >> 16, INT32_MIN, INT32_MAX));
     doom::Fixed got[8];
     doom_scales_avx512(ones.data(), ones.data(), 1, num, den, INT32_MAX, got);
-    ASSERT_EQ(got[0], reference(num, den, INT32_MAX)) << "num " << num << ", den " << den;
+    const doom::Fixed want = doom::scale_from_sines(num, {doom::kFracUnit, doom::kFracUnit}, den, INT32_MAX);
+    ASSERT_EQ(got[0], want) << "num " << num << ", den " << den;
   }
 }
 
