@@ -253,18 +253,6 @@ void Canvas::end_columns() {
   column_base_ = index_base_, column_stride_ = 1, column_pitch_ = index_pitch_;
 }
 
-void Canvas::indexed_wall_column(int x, int y0, int count, int64_t v, int64_t step, int64_t period,
-                                 const uint8_t* source, const uint8_t* light) {
-  const int64_t rows = period >> 16;
-  if (columns_pending_ && count >= kVectorColumnRows && (period & 0xFFFF) == 0 && rows > 0 && rows <= 256) {
-    if ((rows & (rows - 1)) == 0)
-      return wall_column_vbmi(column_pixel(x, y0), count, uint32_t(v), uint32_t(step), std::countr_zero(uint64_t(rows)),
-                              source, light);
-    return wrapped_column_vbmi(column_pixel(x, y0), count, uint32_t(v), uint32_t(step), int(rows), source, light);
-  }
-  wrapped_column(column_pixel(x, y0), column_pitch_, count, v, step, period, IndexedColumn{source, light});
-}
-
 void Canvas::resolve(int y0, int y1) {
   if (!indexed_ || frame_->indexed()) return;  // a frame that keeps its indices was drawn in
   const uint32_t* palette = level_->palette.data();

@@ -10,6 +10,7 @@
 // rows its column had open at its depth, so what lies behind shows through.
 #pragma once
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -266,7 +267,14 @@ class Canvas {
   void set_up_doom_wall(DoomSide& d, const WallHit& hit, int near);
   // Rows [y0, y1) of a wall column as R_DrawColumn draws them: texel row
   // ((mid + (y - centery) * iscale) >> 16) & 127, column `column` & Doom's width mask.
-  void doom_wall_rows(int x, int y0, int y1, int texture, doom::Fixed mid, int32_t column, uint32_t iscale, int map);
+  // A wall part's texture as a run's columns draw it, looked up once a run.
+  struct DoomPart {
+    int texture;                // kNone: none
+    const level::Texture* tex;  // null with none
+    int width_mask;             // Doom's: the largest power of two within the width, less one
+    doom::Fixed mid, x;         // the texture's mid (pegged, offset) and its column offset
+  };
+  void doom_wall_rows(int x, int y0, int y1, const DoomPart& part, int32_t column, uint32_t iscale, int map);
   void crispy_wall_rows(int x, int y0, int y1, const level::Texture& tex, int u, doom::Fixed v0, uint32_t iscale, int map);
   // Pixels [xa, xb) of row y of a flat, its span stepping from column `start` <= xa.
   void doom_plane_pixels(const PlaneKey& key, int y, int xa, int xb, int start);
@@ -362,8 +370,18 @@ class Canvas {
   void end_columns();
   // count rows of a wall column in palette indices from row y0: texel row (v >> 16) mod
   // period of the column `source` (period >> 16 rows, v and step reduced) under `light`.
-  void indexed_wall_column(int x, int y0, int count, int64_t v, int64_t step, int64_t period, const uint8_t* source,
-                           const uint8_t* light);
+  // Inline: its callers' periods are a texture's height, so most of its tests fold away.
+  [[gnu::always_inline]] void indexed_wall_column(int x, int y0, int count, int64_t v, int64_t step, int64_t period,
+                                                  const uint8_t* source, const uint8_t* light) {
+    const int64_t rows = period >> 16;
+    if (columns_pending_ && count >= kVectorColumnRows && (period & 0xFFFF) == 0 && rows > 0 && rows <= 256) {
+      if ((rows & (rows - 1)) == 0)
+        return wall_column_vbmi(column_pixel(x, y0), count, uint32_t(v), uint32_t(step),
+                                std::countr_zero(uint64_t(rows)), source, light);
+      return wrapped_column_vbmi(column_pixel(x, y0), count, uint32_t(v), uint32_t(step), int(rows), source, light);
+    }
+    wrapped_column(column_pixel(x, y0), column_pitch_, count, v, step, period, IndexedColumn{source, light});
+  }
   void count(int x, int y0, int y1) {
     pixels_ += static_cast<uint64_t>(y1 - y0);
     if (writes_) count_writes(x, y0, y1);

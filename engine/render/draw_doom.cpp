@@ -172,8 +172,7 @@ struct Canvas::DoomRun {
   Fixed top, bottom, high, low;  // worldtop, worldbottom, worldhigh, worldlow
   bool mark_ceiling, mark_floor, ceiling_plane, floor_plane, one_sided;
   bool upper, lower;  // a top or bottom part to draw
-  int textures[3];
-  Fixed mid[3], part_x[3];
+  DoomPart parts[3];
 };
 
 Canvas::DoomRun Canvas::doom_run(DoomSide& ds, const WallHit& hit, int near) {
@@ -197,8 +196,13 @@ Canvas::DoomRun Canvas::doom_run(DoomSide& ds, const WallHit& hit, int near) {
   r.one_sided = ds.far == kNone;
   r.upper = ds.top_part && ds.textures[level::kUpperPart] != kNone;
   r.lower = ds.bottom_part && ds.textures[level::kLowerPart] != kNone;
-  for (int part = 0; part < 3; ++part)
-    r.textures[part] = ds.textures[part], r.mid[part] = ds.mid[part], r.part_x[part] = ds.part_x[part];
+  for (int part = 0; part < 3; ++part) {
+    DoomPart& p = r.parts[part];
+    p.texture = ds.textures[part];
+    p.tex = p.texture != kNone ? &level_->textures[size_t(p.texture)] : nullptr;
+    p.width_mask = p.tex ? width_mask(p.tex->width) : 0;
+    p.mid = ds.mid[part], p.x = ds.part_x[part];
+  }
   return r;
 }
 
@@ -241,8 +245,8 @@ void Canvas::doom_edge_rows(const DoomRun& r, const Fixed* scales, size_t n, Edg
       map = fixed_or(doom::wall_map(t, r.start_map, scale));
       column = play::wrap_add(doom::texture_column(t, r.seg, x), r.x_offset);
     }
-    doom_wall_rows(x, y0, y1, r.textures[part], r.mid[part], int32_t(play::wrap_add(column, r.part_x[part]) >> kFracBits),
-                   iscale, map);
+    const DoomPart& p = r.parts[part];
+    doom_wall_rows(x, y0, y1, p, int32_t(play::wrap_add(column, p.x) >> kFracBits), iscale, map);
   };
   const int ceiling_clip = top - 1, floor_clip = bottom;
   int yl = edges.top[k];
@@ -267,7 +271,7 @@ void Canvas::doom_edge_rows(const DoomRun& r, const Fixed* scales, size_t n, Edg
       fill_span(x, floor_start, floor_clip, Fill::kVoid);
   }
 
-  const bool middle = r.textures[level::kMiddlePart] != kNone;
+  const bool middle = r.parts[level::kMiddlePart].texture != kNone;
   if (r.one_sided) {
     if (!middle)
       planes_to_horizon(x, yl, yh + 1, r.side->near);
@@ -377,13 +381,14 @@ inline void Canvas::crispy_wall_rows(int x, int y0, int y1, const level::Texture
                  PalettedColumn{source, level_->light_maps.data() + light});
 }
 
-void Canvas::doom_wall_rows(int x, int y0, int y1, int texture, Fixed mid, int32_t column, uint32_t iscale, int map) {
-  if (texture == kNone) return fill_span(x, y0, y1, Fill::kMissingTexture);
+void Canvas::doom_wall_rows(int x, int y0, int y1, const DoomPart& part, int32_t column, uint32_t iscale, int map) {
+  if (part.texture == kNone) return fill_span(x, y0, y1, Fill::kMissingTexture);
   count(x, y0, y1);
   if (painting_planes_) mark_painted(x, y0, y1, kNoPlane);
-  const level::Texture& tex = level_->textures[size_t(texture)];
-  const int u = column & width_mask(tex.width);
-  uint32_t v = uint32_t(mid) + uint32_t(y0 - doom_->centery) * iscale;
+  const level::Texture& tex = *part.tex;
+  const int texture = part.texture;
+  const int u = column & part.width_mask;
+  uint32_t v = uint32_t(part.mid) + uint32_t(y0 - doom_->centery) * iscale;
   if (doom_->crispy) return crispy_wall_rows(x, y0, y1, tex, u, Fixed(v), iscale, map);
   // Doom's own 128 rows of the column when the level has them, else the column wrapped.
   const int64_t doom_start = size_t(texture) < level_->doom_column_start.size() ? level_->doom_column_start[size_t(texture)] : kNone;
