@@ -153,8 +153,7 @@ class BspFrontToBack final : public Renderer {
     std::vector<uint32_t>* order = nullptr;
     std::vector<uint32_t> fragments_drawn;
     std::vector<int32_t> entered;  // the nodes and leaves (leaf_child values) walked into
-    std::vector<Canvas::HitAt> hits;  // draw_fragment's scratch
-    std::vector<int32_t> hit_x;       // and open_column_hits_avx512's
+    std::vector<int32_t> hit_x;  // draw_fragment's hits (open_column_hits_avx512's)
     std::vector<double> hit_depth, hit_t;
     std::vector<int> closed;
     RenderStats stats;
@@ -165,10 +164,8 @@ class BspFrontToBack final : public Renderer {
     s.mask.reset(view.width);
     s.mask.close_outside(s.x0, s.x1);
     s.vector_projection = vector_columns_ && vector_projection();
-    if (s.vector_projection) {
-      const size_t width = size_t(view.width);
-      s.hit_x.resize(width), s.hit_depth.resize(width), s.hit_t.resize(width);
-    }
+    const size_t width = size_t(view.width);  // at most a hit a column
+    s.hit_x.resize(width), s.hit_depth.resize(width), s.hit_t.resize(width);
     s.stats = {};
     s.fragments_drawn.clear();
     s.entered.clear();
@@ -328,23 +325,22 @@ class BspFrontToBack final : public Renderer {
     const ColumnRange range = columns_of_segment(view, f.p0, f.p1);
     if (range.empty()) return false;
     const WallProjector projector(view, wall.a, wall.b);
-    s.hits.clear();  // the open columns' hits, then drawn together
+    // The open columns' hits, then drawn together.
+    size_t n = 0;
     if (s.vector_projection) {
-      const size_t n = open_column_hits_avx512(projector, span_of(f), s.mask.words(), range.x0, range.x1,
-                                               {s.hit_x.data(), s.hit_depth.data(), s.hit_t.data()});
-      for (size_t k = 0; k < n; ++k)
-        s.hits.push_back({s.hit_x[k], {f.wall, side, s.hit_depth[k], s.hit_t[k], int32_t(i)}});
+      n = open_column_hits_avx512(projector, span_of(f), s.mask.words(), range.x0, range.x1,
+                                  {s.hit_x.data(), s.hit_depth.data(), s.hit_t.data()});
     } else {
       s.mask.for_each_open(range.x0, range.x1, [&](int x) {
         double depth, t;
-        if (projector.hit(x, depth, t) && in_fragment(f, t))
-          s.hits.push_back({x, {f.wall, side, depth, t, int32_t(i)}});
+        if (projector.hit(x, depth, t) && in_fragment(f, t)) s.hit_x[n] = x, s.hit_depth[n] = depth, s.hit_t[n] = t, ++n;
       });
     }
     s.closed.clear();
-    s.canvas.draw_walls(s.hits, s.closed);
+    const Canvas::WallHits hits{f.wall, side, int32_t(i), {s.hit_x.data(), n}, s.hit_depth.data(), s.hit_t.data()};
+    s.canvas.draw_walls(hits, s.closed);
     for (const int x : s.closed) s.mask.close(x);
-    if (!s.hits.empty()) {
+    if (n > 0) {
       s.fragments_drawn.push_back(i);
       if (s.order) s.order->push_back(i);
     }

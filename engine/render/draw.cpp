@@ -184,10 +184,10 @@ bool Canvas::draw_wall(int x, const WallHit& hit) {
                      [&](int& top, int& bottom) { return draw_hit(x, hit, near, top, bottom); });
 }
 
-void Canvas::draw_walls(std::span<const HitAt> hits, std::vector<int>& closed) {
+void Canvas::draw_walls(const WallHits& hits, std::vector<int>& closed) {
   if (doom_ && !dry_ && !painting_) return draw_doom_walls(hits, closed);
-  for (const HitAt& h : hits)
-    if (draw_wall(h.x, h.hit)) closed.push_back(h.x);
+  for (size_t k = 0; k < hits.size(); ++k)
+    if (draw_wall(hits.x[k], hits[k])) closed.push_back(hits.x[k]);
 }
 
 bool Canvas::clip_wall(int x, const WallHit& hit) {

@@ -66,15 +66,22 @@ class Canvas {
   // Front to back: draws what the hit shows in the column's open rows and narrows
   // them. Returns true when this hit closes the column.
   bool draw_wall(int x, const WallHit& hit);
-  // One column's hit.
-  struct HitAt {
-    int x;
-    WallHit hit;
+  // One wall side's hits in a fragment's open columns, in column order: their columns,
+  // depths and wall parameters side by side, as the walk's projection writes them.
+  struct WallHits {
+    uint32_t wall;
+    int side;
+    int32_t fragment;
+    std::span<const int32_t> x;
+    const double* depth;
+    const double* t;
+    size_t size() const { return x.size(); }
+    WallHit operator[](size_t k) const { return {wall, side, depth[k], t[k], fragment}; }
   };
   // draw_wall for each of one wall's hits in turn, appending to `closed` each column a
   // hit closes. Under Doom's rules the hits on one of its segs are drawn as a run, the
   // seg looked up and its numbers copied out once (the same pixels as hit by hit).
-  void draw_walls(std::span<const HitAt> hits, std::vector<int>& closed);
+  void draw_walls(const WallHits& hits, std::vector<int>& closed);
 
   // Like draw_wall, but only narrows the column (and records the step): the painter
   // replays its hits front to back with this to learn what each column saw.
@@ -230,7 +237,7 @@ class Canvas {
   void doom_edge_rows(const DoomRun& run, const doom::Fixed* scales, size_t n, EdgeRows& rows) const;
   // One column of R_RenderSegLoop from its side's run; k its place in the run's rows.
   bool doom_column(DoomRun& run, int x, doom::Fixed scale, const EdgeRows& edges, size_t k, int& top, int& bottom);
-  void draw_doom_walls(std::span<const HitAt> hits, std::vector<int>& closed);
+  void draw_doom_walls(const WallHits& hits, std::vector<int>& closed);
   // A step's DoomSide: the one its column drew, so the sprites' scan of every
   // column's walls skips the search for the seg.
   DoomSide& doom_side(const Step& step) {

@@ -320,19 +320,20 @@ bool Canvas::draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& b
 
 // The hits of a seg with a sector in front of it, as runs: the seg looked up once, its
 // numbers copied out once, then each column as draw_wall draws it.
-void Canvas::draw_doom_walls(std::span<const HitAt> hits, std::vector<int>& closed) {
+void Canvas::draw_doom_walls(const WallHits& hits, std::vector<int>& closed) {
+  const int near = level_->walls[hits.wall].sides[hits.side].sector;
   for (size_t i = 0; i < hits.size();) {
-    const WallHit& first = hits[i].hit;
-    const int near = level_->walls[first.wall].sides[first.side].sector;
+    const WallHit first = hits[i];
     if (near == kNone) {  // a segment: its near sector is the column's own
-      if (draw_wall(hits[i].x, first)) closed.push_back(hits[i].x);
+      if (draw_wall(hits.x[i], first)) closed.push_back(hits.x[i]);
       ++i;
       continue;
     }
     double t_low, t_high;
     DoomRun run = doom_run(doom_side(first.wall, first.side, first.t, &t_low, &t_high), first, near);
-    size_t end = i;
-    while (end < hits.size() && hits[end].hit.t >= t_low && hits[end].hit.t < t_high) ++end;
+    size_t end = i + 1;  // the hits in the seg's range of t: all when the side is one seg
+    if (t_low == -INFINITY && t_high == INFINITY) end = hits.size();
+    while (end < hits.size() && hits.t[end] >= t_low && hits.t[end] < t_high) ++end;
     // The run's scales first: their divisions overlap one another rather than each
     // waiting behind the last column's work.
     run_scales_.resize(end - i);
@@ -341,20 +342,20 @@ void Canvas::draw_doom_walls(std::span<const HitAt> hits, std::vector<int>& clos
       Fixed* sine_view = run_sines_.data();
       Fixed* sine_seg = sine_view + (end - i);
       for (size_t k = i; k < end; ++k) {
-        const doom::ScaleSines sines = doom::scale_sines(*doom_, run.seg, view_->fangle, hits[k].x);
+        const doom::ScaleSines sines = doom::scale_sines(*doom_, run.seg, view_->fangle, hits.x[k]);
         sine_view[k - i] = sines.view, sine_seg[k - i] = sines.seg;
       }
       doom_scales_avx512(sine_view, sine_seg, end - i, doom_->projection, run.seg.distance, run.max_scale,
                          run_scales_.data());
     } else {
       for (size_t k = i; k < end; ++k)
-        run_scales_[k - i] = doom::scale_at(*doom_, run.seg, view_->fangle, hits[k].x, run.max_scale);
+        run_scales_[k - i] = doom::scale_at(*doom_, run.seg, view_->fangle, hits.x[k], run.max_scale);
     }
     doom_edge_rows(run, run_scales_.data(), end - i, run_edges_);
     const int far = run.side->far;  // the run's: one wall side
     for (size_t k = i; k < end; ++k) {
-      const int x = hits[k].x;
-      const WallHit& hit = hits[k].hit;
+      const int x = hits.x[k];
+      const WallHit hit = hits[k];
       const Fixed scale = run_scales_[k - i];
       if (record_step(x, hit, near, far,
                       [&](int& top, int& bottom) { return doom_column(run, x, scale, run_edges_, k - i, top, bottom); }))
