@@ -88,6 +88,9 @@ Tables make_tables(int width, int height, int screen_width) {
   t.clipangle = t.xtoviewangle[0];
   t.distscale.resize(size_t(width));
   for (int x = 0; x < width; ++x) t.distscale[size_t(x)] = fixed_div(kFracUnit, std::abs(fine_cos(t.xtoviewangle[size_t(x)])));
+  t.view_sine.resize(size_t(width));
+  for (int x = 0; x < width; ++x)
+    t.view_sine[size_t(x)] = play::kFineSine[(play::kAngle90 + t.xtoviewangle[size_t(x)]) >> kAngleToFineShift];
   t.yslope.resize(size_t(height));
   for (int y = 0; y < height; ++y) {
     const Fixed dy = std::abs(((y - height / 2) << kFracBits) + kFracUnit / 2);

@@ -55,6 +55,9 @@ struct Tables {
   std::vector<double> lateral;      // per column: where its ray crosses the screen plane at depth W/2, right positive
   int ray_slack = 0;                // the most whole columns a ray lies from our column centre x + 1/2
   std::vector<Fixed> distscale;     // per column: 1 / cos(xtoviewangle)
+  // Per column: R_ScaleFromGlobalAngle's sine of the view, finesine[(ANG90 +
+  // xtoviewangle) >> 19] (its angle less the view's is the column's own angle).
+  std::vector<Fixed> view_sine;
   std::vector<Fixed> yslope;        // per row: (W/2) / |y - centery + 1/2|
   int scale_light_drop[kMaxLightScale] = {};  // scalelight: maps brighter at wall scale index j (at 320 columns)
   // wall_map's index, scale * 320 / light_width >> LIGHTSCALESHIFT, by a multiply
@@ -148,9 +151,19 @@ struct ScaleSines {
   Fixed view, seg;
 };
 inline ScaleSines scale_sines(const Tables& t, const Seg& seg, Angle view_angle, int x) {
-  const Angle visangle = view_angle + t.xtoviewangle[size_t(x)];
-  const Angle anglea = play::kAngle90 + (visangle - view_angle), angleb = play::kAngle90 + (visangle - seg.normal);
-  return {play::kFineSine[anglea >> play::kAngleToFineShift], play::kFineSine[angleb >> play::kAngleToFineShift]};
+  const Angle angleb = play::kAngle90 + (view_angle + t.xtoviewangle[size_t(x)] - seg.normal);
+  return {t.view_sine[size_t(x)], play::kFineSine[angleb >> play::kAngleToFineShift]};
+}
+// scale_sines at n columns xs, into view[k] and seg_sine[k].
+inline void scale_sines(const Tables& t, const Seg& seg, Angle view_angle, const int32_t* xs, size_t n, Fixed* view,
+                        Fixed* seg_sine) {
+  const Angle seg_angle = play::kAngle90 + (view_angle - seg.normal);  // angleb less the column's angle
+  const Angle* column_angle = t.xtoviewangle.data();
+  const Fixed* view_sine = t.view_sine.data();
+  for (size_t k = 0; k < n; ++k) {
+    const size_t x = size_t(xs[k]);
+    view[k] = view_sine[x], seg_sine[k] = play::kFineSine[(seg_angle + column_angle[x]) >> play::kAngleToFineShift];
+  }
 }
 // The rest of R_ScaleFromGlobalAngle: the scale from those sines (Tables::projection,
 // the seg's distance), at most max_scale.

@@ -341,10 +341,7 @@ void Canvas::draw_doom_walls(const WallHits& hits, std::vector<int>& closed) {
       run_sines_.resize(2 * (end - i));
       Fixed* sine_view = run_sines_.data();
       Fixed* sine_seg = sine_view + (end - i);
-      for (size_t k = i; k < end; ++k) {
-        const doom::ScaleSines sines = doom::scale_sines(*doom_, run.seg, view_->fangle, hits.x[k]);
-        sine_view[k - i] = sines.view, sine_seg[k - i] = sines.seg;
-      }
+      doom::scale_sines(*doom_, run.seg, view_->fangle, hits.x.data() + i, end - i, sine_view, sine_seg);
       doom_scales_avx512(sine_view, sine_seg, end - i, doom_->projection, run.seg.distance, run.max_scale,
                          run_scales_.data());
     } else {
