@@ -114,6 +114,9 @@ class Canvas {
   // clipped to the screen, once a frame for all the strips rather than by each.
   static void project_doom_sprites(const level::Level& level, const level::State& state, const View& view,
                                    std::vector<Sprite>& out);
+  // R_ProjectSprite of one thing over the whole screen; false when it shows nothing there.
+  static bool project_doom_sprite(const level::Level& level, const level::State& state, const View& view,
+                                  uint32_t thing, Sprite& s);
   // Those of a frame's projected sprites that cross this canvas's columns. With
   // `all`, they are every sprite the canvas will draw, added before any wall: a
   // column's steps are then kept only where a sprite or a masked middle needs them.
@@ -310,9 +313,6 @@ class Canvas {
   void mark_painted(int x, int y0, int y1, uint32_t id);
   void draw_painted_planes();
   void doom_sky_span(int x, int y0, int y1);
-  // R_ProjectSprite over the whole screen; false when the thing shows nothing there.
-  static bool project_doom_sprite(const level::Level& level, const level::State& state, const View& view,
-                                  uint32_t thing, Sprite& s);
   void doom_draw_layers();
   const DoomSide& doom_silhouette(const Step& step);
   void doom_draw_masked(int x, const Step& step);

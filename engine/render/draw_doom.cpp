@@ -659,12 +659,40 @@ bool Canvas::project_doom_sprite(const level::Level& level, const level::State& 
   return true;
 }
 
+namespace {
+
+// Most of a map's things lie behind the view or far to its sides. R_ProjectSprite's
+// two tests done first in doubles, with a margin of a whole unit where the fixed-point
+// roundings differ by less than a thousandth, reject those before its fixed-point
+// work; a thing 16384 units away or more, where Doom's wrapping arithmetic might
+// differ, is left to it.
+struct PlainlyUnseen {
+  double x, y, cos, sin;
+  explicit PlainlyUnseen(const View& view)
+      : x(double(view.fx) / kFracUnit),
+        y(double(view.fy) / kFracUnit),
+        cos(double(play::cosine(view.fangle)) / kFracUnit),
+        sin(double(play::sine(view.fangle)) / kFracUnit) {}
+  bool operator()(Vec2 p) const {
+    const double dx = p.x - x, dy = p.y - y;
+    if (std::abs(dx) + std::abs(dy) >= 16384) return false;
+    const double tz = dx * cos + dy * sin, tx = dx * sin - dy * cos;
+    const double min_z = double(doom::kMinZ) / kFracUnit;
+    return tz < min_z - 1 || std::abs(tx) > 4 * tz + 4;
+  }
+};
+
+}  // namespace
+
 void Canvas::project_doom_sprites(const level::Level& level, const level::State& state, const View& view,
                                   std::vector<Sprite>& out) {
   out.clear();
+  const PlainlyUnseen unseen(view);
   Sprite s;
-  for (uint32_t i = 0; i < state.things.size(); ++i)
-    if (project_doom_sprite(level, state, view, i, s)) out.push_back(s);
+  for (uint32_t i = 0; i < state.things.size(); ++i) {
+    const level::ShownThing& th = state.things[i];
+    if (th.frame != kNone && !unseen(th.pos) && project_doom_sprite(level, state, view, i, s)) out.push_back(s);
+  }
 }
 
 void Canvas::add_projected_sprites(std::span<const Sprite> sprites, bool all) {

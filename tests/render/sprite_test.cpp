@@ -10,6 +10,7 @@
 #include "engine/bsp/load.h"
 #include "engine/map/generate.h"
 #include "engine/map/source.h"
+#include "engine/render/draw.h"
 #include "engine/render/renderer.h"
 #include "tests/support/support.h"
 
@@ -451,6 +452,51 @@ TEST(Sprites, OneRendererFollowsMovingThingsFrameAfterFrame) {
     sprites += rs.sprites_drawn;
   }
   EXPECT_GT(sprites, 40u);
+}
+
+// Under Doom's rules a frame's sprites are projected together, a test in doubles first
+// turning away the things plainly behind the view or off to its sides: the same sprites
+// as R_ProjectSprite gives each thing alone, for things anywhere (some far enough that
+// Doom's 16.16 differences wrap), just nearer or farther than its MINZ, and either side
+// of the edges of the wedge it keeps (|tx| = 4 tz).
+TEST(Sprites, ProjectedTogetherAsOneByOne) {
+  const level::Level level =
+      bsp::open_level(bsp::LevelSource{{}, {test::freedoom_path("freedoom2.wad")}, "MAP01"}).level;
+  Rng rng(31);
+  level::State state = level::start_state(level);
+  size_t projected = 0;
+  for (int c = 0; c < 40; ++c) {
+    Camera camera = test::random_camera(level, rng);
+    camera.fov = 90;  // Doom's
+    const View view(camera, 320 << (c % 2), 200 << (c % 2), level);
+    ASSERT_NE(view.doom, nullptr);
+    state.things.clear();
+    for (int i = 0; i < 300; ++i) {
+      level::ShownThing t;
+      t.frame = int32_t(rng.below(uint32_t(level.sprite_frames.size())));
+      t.angle = rng.uniform(0, 360);
+      const double tz = i % 3 == 1 ? rng.uniform(2.5, 5.5) : rng.uniform(4, 2000);
+      const double tx = i % 3 == 2 ? (rng.below(2) ? 1 : -1) * (4 * tz + rng.uniform(-6, 6)) : rng.uniform(-tz, tz);
+      t.pos = i % 3 == 0 ? geom::Vec2{rng.uniform(-32000, 32000), rng.uniform(-32000, 32000)}
+                         : camera.pos + view.forward * tz + view.right * tx;
+      t.z = camera.z + rng.uniform(-100, 100);
+      state.things.push_back(t);
+    }
+    std::vector<Canvas::Sprite> together, alone;
+    Canvas::project_doom_sprites(level, state, view, together);
+    Canvas::Sprite s;
+    for (uint32_t i = 0; i < state.things.size(); ++i)
+      if (Canvas::project_doom_sprite(level, state, view, i, s)) alone.push_back(s);
+    ASSERT_EQ(together.size(), alone.size()) << "camera " << c;
+    for (size_t k = 0; k < alone.size(); ++k) {
+      EXPECT_EQ(together[k].thing, alone[k].thing) << "camera " << c;
+      EXPECT_EQ(together[k].x0, alone[k].x0) << "camera " << c;
+      EXPECT_EQ(together[k].x1, alone[k].x1) << "camera " << c;
+      EXPECT_EQ(together[k].scale, alone[k].scale) << "camera " << c;
+    }
+    projected += alone.size();
+  }
+  EXPECT_GT(projected, 1000u);
 }
 
 // On grid maps the grid ray caster draws the same sprites as the BSP renderer.
