@@ -87,6 +87,7 @@ void PlaneSpans::for_each_span(SpanFn&& span) {
     for (int x = p.x_min; x <= p.x_max + 1; ++x) {
       Run now = x <= p.x_max ? run(p, x) : Run{0, 0};
       if (now.top >= now.bottom) now = {0, 0};
+      if (now.top == last.top && now.bottom == last.bottom) continue;  // no span ends or starts
       for (int y = last.top; y < std::min(last.bottom, now.top); ++y) span(p.key, y, span_start_[size_t(y)], x);
       for (int y = std::max(last.top, now.bottom); y < last.bottom; ++y) span(p.key, y, span_start_[size_t(y)], x);
       for (int y = now.top; y < std::min(now.bottom, last.top); ++y) span_start_[size_t(y)] = x;
