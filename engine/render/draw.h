@@ -78,6 +78,12 @@ class Canvas {
     size_t size() const { return x.size(); }
     WallHit operator[](size_t k) const { return {wall, side, depth[k], t[k], fragment}; }
   };
+  // Hit k of hits, made a WallHit only where one is kept (record_step).
+  struct WallHitRef {
+    const WallHits& hits;
+    size_t k;
+    operator WallHit() const { return hits[k]; }
+  };
   // draw_wall for each of one wall's hits in turn, appending to `closed` each column a
   // hit closes. Under Doom's rules the hits on one of its segs are drawn as a run, the
   // seg looked up and its numbers copied out once (the same pixels as hit by hit).
@@ -220,8 +226,8 @@ class Canvas {
   // column's open rows [top, bottom), narrows them and returns whether it shows a
   // masked middle texture: the column's new rows and sector (far, the sector behind the
   // wall, when it has one), its step; true when closed.
-  template <typename Draw>
-  bool record_step(int x, const WallHit& hit, int near, int far, Draw&& draw);
+  template <typename Hit, typename Draw>  // Hit: a WallHit or a WallHitRef
+  bool record_step(int x, const Hit& hit, int near, int far, Draw&& draw);
   // Doom's rules (draw_doom.cpp): R_StoreWallRange and R_RenderSegLoop for one column.
   bool draw_hit_doom(int x, const WallHit& hit, int near, int& top, int& bottom);
   // What R_RenderSegLoop's columns of one side share, copied out of its DoomSide (set
@@ -514,8 +520,8 @@ inline void Canvas::doom_plane_span(DoomSide& ds, int x, int y0, int y1, bool ce
   planes_.add_to(plane, x, y0, y1);
 }
 
-template <typename Draw>
-bool Canvas::record_step(int x, const WallHit& hit, int near, int far, Draw&& draw) {
+template <typename Hit, typename Draw>
+bool Canvas::record_step(int x, const Hit& hit, int near, int far, Draw&& draw) {
   Column& c = columns_[x];
   int top = c.top, bottom = c.bottom;
   drawn_doom_side_ = kNoDoomSide;

@@ -352,9 +352,8 @@ void Canvas::draw_doom_walls(const WallHits& hits, std::vector<int>& closed) {
     const int far = run.side->far;  // the run's: one wall side
     for (size_t k = i; k < end; ++k) {
       const int x = hits.x[k];
-      const WallHit hit = hits[k];
       const Fixed scale = run_scales_[k - i];
-      if (record_step(x, hit, near, far,
+      if (record_step(x, WallHitRef{hits, k}, near, far,
                       [&](int& top, int& bottom) { return doom_column(run, x, scale, run_edges_, k - i, top, bottom); }))
         closed.push_back(x);
     }
