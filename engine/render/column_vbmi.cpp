@@ -175,6 +175,56 @@ void tabled_column_vbmi(uint8_t* out, int count, const uint8_t* rows, const uint
   if (i < count) _mm512_mask_storeu_epi8(out + i, first_bytes(count - i), column(load_first(rows + i, count - i)));
 }
 
+// Byte 0 of each 32-bit lane of four registers, in lane order: 64 bytes.
+alignas(64) constexpr uint8_t kByte0[64] = {
+    0,  4,  8,  12, 16, 20, 24, 28, 32, 36, 40, 44, 48, 52, 56, 60, 64, 68, 72, 76, 80, 84,
+    88, 92, 96, 100, 104, 108, 112, 116, 120, 124, 0, 4, 8, 12, 16, 20, 24, 28, 32, 36, 40, 44,
+    48, 52, 56, 60, 64, 68, 72, 76, 80, 84, 88, 92, 96, 100, 104, 108, 112, 116, 120, 124};
+
+inline __m512i low_bytes(const __m512i (&d)[4]) {
+  const __m512i pick = _mm512_load_si512(kByte0);
+  const __m512i low = _mm512_permutex2var_epi8(d[0], pick, d[1]), high = _mm512_permutex2var_epi8(d[2], pick, d[3]);
+  return _mm512_mask_blend_epi8(~__mmask64(0) << 32, low, high);
+}
+
+// Four columns of a 64 x 64 flat, from column `first` on (wrapping at 64), as a table.
+inline Table256 flat_columns(const uint8_t* indices, int first) {
+  auto column = [&](int j) { return _mm512_loadu_si512(indices + size_t((first + j) & 63) * 64); };
+  return {column(0), column(1), column(2), column(3)};
+}
+
+// 64 pixels of a 64 x 64 flat's row whose texels lie in `columns` (4 or 8) neighbouring
+// columns from column `first` on: looked up in registers holding those columns. us and
+// vs the first sixteen pixels' coordinates, du and dv the steps of sixteen; a pixel's
+// column is bits column_shift to column_shift + 5 of its u, its row bits row_shift on of v.
+inline __m512i windowed_texels(const uint8_t* indices, int first, int columns, int column_shift, int row_shift,
+                               __m512i us, __m512i vs, __m512i du, __m512i dv) {
+  const __m128i cs = _mm_cvtsi32_si128(column_shift), rs = _mm_cvtsi32_si128(row_shift);
+  const __m512i firsts = _mm512_set1_epi32(first), sevens = _mm512_set1_epi32(7), rows = _mm512_set1_epi32(63);
+  __m512i at[4];  // (column - first) * 64 + row: bits 6 and 7 the column of four, bit 8 which four
+  for (int g = 0; g < 4; ++g, us = _mm512_add_epi32(us, du), vs = _mm512_add_epi32(vs, dv)) {
+    const __m512i column = _mm512_and_si512(_mm512_sub_epi32(_mm512_srl_epi32(us, cs), firsts), sevens);
+    at[g] = _mm512_or_si512(_mm512_slli_epi32(column, 6), _mm512_and_si512(_mm512_srl_epi32(vs, rs), rows));
+  }
+  const __m512i index = low_bytes(at);
+  const __m512i near = flat_columns(indices, first)(index);
+  if (columns == 4) return near;
+  const __m512i fours = _mm512_set1_epi32(256);
+  const __mmask64 far =
+      _mm512_kunpackd(_mm512_kunpackw(_mm512_cmpge_epu32_mask(at[3], fours), _mm512_cmpge_epu32_mask(at[2], fours)),
+                      _mm512_kunpackw(_mm512_cmpge_epu32_mask(at[1], fours), _mm512_cmpge_epu32_mask(at[0], fours)));
+  return _mm512_mask_blend_epi8(far, near, flat_columns(indices, first + 4)(index));
+}
+
+// How many neighbouring columns of a 64 x 64 flat every 64 pixels of a row lie in (4 or
+// 8; 0: more, or not such a flat): a near row, or one seen along the flat's columns.
+inline int row_window(RowCoordinate u, RowCoordinate v) {
+  const int column_shift = int(u.shift) + 6;
+  if (u.mask != 63u << 6 || v.mask != 63u || column_shift + 6 > 32) return 0;
+  const uint64_t reach = uint64_t(std::abs(int64_t(int32_t(u.step)))) * 63;  // from a stretch's first pixel to its last
+  return reach < uint64_t(3) << column_shift ? 4 : reach < uint64_t(7) << column_shift ? 8 : 0;
+}
+
 void flat_row_vbmi(uint8_t* out, int n, RowCoordinate u, RowCoordinate v, const uint8_t* indices,
                    const uint8_t* light) {
   const Table256 light_table = Table256::load(light);
@@ -182,6 +232,18 @@ void flat_row_vbmi(uint8_t* out, int n, RowCoordinate u, RowCoordinate v, const 
   __m512i us = _mm512_add_epi32(_mm512_set1_epi32(int(u.value)), _mm512_mullo_epi32(lanes, _mm512_set1_epi32(int(u.step))));
   __m512i vs = _mm512_add_epi32(_mm512_set1_epi32(int(v.value)), _mm512_mullo_epi32(lanes, _mm512_set1_epi32(int(v.step))));
   const __m512i du = _mm512_set1_epi32(int(16 * u.step)), dv = _mm512_set1_epi32(int(16 * v.step));
+  if (const int columns = row_window(u, v)) {
+    // Each stretch's columns from its first pixel's on, or back from it for a step down.
+    const int column_shift = int(u.shift) + 6, back = int32_t(u.step) < 0 ? columns - 1 : 0;
+    const __m512i du64 = _mm512_slli_epi32(du, 2), dv64 = _mm512_slli_epi32(dv, 2);
+    for (int i = 0; i < n; i += 64) {
+      const int first = int((u.value + uint32_t(i) * u.step) >> column_shift) - back;
+      const __m512i texels = windowed_texels(indices, first & 63, columns, column_shift, int(v.shift), us, vs, du, dv);
+      _mm512_mask_storeu_epi8(out + i, first_bytes(std::min(64, n - i)), light_table(texels));
+      us = _mm512_add_epi32(us, du64), vs = _mm512_add_epi32(vs, dv64);
+    }
+    return;
+  }
   const __m128i u_shift = _mm_cvtsi32_si128(int(u.shift)), v_shift = _mm_cvtsi32_si128(int(v.shift));
   const __m512i u_mask = _mm512_set1_epi32(int(u.mask)), v_mask = _mm512_set1_epi32(int(v.mask));
   alignas(64) uint32_t at[64];

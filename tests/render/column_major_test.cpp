@@ -128,9 +128,13 @@ TEST(ColumnMajor, VectorFlatRowDrawsTheScalarLoopsBytes) {
       // Column-major, u's texel above v's, as the canvas asks for them.
       const uint32_t u_shift = uint32_t(16 - height_log2), u_mask = ((1u << width_log2) - 1) << height_log2;
       const uint32_t v_mask = (1u << height_log2) - 1;
-      for (int trial = 0; trial < 100; ++trial) {
-        const int n = trial < 50 ? rng.range(1, 300) : 64 * rng.range(1, 4) + rng.range(-1, 1);
-        const RowCoordinate u{uint32_t(rng.next()), uint32_t(rng.next()), u_shift, u_mask};
+      for (int trial = 0; trial < 200; ++trial) {
+        const int n = trial % 100 < 50 ? rng.range(1, 300) : 64 * rng.range(1, 4) + rng.range(-1, 1);
+        // The second hundred step u by a few columns a stretch of 64 pixels, up or down:
+        // a 64 x 64 flat's rows within four or eight columns are looked up in registers.
+        const int64_t column = int64_t(1) << (u_shift + height_log2);
+        const uint32_t u_step = trial < 100 ? uint32_t(rng.next()) : uint32_t(int32_t(rng.range(-9 * column, 9 * column) / 63));
+        const RowCoordinate u{uint32_t(rng.next()), u_step, u_shift, u_mask};
         const RowCoordinate v{uint32_t(rng.next()), uint32_t(rng.next()), 16, v_mask};
         std::vector<uint8_t> want(static_cast<size_t>(n)), got(static_cast<size_t>(n) + 64, 0x5A);
         indexed_row(want.data(), n, u, v, flat.data(), light.data());
@@ -141,6 +145,19 @@ TEST(ColumnMajor, VectorFlatRowDrawsTheScalarLoopsBytes) {
         for (size_t i = size_t(n); i < got.size(); ++i) ASSERT_EQ(got[i], 0x5A) << what << ": wrote past the row";
       }
     }
+  // Vanilla's packed position: u bits 26 to 31, v bits 10 to 15 of one coordinate.
+  std::vector<uint8_t> flat(64 * 64);
+  for (uint8_t& b : flat) b = uint8_t(rng.next());
+  for (int trial = 0; trial < 200; ++trial) {
+    const int n = rng.range(1, 300);
+    const uint32_t step = trial < 100 ? uint32_t(rng.next()) : uint32_t(int32_t(rng.range(-9 << 26, 9 << 26) / 63));
+    const uint32_t position = uint32_t(rng.next());
+    const RowCoordinate u{position, step, 20, 63u << 6}, v{position, step, 10, 63u};
+    std::vector<uint8_t> want(static_cast<size_t>(n)), got(static_cast<size_t>(n));
+    indexed_row(want.data(), n, u, v, flat.data(), light.data());
+    flat_row_vbmi(got.data(), n, u, v, flat.data(), light.data());
+    ASSERT_EQ(got, want) << "packed, " << n << " pixels, step " << int32_t(step);
+  }
 }
 
 }  // namespace
