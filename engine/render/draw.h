@@ -289,6 +289,10 @@ class Canvas {
     const level::Texture* tex;  // null with none
     int width_mask;             // Doom's: the largest power of two within the width, less one
     doom::Fixed mid, x;         // the texture's mid (pegged, offset) and its column offset
+    // Crispy's rules, indices, the vector loops on and 2^rows_log2 rows (at most 256):
+    // a column of 16 rows or more goes straight to wall_column_vbmi.
+    bool vector = false;
+    int rows_log2 = 0;
   };
   void doom_wall_rows(int x, int y0, int y1, const DoomPart& part, int32_t column, uint32_t iscale, int map);
   void crispy_wall_rows(int x, int y0, int y1, const level::Texture& tex, int u, doom::Fixed v0, uint32_t iscale, int map);

@@ -202,6 +202,9 @@ Canvas::DoomRun Canvas::doom_run(DoomSide& ds, const WallHit& hit, int near) {
     p.tex = p.texture != kNone ? &level_->textures[size_t(p.texture)] : nullptr;
     p.width_mask = p.tex ? width_mask(p.tex->width) : 0;
     p.mid = ds.mid[part], p.x = ds.part_x[part];
+    p.vector = p.tex && t.crispy && indexed_ && columns_pending_ && !painting_planes_ && p.tex->height <= 256 &&
+               std::has_single_bit(unsigned(p.tex->height));
+    p.rows_log2 = p.tex ? std::countr_zero(unsigned(p.tex->height)) : 0;
   }
   return r;
 }
@@ -379,6 +382,13 @@ inline void Canvas::crispy_wall_rows(int x, int y0, int y1, const level::Texture
 }
 
 void Canvas::doom_wall_rows(int x, int y0, int y1, const DoomPart& part, int32_t column, uint32_t iscale, int map) {
+  if (part.vector && y1 - y0 >= kVectorColumnRows) {  // the commonest case, as crispy_wall_rows draws it
+    count(x, y0, y1);
+    const uint8_t* source = part.tex->indices.data() + (size_t(column & part.width_mask) << part.rows_log2);
+    return wall_column_vbmi(column_pixel(x, y0), y1 - y0, uint32_t(part.mid) + uint32_t(y0 - doom_->centery) * iscale,
+                            iscale, part.rows_log2, source,
+                            level_->light_indices.data() + size_t(map) * limits::kPaletteSize);
+  }
   if (part.texture == kNone) return fill_span(x, y0, y1, Fill::kMissingTexture);
   count(x, y0, y1);
   if (painting_planes_) mark_painted(x, y0, y1, kNoPlane);
