@@ -193,36 +193,43 @@ inline Table256 flat_columns(const uint8_t* indices, int first) {
   return {column(0), column(1), column(2), column(3)};
 }
 
-// 64 pixels of a 64 x 64 flat's row whose texels lie in `columns` (4 or 8) neighbouring
+// 64 pixels of a 64 x 64 flat's row whose texels lie in `columns` (4, 8 or 16) neighbouring
 // columns from column `first` on: looked up in registers holding those columns. us and
 // vs the first sixteen pixels' coordinates, du and dv the steps of sixteen; a pixel's
 // column is bits column_shift to column_shift + 5 of its u, its row bits row_shift on of v.
 inline __m512i windowed_texels(const uint8_t* indices, int first, int columns, int column_shift, int row_shift,
                                __m512i us, __m512i vs, __m512i du, __m512i dv) {
   const __m128i cs = _mm_cvtsi32_si128(column_shift), rs = _mm_cvtsi32_si128(row_shift);
-  const __m512i firsts = _mm512_set1_epi32(first), sevens = _mm512_set1_epi32(7), rows = _mm512_set1_epi32(63);
-  __m512i at[4];  // (column - first) * 64 + row: bits 6 and 7 the column of four, bit 8 which four
+  const __m512i firsts = _mm512_set1_epi32(first), fifteens = _mm512_set1_epi32(15), rows = _mm512_set1_epi32(63);
+  __m512i at[4];  // (column - first) * 64 + row: bits 6 and 7 the column of four, bits 8 and 9 which four
   for (int g = 0; g < 4; ++g, us = _mm512_add_epi32(us, du), vs = _mm512_add_epi32(vs, dv)) {
-    const __m512i column = _mm512_and_si512(_mm512_sub_epi32(_mm512_srl_epi32(us, cs), firsts), sevens);
+    const __m512i column = _mm512_and_si512(_mm512_sub_epi32(_mm512_srl_epi32(us, cs), firsts), fifteens);
     at[g] = _mm512_or_si512(_mm512_slli_epi32(column, 6), _mm512_and_si512(_mm512_srl_epi32(vs, rs), rows));
   }
   const __m512i index = low_bytes(at);
+  auto lanes_with = [&](int bit) {  // the pixels whose at has the bit: a mask of 64
+    const __m512i b = _mm512_set1_epi32(bit);
+    return _mm512_kunpackd(_mm512_kunpackw(_mm512_test_epi32_mask(at[3], b), _mm512_test_epi32_mask(at[2], b)),
+                           _mm512_kunpackw(_mm512_test_epi32_mask(at[1], b), _mm512_test_epi32_mask(at[0], b)));
+  };
   const __m512i near = flat_columns(indices, first)(index);
   if (columns == 4) return near;
-  const __m512i fours = _mm512_set1_epi32(256);
-  const __mmask64 far =
-      _mm512_kunpackd(_mm512_kunpackw(_mm512_cmpge_epu32_mask(at[3], fours), _mm512_cmpge_epu32_mask(at[2], fours)),
-                      _mm512_kunpackw(_mm512_cmpge_epu32_mask(at[1], fours), _mm512_cmpge_epu32_mask(at[0], fours)));
-  return _mm512_mask_blend_epi8(far, near, flat_columns(indices, first + 4)(index));
+  const __mmask64 odd = lanes_with(256);
+  const __m512i eight = _mm512_mask_blend_epi8(odd, near, flat_columns(indices, first + 4)(index));
+  if (columns == 8) return eight;
+  const __m512i far = _mm512_mask_blend_epi8(odd, flat_columns(indices, first + 8)(index),
+                                             flat_columns(indices, first + 12)(index));
+  return _mm512_mask_blend_epi8(lanes_with(512), eight, far);
 }
 
-// How many neighbouring columns of a 64 x 64 flat every 64 pixels of a row lie in (4 or
-// 8; 0: more, or not such a flat): a near row, or one seen along the flat's columns.
+// How many neighbouring columns of a 64 x 64 flat every 64 pixels of a row lie in (4, 8
+// or 16; 0: more, or not such a flat): a near row, or one seen along the flat's columns.
 inline int row_window(RowCoordinate u, RowCoordinate v) {
   const int column_shift = int(u.shift) + 6;
   if (u.mask != 63u << 6 || v.mask != 63u || column_shift + 6 > 32) return 0;
   const uint64_t reach = uint64_t(std::abs(int64_t(int32_t(u.step)))) * 63;  // from a stretch's first pixel to its last
-  return reach < uint64_t(3) << column_shift ? 4 : reach < uint64_t(7) << column_shift ? 8 : 0;
+  if (reach < uint64_t(3) << column_shift) return 4;
+  return reach < uint64_t(7) << column_shift ? 8 : reach < uint64_t(15) << column_shift ? 16 : 0;
 }
 
 void flat_row_vbmi(uint8_t* out, int n, RowCoordinate u, RowCoordinate v, const uint8_t* indices,
