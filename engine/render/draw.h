@@ -281,8 +281,6 @@ class Canvas {
   }
   void set_up_doom_side(DoomSide& d, uint32_t wall, int side, const level::Level::DoomSeg* seg);
   void set_up_doom_wall(DoomSide& d, const WallHit& hit, int near);
-  // Rows [y0, y1) of a wall column as R_DrawColumn draws them: texel row
-  // ((mid + (y - centery) * iscale) >> 16) & 127, column `column` & Doom's width mask.
   // A wall part's texture as a run's columns draw it, looked up once a run.
   struct DoomPart {
     int texture;                // kNone: none
@@ -294,6 +292,8 @@ class Canvas {
     bool vector = false;
     int rows_log2 = 0;
   };
+  // Rows [y0, y1) of a wall column as R_DrawColumn draws them: texel row
+  // ((mid + (y - centery) * iscale) >> 16) & 127, column `column` & the part's width mask.
   void doom_wall_rows(int x, int y0, int y1, const DoomPart& part, int32_t column, uint32_t iscale, int map);
   void crispy_wall_rows(int x, int y0, int y1, const level::Texture& tex, int u, doom::Fixed v0, uint32_t iscale, int map);
   // Pixels [xa, xb) of row y of a flat, its span stepping from column `start` <= xa.
