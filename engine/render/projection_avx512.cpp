@@ -20,6 +20,16 @@
 
 namespace p3d::render {
 
+namespace {
+
+// The first n of eight lanes (all of them from eight on).
+inline __mmask8 first_lanes(size_t n) { return n >= 8 ? __mmask8(0xFF) : __mmask8((1u << n) - 1); }
+
+// A 64-bit value's low 32 bits, sign-extended: the Fixed it is cast to.
+inline __m512i as_fixed(__m512i v) { return _mm512_cvtepi32_epi64(_mm512_cvtepi64_epi32(v)); }
+
+}  // namespace
+
 size_t open_column_hits_avx512(const WallProjector& p, const FragmentSpan& span, const uint64_t* closed, int x0, int x1,
                                RayHits out) {
   const __m512d side0_a = _mm512_set1_pd(p.side0[0]), side0_b = _mm512_set1_pd(p.side0[1]);
@@ -66,10 +76,8 @@ void doom_scales_avx512(const doom::Fixed* sine_view, const doom::Fixed* sine_se
   const __m512i most = _mm512_set1_epi64(max_scale), least = _mm512_set1_epi64(256);
   const __m512i int_min = _mm512_set1_epi64(INT32_MIN), int_max = _mm512_set1_epi64(INT32_MAX);
   const __m512i zero = _mm512_setzero_si512();
-  // A 64-bit product's low 32 bits, sign-extended: the Fixed it is cast to.
-  auto as_fixed = [](__m512i v) { return _mm512_cvtepi32_epi64(_mm512_cvtepi64_epi32(v)); };
   for (size_t i = 0; i < n; i += 8) {
-    const __mmask8 lanes = n - i >= 8 ? __mmask8(0xFF) : __mmask8((1u << (n - i)) - 1);
+    const __mmask8 lanes = first_lanes(n - i);
     const __m512i sinea = _mm512_cvtepi32_epi64(_mm256_maskz_loadu_epi32(lanes, sine_view + i));
     const __m512i sineb = _mm512_cvtepi32_epi64(_mm256_maskz_loadu_epi32(lanes, sine_seg + i));
     const __m512i num = as_fixed(_mm512_srai_epi64(_mm512_mullo_epi64(projections, sineb), 16));
@@ -101,9 +109,8 @@ void doom_edge_rows_avx512(const doom::Fixed* scales, size_t n, doom::Fixed worl
   const __m512i rounds = _mm512_set1_epi64(round);
   const __m512i lowest = _mm512_set1_epi64(INT_MIN / 2), highest = _mm512_set1_epi64(INT_MAX / 2);
   const __m128i shift = _mm_cvtsi32_si128(bits);
-  auto as_fixed = [](__m512i v) { return _mm512_cvtepi32_epi64(_mm512_cvtepi64_epi32(v)); };
   for (size_t i = 0; i < n; i += 8) {
-    const __mmask8 lanes = n - i >= 8 ? __mmask8(0xFF) : __mmask8((1u << (n - i)) - 1);
+    const __mmask8 lanes = first_lanes(n - i);
     const __m512i scale = _mm512_cvtepi32_epi64(_mm256_maskz_loadu_epi32(lanes, scales + i));
     const __m512i product = _mm512_srai_epi64(_mm512_mul_epi32(worlds, scale), 16);  // signed 32 x 32 bits
     const __m512i edge = crispy ? _mm512_sub_epi64(centers, product)
