@@ -64,9 +64,9 @@ void tabled_column_vbmi(uint8_t* out, int count, const uint8_t* rows, const uint
                         const uint8_t* light);
 
 // n pixels of a flat's row, as indexed_row draws them: each texel's index worked out
-// 16 at a time, the texels fetched one by one (or, for a 64 x 64 flat's row whose every
-// 64 pixels lie within sixteen of its columns, looked up in registers holding them),
-// lit 64 at a time by table look-ups.
+// and its texel gathered 16 at a time (or, for a 64 x 64 flat's row whose every 64
+// pixels lie within sixteen of its columns, looked up in registers holding them), lit
+// 64 at a time by table look-ups.
 void flat_row_vbmi(uint8_t* out, int n, RowCoordinate u, RowCoordinate v, const uint8_t* indices,
                    const uint8_t* light);
 

@@ -253,21 +253,24 @@ void flat_row_vbmi(uint8_t* out, int n, RowCoordinate u, RowCoordinate v, const 
   }
   const __m128i u_shift = _mm_cvtsi32_si128(int(u.shift)), v_shift = _mm_cvtsi32_si128(int(v.shift));
   const __m512i u_mask = _mm512_set1_epi32(int(u.mask)), v_mask = _mm512_set1_epi32(int(v.mask));
-  alignas(64) uint32_t at[64];
-  alignas(64) uint8_t texels[64];
+  // Each texel gathered with the aligned four bytes that hold it, never a byte outside
+  // them, then shifted down to its lane's low byte.
+  const int skew = int(uintptr_t(indices) & 3);
+  const uint8_t* words = indices - skew;
+  const __m512i skews = _mm512_set1_epi32(skew), threes = _mm512_set1_epi32(3);
+  auto texels_of = [&] {
+    const __m512i at = _mm512_add_epi32(_mm512_or_si512(_mm512_and_si512(_mm512_srl_epi32(us, u_shift), u_mask),
+                                                        _mm512_and_si512(_mm512_srl_epi32(vs, v_shift), v_mask)),
+                                        skews);
+    const __m512i word = _mm512_i32gather_epi32(_mm512_andnot_si512(threes, at), words, 1);
+    us = _mm512_add_epi32(us, du), vs = _mm512_add_epi32(vs, dv);
+    return _mm512_srlv_epi32(word, _mm512_slli_epi32(_mm512_and_si512(at, threes), 3));
+  };
   for (int i = 0; i < n; i += 64) {
-    const int count = std::min(64, n - i), groups = (count + 15) / 16;
-    for (int g = 0; g < groups; ++g) {
-      const __m512i index = _mm512_or_si512(_mm512_and_si512(_mm512_srl_epi32(us, u_shift), u_mask),
-                                            _mm512_and_si512(_mm512_srl_epi32(vs, v_shift), v_mask));
-      _mm512_store_si512(at + 16 * g, index);
-      us = _mm512_add_epi32(us, du), vs = _mm512_add_epi32(vs, dv);
-    }
-    for (int k = 0; k < groups * 16; k += 4) {  // past count: texels of the flat, never stored
-      texels[k] = indices[at[k]], texels[k + 1] = indices[at[k + 1]];
-      texels[k + 2] = indices[at[k + 2]], texels[k + 3] = indices[at[k + 3]];
-    }
-    _mm512_mask_storeu_epi8(out + i, first_bytes(count), light_table(_mm512_load_si512(texels)));
+    const int count = std::min(64, n - i);
+    __m512i texels[4];
+    for (int g = 0; g < 4; ++g) texels[g] = 16 * g < count ? texels_of() : _mm512_setzero_si512();
+    _mm512_mask_storeu_epi8(out + i, first_bytes(count), light_table(low_bytes(texels)));
   }
 }
 
