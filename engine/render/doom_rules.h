@@ -154,16 +154,16 @@ inline ScaleSines scale_sines(const Tables& t, const Seg& seg, Angle view_angle,
   const Angle angleb = play::kAngle90 + (view_angle + t.xtoviewangle[size_t(x)] - seg.normal);
   return {t.view_sine[size_t(x)], play::kFineSine[angleb >> play::kAngleToFineShift]};
 }
-// scale_sines at n columns xs, into view[k] and seg_sine[k].
-inline void scale_sines(const Tables& t, const Seg& seg, Angle view_angle, const int32_t* xs, size_t n, Fixed* view,
-                        Fixed* seg_sine) {
-  const Angle seg_angle = play::kAngle90 + (view_angle - seg.normal);  // angleb less the column's angle
-  const Angle* column_angle = t.xtoviewangle.data();
-  const Fixed* view_sine = t.view_sine.data();
-  for (size_t k = 0; k < n; ++k) {
-    const size_t x = size_t(xs[k]);
-    view[k] = view_sine[x], seg_sine[k] = play::kFineSine[(seg_angle + column_angle[x]) >> play::kAngleToFineShift];
-  }
+// Where scale_sines looks one seg's sines up, for a loop that looks up many columns':
+// at column x, view_sine[x] and fine_sine[(seg_angle + column_angle[x]) >> 19].
+struct SegSines {
+  const Fixed* view_sine;     // Tables::view_sine
+  const Angle* column_angle;  // Tables::xtoviewangle
+  const Fixed* fine_sine;     // play::kFineSine
+  Angle seg_angle;            // angleb less the column's angle
+};
+inline SegSines seg_sines(const Tables& t, const Seg& seg, Angle view_angle) {
+  return {t.view_sine.data(), t.xtoviewangle.data(), play::kFineSine, play::kAngle90 + (view_angle - seg.normal)};
 }
 // The rest of R_ScaleFromGlobalAngle: the scale from those sines (Tables::projection,
 // the seg's distance), at most max_scale.

@@ -478,7 +478,6 @@ class Canvas {
   doom::Fixed base_x_scale_ = 0, base_y_scale_ = 0;
   uint32_t doom_stamp_ = 0;
   std::vector<doom::Fixed> run_scales_;  // draw_doom_walls' scratch: a run's columns' scales
-  std::vector<doom::Fixed> run_sines_;   // and their two sines each (doom_scales_avx512)
   EdgeRows run_edges_;                    // and their edges' rows
   bool vector_scales_ = false;           // this frame: the scales eight at a time (vector_projection())
   uint32_t drawn_doom_side_ = kNoDoomSide;  // the DoomSide draw_hit_doom last drew, for its Step

@@ -340,13 +340,9 @@ void Canvas::draw_doom_walls(const WallHits& hits, std::vector<int>& closed) {
     // The run's scales first: their divisions overlap one another rather than each
     // waiting behind the last column's work.
     run_scales_.resize(end - i);
-    if (vector_scales_) {  // scale_at's two sines looked up, the rest eight at a time
-      run_sines_.resize(2 * (end - i));
-      Fixed* sine_view = run_sines_.data();
-      Fixed* sine_seg = sine_view + (end - i);
-      doom::scale_sines(*doom_, run.seg, view_->fangle, hits.x.data() + i, end - i, sine_view, sine_seg);
-      doom_scales_avx512(sine_view, sine_seg, end - i, doom_->projection, run.seg.distance, run.max_scale,
-                         run_scales_.data());
+    if (vector_scales_) {  // eight at a time, their sines gathered
+      doom_scales_avx512(hits.x.data() + i, end - i, doom::seg_sines(*doom_, run.seg, view_->fangle), doom_->projection,
+                         run.seg.distance, run.max_scale, run_scales_.data());
     } else {
       for (size_t k = i; k < end; ++k)
         run_scales_[k - i] = doom::scale_at(*doom_, run.seg, view_->fangle, hits.x[k], run.max_scale);

@@ -70,16 +70,25 @@ size_t open_column_hits_avx512(const WallProjector& p, const FragmentSpan& span,
   return n;
 }
 
-void doom_scales_avx512(const doom::Fixed* sine_view, const doom::Fixed* sine_seg, size_t n, doom::Fixed projection,
+void doom_scales_avx512(const int32_t* xs, size_t n, const doom::SegSines& sines, doom::Fixed projection,
                         doom::Fixed distance, doom::Fixed max_scale, doom::Fixed* out) {
+  const __m256i seg_angle = _mm256_set1_epi32(int(sines.seg_angle));
   const __m512i projections = _mm512_set1_epi64(projection), distances = _mm512_set1_epi64(distance);
   const __m512i most = _mm512_set1_epi64(max_scale), least = _mm512_set1_epi64(256);
   const __m512i int_min = _mm512_set1_epi64(INT32_MIN), int_max = _mm512_set1_epi64(INT32_MAX);
   const __m512i zero = _mm512_setzero_si512();
   for (size_t i = 0; i < n; i += 8) {
     const __mmask8 lanes = first_lanes(n - i);
-    const __m512i sinea = _mm512_cvtepi32_epi64(_mm256_maskz_loadu_epi32(lanes, sine_view + i));
-    const __m512i sineb = _mm512_cvtepi32_epi64(_mm256_maskz_loadu_epi32(lanes, sine_seg + i));
+    const __m256i x = _mm256_maskz_loadu_epi32(lanes, xs + i);
+    // Eight neighbouring columns' (the commonest) loaded rather than gathered.
+    const bool neighbours = lanes == 0xFF && xs[i + 7] - xs[i] == 7;
+    const __m256i column_angle = neighbours ? _mm256_loadu_si256(reinterpret_cast<const __m256i*>(sines.column_angle + xs[i]))
+                                            : _mm256_mmask_i32gather_epi32(x, lanes, x, sines.column_angle, 4);
+    const __m256i view_sine = neighbours ? _mm256_loadu_si256(reinterpret_cast<const __m256i*>(sines.view_sine + xs[i]))
+                                         : _mm256_mmask_i32gather_epi32(x, lanes, x, sines.view_sine, 4);
+    const __m256i fine = _mm256_srli_epi32(_mm256_add_epi32(seg_angle, column_angle), 19);  // kAngleToFineShift
+    const __m512i sinea = _mm512_cvtepi32_epi64(view_sine);
+    const __m512i sineb = _mm512_cvtepi32_epi64(_mm256_mmask_i32gather_epi32(x, lanes, fine, sines.fine_sine, 4));
     const __m512i num = as_fixed(_mm512_srai_epi64(_mm512_mullo_epi64(projections, sineb), 16));
     const __m512i den = as_fixed(_mm512_srai_epi64(_mm512_mullo_epi64(distances, sinea), 16));
     const __mmask8 in_front = _mm512_cmpgt_epi64_mask(den, _mm512_srai_epi64(num, 16));

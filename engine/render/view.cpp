@@ -65,7 +65,7 @@ bool vector_projection() {
 size_t open_column_hits_avx512(const WallProjector&, const FragmentSpan&, const uint64_t*, int, int, RayHits) {
   return 0;
 }
-void doom_scales_avx512(const doom::Fixed*, const doom::Fixed*, size_t, doom::Fixed, doom::Fixed, doom::Fixed,
+void doom_scales_avx512(const int32_t*, size_t, const doom::SegSines&, doom::Fixed, doom::Fixed, doom::Fixed,
                         doom::Fixed*) {}
 void doom_edge_rows_avx512(const doom::Fixed*, size_t, doom::Fixed, int64_t, int, bool, int64_t, int32_t*) {}
 #endif

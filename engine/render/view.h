@@ -151,12 +151,12 @@ bool vector_projection();
 // The same hits as the scalar test, to the bit. Only where vector_projection() is true.
 size_t open_column_hits_avx512(const WallProjector& p, const FragmentSpan& span, const uint64_t* closed, int x0, int x1,
                                RayHits out);
-// doom::scale_at for n columns of one seg from their two sines (of kAngle90 plus the
-// column's angle from the view's axis, and plus its angle from the seg's normal), eight
-// at a time: R_ScaleFromGlobalAngle's products, its division (in doubles, which give
-// the integer quotient exactly here) and its clamps, the same scales to the bit. Only
-// where vector_projection() is true.
-void doom_scales_avx512(const doom::Fixed* sine_view, const doom::Fixed* sine_seg, size_t n, doom::Fixed projection,
+// doom::scale_at for n columns xs (in increasing order) of one seg, eight at a time: its
+// two sines (doom::SegSines) loaded for eight neighbouring columns, else gathered;
+// R_ScaleFromGlobalAngle's products, its division (in doubles, which give the integer
+// quotient exactly here) and its clamps, the same scales to the bit. Only where
+// vector_projection() is true.
+void doom_scales_avx512(const int32_t* xs, size_t n, const doom::SegSines& sines, doom::Fixed projection,
                         doom::Fixed distance, doom::Fixed max_scale, doom::Fixed* out);
 // The rows of a wall edge at height `world` (in the run's fixed point of `bits`
 // fraction bits, as center) for n columns of scales, eight at a time: center - world *

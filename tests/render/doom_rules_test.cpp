@@ -78,20 +78,19 @@ TEST(DoomRules, ExactQuotientIsTheDivision) {
 
 // R_ScaleFromGlobalAngle's two sines as Doom writes them (visangle = viewangle +
 // xtoviewangle[x]; anglea = ANG90 + visangle - viewangle; angleb = ANG90 + visangle -
-// rw_normalangle), against scale_sines, whose view sine is tabulated per column, one
-// column at a time and a run's columns at once, at any view and seg angle.
+// rw_normalangle), against scale_sines, whose view sine is tabulated per column, and
+// against the tables seg_sines gives a run's columns, at any view and seg angle.
 TEST(DoomRules, ScaleSinesAreDooms) {
   Rng rng(9);
   for (const auto& [w, h] : {std::pair{320, 200}, {640, 400}, {1920, 1080}}) {
     const Tables& t = tables(w, h);
     std::vector<int32_t> xs;
     for (int x = 0; x < w; x += 1 + int(rng.below(5))) xs.push_back(x);
-    std::vector<Fixed> view(xs.size()), seg_sine(xs.size());
     for (int i = 0; i < 100; ++i) {
       const Angle view_angle = Angle(rng.below(uint64_t(1) << 32));
       Seg seg;
       seg.normal = Angle(rng.below(uint64_t(1) << 32));
-      scale_sines(t, seg, view_angle, xs.data(), xs.size(), view.data(), seg_sine.data());
+      const SegSines sines = seg_sines(t, seg, view_angle);
       for (size_t k = 0; k < xs.size(); ++k) {
         const Angle visangle = view_angle + t.xtoviewangle[size_t(xs[k])];
         const Fixed anglea = play::kFineSine[(play::kAngle90 + visangle - view_angle) >> play::kAngleToFineShift];
@@ -99,8 +98,10 @@ TEST(DoomRules, ScaleSinesAreDooms) {
         const ScaleSines one = scale_sines(t, seg, view_angle, xs[k]);
         ASSERT_EQ(one.view, anglea) << w << " x " << xs[k];
         ASSERT_EQ(one.seg, angleb) << w << " x " << xs[k];
-        ASSERT_EQ(view[k], anglea) << w << " x " << xs[k];
-        ASSERT_EQ(seg_sine[k], angleb) << w << " x " << xs[k];
+        const size_t x = size_t(xs[k]);
+        ASSERT_EQ(sines.view_sine[x], anglea) << w << " x " << xs[k];
+        ASSERT_EQ(sines.fine_sine[(sines.seg_angle + sines.column_angle[x]) >> play::kAngleToFineShift], angleb)
+            << w << " x " << xs[k];
       }
     }
   }

@@ -68,9 +68,10 @@ TEST(Projection, VectorHitsAreTheScalarHits) {
   EXPECT_GT(hits, size_t(60000));  // rays that meet the segment, and many that do not
 }
 
-// Doom's wall scales eight at a time: doom::scale_at's, to the bit, for random segs,
-// views and columns (the division in doubles, saturated quotients, the clamps), at
-// Crispy's and vanilla's widths; and for raw quotients chosen just below whole numbers.
+// Doom's wall scales eight at a time, their sines gathered: doom::scale_at's, to the
+// bit, for random segs, views and columns (the division in doubles, saturated quotients,
+// the clamps), at Crispy's and vanilla's widths; and for raw quotients chosen just below
+// whole numbers.
 TEST(Projection, VectorScalesAreScaleAt) {
   if (!vector_projection()) GTEST_SKIP() << "no AVX-512 on this processor";
   Rng rng(22);
@@ -86,15 +87,21 @@ TEST(Projection, VectorScalesAreScaleAt) {
       const doom::Fixed max_scale = trial % 8 == 0   ? doom::Fixed(rng.range(1, 512))  // below 256: the clamps' order
                                     : trial % 4 == 0 ? doom::Fixed(rng.range(1, 1 << 30))
                                                      : 64 * doom::kFracUnit;
-      const size_t n = size_t(rng.range(1, 40));
-      std::vector<int> xs(n);
+      // A run's columns, in order: mostly neighbours (loaded), some apart (gathered).
+      std::vector<int32_t> xs{int32_t(rng.below(uint64_t(width)))};
+      for (size_t k = 1, n = size_t(rng.range(1, 40)); k < n; ++k) {
+        const int32_t x = xs.back() + 1 + (rng.below(4) == 0 ? int32_t(rng.below(6)) : 0);
+        if (x >= width) break;
+        xs.push_back(x);
+      }
+      const size_t n = xs.size();
       std::vector<doom::Fixed> sine_view(n), sine_seg(n), got(n + 8, 0x5A5A5A5A);
       for (size_t k = 0; k < n; ++k) {
-        xs[k] = int(rng.below(uint64_t(width)));
         const doom::ScaleSines sines = doom::scale_sines(t, seg, view_angle, xs[k]);
         sine_view[k] = sines.view, sine_seg[k] = sines.seg;
       }
-      doom_scales_avx512(sine_view.data(), sine_seg.data(), n, t.projection, seg.distance, max_scale, got.data());
+      doom_scales_avx512(xs.data(), n, doom::seg_sines(t, seg, view_angle), t.projection, seg.distance, max_scale,
+                         got.data());
       for (size_t k = 0; k < n; ++k) {
         const doom::Fixed want = doom::scale_at(t, seg, view_angle, xs[k], max_scale);
         ASSERT_EQ(got[k], want) << width << " columns, trial " << trial << ", x " << xs[k];
@@ -112,14 +119,17 @@ TEST(Projection, VectorScalesAreScaleAt) {
   // Sines of one: the products are the projection and the distance themselves, so the
   // quotient (num << 16) / den can be put just below (or above) a whole number, where a
   // division in doubles could round across it.
-  const std::vector<doom::Fixed> ones(8, doom::kFracUnit);
+  const doom::Fixed one = doom::kFracUnit;
+  const doom::Angle straight = 0;
+  const int32_t column = 0;
+  const doom::SegSines ones{&one, &straight, &one, 0};
   for (int trial = 0; trial < 200000; ++trial) {
     const doom::Fixed den = doom::Fixed(rng.range(1 << 16, INT32_MAX)) * (trial % 2 ? 1 : -1);
     const int64_t whole = int64_t(rng.range(1, 1 << 14)) * (trial % 4 < 2 ? 1 : -1);
     const int64_t dividend = whole * den + (trial % 3 == 0 ? 1 : -1);  // one off a multiple of den
     const doom::Fixed num = doom::Fixed(std::clamp<int64_t>(dividend >> 16, INT32_MIN, INT32_MAX));
     doom::Fixed got[8];
-    doom_scales_avx512(ones.data(), ones.data(), 1, num, den, INT32_MAX, got);
+    doom_scales_avx512(&column, 1, ones, num, den, INT32_MAX, got);
     const doom::Fixed want = doom::scale_from_sines(num, {doom::kFracUnit, doom::kFracUnit}, den, INT32_MAX);
     ASSERT_EQ(got[0], want) << "num " << num << ", den " << den;
   }
