@@ -239,7 +239,8 @@ class Canvas {
   // (top, bottom) and its upper and lower parts' mid rows (high, low; set only where
   // the run has those parts).
   struct EdgeRows {
-    std::vector<int32_t> top, bottom, high, low;
+    std::vector<int32_t> rows;  // the four, n columns each
+    int32_t *top, *bottom, *high, *low;
   };
   // The edges of n columns of a run from their scales, worked out together before any
   // column is drawn (eight at a time where vector_scales_).

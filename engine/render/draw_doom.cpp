@@ -214,20 +214,18 @@ Canvas::DoomRun Canvas::doom_run(DoomSide& ds, const WallHit& hit, int near) {
 // lies within the wall) and down for a bottom one.
 void Canvas::doom_edge_rows(const DoomRun& r, const Fixed* scales, size_t n, EdgeRows& rows) const {
   const int64_t round_up = (int64_t(1) << r.bits) - 1;
-  auto fill = [&](std::vector<int32_t>& out, Fixed world, int64_t round) {
-    out.resize(n);
-    if (vector_scales_)
-      return doom_edge_rows_avx512(scales, n, world, r.center, r.bits, r.crispy, round, out.data());
-    for (size_t k = 0; k < n; ++k) {
-      const int64_t product = (int64_t(world) * scales[k]) >> kFracBits;
-      const int64_t edge = r.crispy ? r.center - product : int64_t(play::wrap_sub(Fixed(r.center), Fixed(product)));
-      out[k] = int32_t(std::clamp<int64_t>((edge + round) >> r.bits, INT_MIN / 2, INT_MAX / 2));
-    }
+  if (rows.rows.size() < 4 * n) rows.rows.resize(4 * n);  // only grown: a resize up fills
+  rows.top = rows.rows.data(), rows.bottom = rows.top + n, rows.high = rows.bottom + n, rows.low = rows.high + n;
+  WallEdges edges{r.center, r.bits, r.crispy};
+  auto add = [&](int32_t* out, Fixed world, int64_t round) {
+    edges.world[edges.count] = world, edges.round[edges.count] = round, edges.rows[edges.count++] = out;
   };
-  fill(rows.top, r.top, round_up);
-  fill(rows.bottom, r.bottom, 0);
-  if (r.upper) fill(rows.high, r.high, 0);
-  if (r.lower) fill(rows.low, r.low, round_up);
+  add(rows.top, r.top, round_up);
+  add(rows.bottom, r.bottom, 0);
+  if (r.upper) add(rows.high, r.high, 0);
+  if (r.lower) add(rows.low, r.low, round_up);
+  if (vector_scales_) return doom_edge_rows_avx512(scales, n, edges);
+  wall_edge_rows(scales, n, edges);
 }
 
 // One column of R_RenderSegLoop. [top, bottom) are the open rows: Doom's ceilingclip + 1

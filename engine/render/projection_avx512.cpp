@@ -112,22 +112,47 @@ void doom_scales_avx512(const int32_t* xs, size_t n, const doom::SegSines& sines
   }
 }
 
-void doom_edge_rows_avx512(const doom::Fixed* scales, size_t n, doom::Fixed world, int64_t center, int bits, bool crispy,
-                           int64_t round, int32_t* rows) {
-  const __m512i worlds = _mm512_set1_epi64(world), centers = _mm512_set1_epi64(center);
-  const __m512i rounds = _mm512_set1_epi64(round);
+namespace {
+
+// doom_edge_rows_avx512 for Count edges (and Crispy's rules or not): their heights and
+// roundings kept in registers from group to group.
+template <int Count, bool Crispy>
+void edge_rows(const doom::Fixed* scales, size_t n, const WallEdges& edges) {
+  const __m512i centers = _mm512_set1_epi64(edges.center);
   const __m512i lowest = _mm512_set1_epi64(INT_MIN / 2), highest = _mm512_set1_epi64(INT_MAX / 2);
-  const __m128i shift = _mm_cvtsi32_si128(bits);
+  const __m128i shift = _mm_cvtsi32_si128(edges.bits);
+  __m512i worlds[Count], rounds[Count];
+  for (int e = 0; e < Count; ++e) worlds[e] = _mm512_set1_epi64(edges.world[e]), rounds[e] = _mm512_set1_epi64(edges.round[e]);
   for (size_t i = 0; i < n; i += 8) {
     const __mmask8 lanes = first_lanes(n - i);
     const __m512i scale = _mm512_cvtepi32_epi64(_mm256_maskz_loadu_epi32(lanes, scales + i));
-    const __m512i product = _mm512_srai_epi64(_mm512_mul_epi32(worlds, scale), 16);  // signed 32 x 32 bits
-    const __m512i edge = crispy ? _mm512_sub_epi64(centers, product)
-                                : as_fixed(_mm512_sub_epi64(as_fixed(centers), as_fixed(product)));
-    const __m512i row = _mm512_sra_epi64(_mm512_add_epi64(edge, rounds), shift);
-    const __m512i clamped = _mm512_max_epi64(_mm512_min_epi64(row, highest), lowest);
-    _mm256_mask_storeu_epi32(rows + i, lanes, _mm512_cvtepi64_epi32(clamped));
+    for (int e = 0; e < Count; ++e) {
+      const __m512i product = _mm512_srai_epi64(_mm512_mul_epi32(worlds[e], scale), 16);  // signed 32 x 32 bits
+      const __m512i edge = Crispy ? _mm512_sub_epi64(centers, product)
+                                  : as_fixed(_mm512_sub_epi64(as_fixed(centers), as_fixed(product)));
+      const __m512i row = _mm512_sra_epi64(_mm512_add_epi64(edge, rounds[e]), shift);
+      const __m512i clamped = _mm512_max_epi64(_mm512_min_epi64(row, highest), lowest);
+      _mm256_mask_storeu_epi32(edges.rows[e] + i, lanes, _mm512_cvtepi64_epi32(clamped));
+    }
   }
+}
+
+template <bool Crispy>
+void edge_rows(const doom::Fixed* scales, size_t n, const WallEdges& edges) {
+  switch (edges.count) {
+    case 1: return edge_rows<1, Crispy>(scales, n, edges);
+    case 2: return edge_rows<2, Crispy>(scales, n, edges);
+    case 3: return edge_rows<3, Crispy>(scales, n, edges);
+    case 4: return edge_rows<4, Crispy>(scales, n, edges);
+    default: return;  // none
+  }
+}
+
+}  // namespace
+
+void doom_edge_rows_avx512(const doom::Fixed* scales, size_t n, const WallEdges& edges) {
+  if (edges.crispy) return edge_rows<true>(scales, n, edges);
+  edge_rows<false>(scales, n, edges);
 }
 
 }  // namespace p3d::render

@@ -1,5 +1,7 @@
 #include "engine/render/view.h"
 
+#include <climits>
+
 namespace p3d::render {
 
 namespace {
@@ -60,6 +62,17 @@ bool vector_projection() {
 #endif
 }
 
+void wall_edge_rows(const doom::Fixed* scales, size_t n, const WallEdges& edges) {
+  for (int e = 0; e < edges.count; ++e) {
+    for (size_t k = 0; k < n; ++k) {
+      const int64_t product = (int64_t(edges.world[e]) * scales[k]) >> doom::kFracBits;
+      const int64_t edge = edges.crispy ? edges.center - product
+                                        : int64_t(play::wrap_sub(doom::Fixed(edges.center), doom::Fixed(product)));
+      edges.rows[e][k] = int32_t(std::clamp<int64_t>((edge + edges.round[e]) >> edges.bits, INT_MIN / 2, INT_MAX / 2));
+    }
+  }
+}
+
 #ifndef P3D_AVX512_PROJECTION
 // Never called: vector_projection() is false.
 size_t open_column_hits_avx512(const WallProjector&, const FragmentSpan&, const uint64_t*, int, int, RayHits) {
@@ -67,7 +80,7 @@ size_t open_column_hits_avx512(const WallProjector&, const FragmentSpan&, const 
 }
 void doom_scales_avx512(const int32_t*, size_t, const doom::SegSines&, doom::Fixed, doom::Fixed, doom::Fixed,
                         doom::Fixed*) {}
-void doom_edge_rows_avx512(const doom::Fixed*, size_t, doom::Fixed, int64_t, int, bool, int64_t, int32_t*) {}
+void doom_edge_rows_avx512(const doom::Fixed*, size_t, const WallEdges&) {}
 #endif
 
 }  // namespace p3d::render

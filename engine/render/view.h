@@ -158,13 +158,24 @@ size_t open_column_hits_avx512(const WallProjector& p, const FragmentSpan& span,
 // vector_projection() is true.
 void doom_scales_avx512(const int32_t* xs, size_t n, const doom::SegSines& sines, doom::Fixed projection,
                         doom::Fixed distance, doom::Fixed max_scale, doom::Fixed* out);
-// The rows of a wall edge at height `world` (in the run's fixed point of `bits`
-// fraction bits, as center) for n columns of scales, eight at a time: center - world *
-// scale >> 16 (in 64 bits for Crispy, wrapping in 32 for vanilla), plus `round`,
-// shifted down by bits and clamped to [INT_MIN / 2, INT_MAX / 2]. Only where
+// Up to four wall edges of one run, each at height world[e] (in the run's fixed point
+// of `bits` fraction bits, as center), its rows rounded by round[e] and written to
+// rows[e]; Crispy's in 64 bits, vanilla's wrapping in 32.
+struct WallEdges {
+  int64_t center;
+  int bits;
+  bool crispy;
+  int count = 0;
+  doom::Fixed world[4];
+  int64_t round[4];
+  int32_t* rows[4];
+};
+// The edges' rows for n columns of scales: center - world * scale >> 16, plus round,
+// shifted down by bits and clamped to [INT_MIN / 2, INT_MAX / 2].
+void wall_edge_rows(const doom::Fixed* scales, size_t n, const WallEdges& edges);
+// The same eight columns at a time, every edge from one load of the scales. Only where
 // vector_projection() is true.
-void doom_edge_rows_avx512(const doom::Fixed* scales, size_t n, doom::Fixed world, int64_t center, int bits, bool crispy,
-                           int64_t round, int32_t* rows);
+void doom_edge_rows_avx512(const doom::Fixed* scales, size_t n, const WallEdges& edges);
 
 // A conservative range of screen columns [x0, x1]; empty when x0 > x1.
 struct ColumnRange {

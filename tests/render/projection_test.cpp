@@ -135,30 +135,51 @@ TEST(Projection, VectorScalesAreScaleAt) {
   }
 }
 
-// A wall edge's rows eight at a time: R_RenderSegLoop's (Crispy's in 64 bits, vanilla's
-// wrapping in 32), rounded up or down, clamped, for random heights, scales and
-// precisions; nothing written past the columns.
+// A run's wall edges eight columns at a time: R_RenderSegLoop's rows (Crispy's in 64
+// bits, vanilla's wrapping in 32), rounded up or down, clamped, for one to four edges of
+// random heights, scales and precisions, each written to its own rows and nothing past
+// them; the scalar wall_edge_rows alike.
 TEST(Projection, VectorEdgeRowsAreTheScalarRows) {
-  if (!vector_projection()) GTEST_SKIP() << "no AVX-512 on this processor";
   Rng rng(23);
   for (int trial = 0; trial < 20000; ++trial) {
     const bool crispy = trial % 2 == 0;
     const int bits = crispy ? int(rng.range(4, 16)) : 12;
-    const int64_t center = crispy ? int64_t(rng.range(0, 1 << 20)) << (bits - 4) : int64_t(rng.range(0, 200 << 12));
-    const doom::Fixed world = doom::Fixed(trial % 5 == 0 ? rng.next() : rng.range(-(1 << 24), 1 << 24));
-    const int64_t round = trial % 3 == 0 ? 0 : (int64_t(1) << bits) - 1;
+    WallEdges edges{crispy ? int64_t(rng.range(0, 1 << 20)) << (bits - 4) : int64_t(rng.range(0, 200 << 12)), bits,
+                    crispy};
+    edges.count = int(rng.range(1, 4));
     const size_t n = size_t(rng.range(1, 30));
     std::vector<doom::Fixed> scales(n);
     for (doom::Fixed& scale : scales) scale = trial % 7 == 0 ? doom::Fixed(rng.next()) : doom::Fixed(rng.range(256, 64 << 16));
-    std::vector<int32_t> got(n + 8, 0x5A5A5A5A);
-    doom_edge_rows_avx512(scales.data(), n, world, center, bits, crispy, round, got.data());
-    for (size_t k = 0; k < n; ++k) {
-      const int64_t product = (int64_t(world) * scales[k]) >> doom::kFracBits;
-      const int64_t edge = crispy ? center - product : int64_t(play::wrap_sub(doom::Fixed(center), doom::Fixed(product)));
-      const int32_t want = int32_t(std::clamp<int64_t>((edge + round) >> bits, INT_MIN / 2, INT_MAX / 2));
-      ASSERT_EQ(got[k], want) << "trial " << trial << ", column " << k;
+    const size_t stride = n + 8;  // each edge's rows, then 8 that must stay untouched
+    std::vector<int32_t> vector_rows(4 * stride, 0x5A5A5A5A), scalar_rows = vector_rows;
+    for (int e = 0; e < edges.count; ++e) {
+      edges.world[e] = doom::Fixed(rng.below(5) == 0 ? rng.next() : rng.range(-(1 << 24), 1 << 24));
+      edges.round[e] = rng.below(2) == 0 ? 0 : (int64_t(1) << bits) - 1;
     }
-    for (size_t k = n; k < n + 8; ++k) ASSERT_EQ(got[k], 0x5A5A5A5A) << "wrote past the columns";
+    auto rows_into = [&](std::vector<int32_t>& rows) {
+      for (int e = 0; e < edges.count; ++e) edges.rows[e] = rows.data() + size_t(e) * stride;
+    };
+    rows_into(scalar_rows);
+    wall_edge_rows(scales.data(), n, edges);
+    if (vector_projection()) {
+      rows_into(vector_rows);
+      doom_edge_rows_avx512(scales.data(), n, edges);
+    }
+    for (int e = 0; e < 4; ++e) {
+      for (size_t k = 0; k < stride; ++k) {
+        int32_t want = 0x5A5A5A5A;  // past the columns, or an edge not asked for
+        if (e < edges.count && k < n) {
+          const int64_t product = (int64_t(edges.world[e]) * scales[k]) >> doom::kFracBits;
+          const int64_t edge = crispy ? edges.center - product
+                                      : int64_t(play::wrap_sub(doom::Fixed(edges.center), doom::Fixed(product)));
+          want = int32_t(std::clamp<int64_t>((edge + edges.round[e]) >> bits, INT_MIN / 2, INT_MAX / 2));
+        }
+        ASSERT_EQ(scalar_rows[size_t(e) * stride + k], want) << "trial " << trial << ", edge " << e << ", column " << k;
+        if (vector_projection()) {
+          ASSERT_EQ(vector_rows[size_t(e) * stride + k], want) << "trial " << trial << ", edge " << e << ", column " << k;
+        }
+      }
+    }
   }
 }
 
