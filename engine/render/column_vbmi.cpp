@@ -66,10 +66,10 @@ inline __m512i lanes16() { return _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9
 
 // count adjacent bytes of a wall column from its 16.16 coordinates: pixel i's in lane
 // i % 16 of vs[i / 16]. Each 64 pixels' texel rows are the coordinates' bytes 2 (bits
-// 16 to 23), gathered from the four registers into one and passed through `rows`; then
-// `advance` moves every register on by 64 pixels.
-template <typename Rows, typename Advance>
-inline void stepped_column(uint8_t* out, int count, const LitColumn& column, __m512i (&vs)[4], Rows rows,
+// 16 to 23), gathered from the four registers into one, passed through `rows` and
+// looked up by `column`; then `advance` moves every register on by 64 pixels.
+template <typename Column, typename Rows, typename Advance>
+inline void stepped_column(uint8_t* out, int count, const Column& column, __m512i (&vs)[4], Rows rows,
                            Advance advance) {
   const __m512i row_bytes = _mm512_load_si512(kByte2);
   auto pixels = [&] {
@@ -114,8 +114,38 @@ inline void stepped_column(uint8_t* out, int count, const LitColumn& column, __m
 
 }  // namespace
 
+namespace {
+
+// wall_column_vbmi for a column of 128 texels (Full) or of 64 or fewer: each pixel's
+// texel looked up in the column's one or two registers, then lit, where a longer column
+// lights its texels first. A column of a pixel or two per texel row lights fewer bytes
+// this way, and skips lighting the texels it never shows.
+template <bool Full>
+void lit_after_lookup(uint8_t* out, int count, uint32_t v, uint32_t step, int rows_log2, const uint8_t* source,
+                      const uint8_t* light) {
+  __m512i vs[4];
+  vs[0] = _mm512_add_epi32(_mm512_set1_epi32(int(v)), _mm512_mullo_epi32(lanes16(), _mm512_set1_epi32(int(step))));
+  const __m512i step16 = _mm512_set1_epi32(int(step * 16)), step64 = _mm512_set1_epi32(int(step * 64));
+  for (int i = 1; i < 4; ++i) vs[i] = _mm512_add_epi32(vs[i - 1], step16);
+  const __m512i low = Full ? _mm512_loadu_si512(source) : load_first(source, 1 << rows_log2);
+  const __m512i high = Full ? _mm512_loadu_si512(source + 64) : _mm512_setzero_si512();
+  const __m512i row_mask = _mm512_set1_epi8(char((1 << rows_log2) - 1));
+  const Table256 lit = Table256::load(light);
+  auto masked = [&](__m512i texel_rows) { return Full ? texel_rows : _mm512_and_si512(texel_rows, row_mask); };
+  auto lit_texels = [&](__m512i rows) {
+    return lit(Full ? _mm512_permutex2var_epi8(low, rows, high) : _mm512_permutexvar_epi8(rows, low));
+  };
+  stepped_column(out, count, lit_texels, vs, masked, [&](__m512i x) { return _mm512_add_epi32(x, step64); });
+}
+
+}  // namespace
+
 void wall_column_vbmi(uint8_t* out, int count, uint32_t v, uint32_t step, int rows_log2, const uint8_t* source,
                       const uint8_t* light) {
+  if (count <= 192 && rows_log2 <= 7) {
+    if (rows_log2 == 7) return lit_after_lookup<true>(out, count, v, step, rows_log2, source, light);
+    return lit_after_lookup<false>(out, count, v, step, rows_log2, source, light);
+  }
   __m512i vs[4];
   vs[0] = _mm512_add_epi32(_mm512_set1_epi32(int(v)), _mm512_mullo_epi32(lanes16(), _mm512_set1_epi32(int(step))));
   const __m512i step16 = _mm512_set1_epi32(int(step * 16)), step64 = _mm512_set1_epi32(int(step * 64));
