@@ -205,6 +205,8 @@ void tabled_column_vbmi(uint8_t* out, int count, const uint8_t* rows, const uint
   if (i < count) _mm512_mask_storeu_epi8(out + i, first_bytes(count - i), column(load_first(rows + i, count - i)));
 }
 
+namespace {
+
 // Byte 0 of each 32-bit lane of four registers, in lane order: 64 bytes.
 alignas(64) constexpr uint8_t kByte0[64] = {
     0,  4,  8,  12, 16, 20, 24, 28, 32, 36, 40, 44, 48, 52, 56, 60, 64, 68, 72, 76, 80, 84,
@@ -261,6 +263,8 @@ inline int row_window(RowCoordinate u, RowCoordinate v) {
   if (reach < uint64_t(3) << column_shift) return 4;
   return reach < uint64_t(7) << column_shift ? 8 : reach < uint64_t(15) << column_shift ? 16 : 0;
 }
+
+}  // namespace
 
 void flat_row_vbmi(uint8_t* out, int n, RowCoordinate u, RowCoordinate v, const uint8_t* indices,
                    const uint8_t* light) {
