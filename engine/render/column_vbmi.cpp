@@ -288,15 +288,14 @@ void flat_row_vbmi(uint8_t* out, int n, RowCoordinate u, RowCoordinate v, const 
   const __m128i u_shift = _mm_cvtsi32_si128(int(u.shift)), v_shift = _mm_cvtsi32_si128(int(v.shift));
   const __m512i u_mask = _mm512_set1_epi32(int(u.mask)), v_mask = _mm512_set1_epi32(int(v.mask));
   // Each texel gathered with the aligned four bytes that hold it, never a byte outside
-  // them, then shifted down to its lane's low byte.
-  const int skew = int(uintptr_t(indices) & 3);
-  const uint8_t* words = indices - skew;
-  const __m512i skews = _mm512_set1_epi32(skew), threes = _mm512_set1_epi32(3);
+  // them, then shifted down to its lane's low byte: `at` counts from the aligned word
+  // that holds the first texel.
+  const __m512i skews = _mm512_set1_epi32(int(uintptr_t(indices) & 3)), threes = _mm512_set1_epi32(3);
   auto texels_of = [&] {
     const __m512i at = _mm512_add_epi32(_mm512_or_si512(_mm512_and_si512(_mm512_srl_epi32(us, u_shift), u_mask),
                                                         _mm512_and_si512(_mm512_srl_epi32(vs, v_shift), v_mask)),
                                         skews);
-    const __m512i word = _mm512_i32gather_epi32(_mm512_andnot_si512(threes, at), words, 1);
+    const __m512i word = _mm512_i32gather_epi32(_mm512_sub_epi32(_mm512_andnot_si512(threes, at), skews), indices, 1);
     us = _mm512_add_epi32(us, du), vs = _mm512_add_epi32(vs, dv);
     return _mm512_srlv_epi32(word, _mm512_slli_epi32(_mm512_and_si512(at, threes), 3));
   };

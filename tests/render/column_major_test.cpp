@@ -115,7 +115,8 @@ TEST(ColumnMajor, TabledColumnLooksUpEachRowsTexel) {
 
 // A flat's row drawn by the vector loop: indexed_row's bytes, for flats of every
 // power-of-two size up to 256 x 256 (only their texels read: the flat is exactly its
-// size), rows of every length to 300, and nothing written past the row.
+// size) starting at any byte of a word (the texels are gathered by words), rows of
+// every length to 300, and nothing written past the row.
 TEST(ColumnMajor, VectorFlatRowDrawsTheScalarLoopsBytes) {
   if (!vector_columns()) GTEST_SKIP() << "no AVX-512 VBMI on this processor";
   Rng rng(9);
@@ -123,7 +124,7 @@ TEST(ColumnMajor, VectorFlatRowDrawsTheScalarLoopsBytes) {
   for (uint8_t& b : light) b = uint8_t(rng.next());
   for (int width_log2 = 0; width_log2 <= 8; width_log2 += 2)
     for (int height_log2 = 0; height_log2 <= 8; height_log2 += 2) {
-      std::vector<uint8_t> flat(size_t(1) << (width_log2 + height_log2));
+      std::vector<uint8_t> flat(size_t(1) << (width_log2 + height_log2)), skewed(flat.size() + 3);
       for (uint8_t& b : flat) b = uint8_t(rng.next());
       // Column-major, u's texel above v's, as the canvas asks for them.
       const uint32_t u_shift = uint32_t(16 - height_log2), u_mask = ((1u << width_log2) - 1) << height_log2;
@@ -136,11 +137,14 @@ TEST(ColumnMajor, VectorFlatRowDrawsTheScalarLoopsBytes) {
         const uint32_t u_step = trial < 100 ? uint32_t(rng.next()) : uint32_t(int32_t(rng.range(-17 * column, 17 * column) / 63));
         const RowCoordinate u{uint32_t(rng.next()), u_step, u_shift, u_mask};
         const RowCoordinate v{uint32_t(rng.next()), uint32_t(rng.next()), 16, v_mask};
+        const size_t skew = size_t(trial % 4);
+        std::fill(skewed.begin(), skewed.end(), uint8_t(rng.next()));
+        std::copy(flat.begin(), flat.end(), skewed.begin() + std::ptrdiff_t(skew));
         std::vector<uint8_t> want(static_cast<size_t>(n)), got(static_cast<size_t>(n) + 64, 0x5A);
         indexed_row(want.data(), n, u, v, flat.data(), light.data());
-        flat_row_vbmi(got.data(), n, u, v, flat.data(), light.data());
+        flat_row_vbmi(got.data(), n, u, v, skewed.data() + skew, light.data());
         const std::string what = std::to_string(1 << width_log2) + " x " + std::to_string(1 << height_log2) + ", " +
-                                 std::to_string(n) + " pixels";
+                                 std::to_string(n) + " pixels, from byte " + std::to_string(skew);
         for (int i = 0; i < n; ++i) ASSERT_EQ(got[size_t(i)], want[size_t(i)]) << what << ", pixel " << i;
         for (size_t i = size_t(n); i < got.size(); ++i) ASSERT_EQ(got[i], 0x5A) << what << ": wrote past the row";
       }
