@@ -80,12 +80,14 @@ void doom_scales_avx512(const int32_t* xs, size_t n, const doom::SegSines& sines
   for (size_t i = 0; i < n; i += 8) {
     const __mmask8 lanes = first_lanes(n - i);
     const __m256i x = _mm256_maskz_loadu_epi32(lanes, xs + i);
-    // Eight neighbouring columns' (the commonest) loaded rather than gathered.
+    // The lanes' entries of a table by column: eight neighbouring columns' (the
+    // commonest) loaded rather than gathered.
     const bool neighbours = lanes == 0xFF && xs[i + 7] - xs[i] == 7;
-    const __m256i column_angle = neighbours ? _mm256_loadu_si256(reinterpret_cast<const __m256i*>(sines.column_angle + xs[i]))
-                                            : _mm256_mmask_i32gather_epi32(x, lanes, x, sines.column_angle, 4);
-    const __m256i view_sine = neighbours ? _mm256_loadu_si256(reinterpret_cast<const __m256i*>(sines.view_sine + xs[i]))
-                                         : _mm256_mmask_i32gather_epi32(x, lanes, x, sines.view_sine, 4);
+    auto by_column = [&](const auto* table) {
+      return neighbours ? _mm256_loadu_si256(reinterpret_cast<const __m256i*>(table + xs[i]))
+                        : _mm256_mmask_i32gather_epi32(x, lanes, x, table, 4);
+    };
+    const __m256i column_angle = by_column(sines.column_angle), view_sine = by_column(sines.view_sine);
     const __m256i fine = _mm256_srli_epi32(_mm256_add_epi32(seg_angle, column_angle), 19);  // kAngleToFineShift
     const __m512i sinea = _mm512_cvtepi32_epi64(view_sine);
     const __m512i sineb = _mm512_cvtepi32_epi64(_mm256_mmask_i32gather_epi32(x, lanes, fine, sines.fine_sine, 4));
@@ -122,7 +124,8 @@ void edge_rows(const doom::Fixed* scales, size_t n, const WallEdges& edges) {
   const __m512i lowest = _mm512_set1_epi64(INT_MIN / 2), highest = _mm512_set1_epi64(INT_MAX / 2);
   const __m128i shift = _mm_cvtsi32_si128(edges.bits);
   __m512i worlds[Count], rounds[Count];
-  for (int e = 0; e < Count; ++e) worlds[e] = _mm512_set1_epi64(edges.world[e]), rounds[e] = _mm512_set1_epi64(edges.round[e]);
+  for (int e = 0; e < Count; ++e)
+    worlds[e] = _mm512_set1_epi64(edges.world[e]), rounds[e] = _mm512_set1_epi64(edges.round[e]);
   for (size_t i = 0; i < n; i += 8) {
     const __mmask8 lanes = first_lanes(n - i);
     const __m512i scale = _mm512_cvtepi32_epi64(_mm256_maskz_loadu_epi32(lanes, scales + i));

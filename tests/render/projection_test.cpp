@@ -176,7 +176,8 @@ TEST(Projection, VectorEdgeRowsAreTheScalarRows) {
         }
         ASSERT_EQ(scalar_rows[size_t(e) * stride + k], want) << "trial " << trial << ", edge " << e << ", column " << k;
         if (vector_projection()) {
-          ASSERT_EQ(vector_rows[size_t(e) * stride + k], want) << "trial " << trial << ", edge " << e << ", column " << k;
+          ASSERT_EQ(vector_rows[size_t(e) * stride + k], want)
+              << "vector, trial " << trial << ", edge " << e << ", column " << k;
         }
       }
     }
