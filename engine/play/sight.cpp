@@ -94,6 +94,9 @@ bool World::check_sight(Mobj* t1, Mobj* t2) {
   if (!map_.has_nodes()) {
     return path_traverse(t1->x, t1->y, t2->x, t2->y, kEarlyOut | kAddLines, [&](Intercept& in) {
       const Line* li = in.line;
+      // A one-sided line reaches here only at the trace's very end (the early out stops
+      // at one before it), where Doom 1.2 read its missing back sector: it blocks.
+      if (!li->back) return false;
       const Opening o = line_opening(*li);
       if (o.bottom >= o.top) return false;
       return narrow(s, li->front, li->back, o.top, o.bottom, in.frac);
