@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "engine/image/palette.h"
 #include "engine/render/column_major.h"
 #include "engine/render/texel_loops.h"
 #include "engine/render/translation.h"
@@ -255,13 +256,8 @@ void Canvas::end_columns() {
 
 void Canvas::resolve(int y0, int y1) {
   if (!indexed_ || frame_->indexed()) return;  // a frame that keeps its indices was drawn in
-  const uint32_t* palette = level_->palette.data();
-  const int width = x1_ - x0_;
-  for (int y = y0; y < y1; ++y) {
-    const uint8_t* in = index_pixel(x0_, y);
-    uint32_t* out = pixel(x0_, y);
-    for (int i = 0; i < width; ++i) out[i] = palette[in[i]];
-  }
+  image::resolve_palette(index_pixel(x0_, y0), index_pitch_, pixel(x0_, y0), size_t(view_->width), x1_ - x0_, y1 - y0,
+                         level_->palette.data());
 }
 
 // Draws, within rows [top, bottom), the near sector's ceiling above the wall, its
