@@ -3,10 +3,11 @@
 // the processor has it. The palette is four tables of 256 bytes, one per byte of its
 // colours, each looked up in four registers by byte permutes; the four bytes of each
 // pixel are then interleaved into its colour.
-// GCC 12's AVX-512 permutes start from a self-initialised "undefined" register, which
-// -Wmaybe-uninitialized reports (GCC bug 105593).
+// GCC 12's AVX-512 permutes and shuffles start from a self-initialised "undefined"
+// register, which -Wmaybe-uninitialized and -Wuninitialized report (GCC bug 105593).
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
 #endif
 #include <immintrin.h>
 
@@ -40,18 +41,27 @@ struct Table256 {
   }
 };
 
+// Byte p of every colour: dword i's byte p is byte 4i + p of the palette, gathered 32
+// at a time from two registers of colours by a byte permute.
+Table256 palette_bytes(const uint32_t* palette, int p) {
+  alignas(64) uint8_t pick[64];
+  for (int i = 0; i < 64; ++i) pick[i] = uint8_t(4 * (i & 31) + p);
+  const __m512i picks = _mm512_load_si512(pick);
+  auto load = [&](int at) { return _mm512_loadu_si512(palette + at); };
+  auto quarter = [&](int q) {  // colours 64q to 64q + 63
+    const __m512i low = _mm512_permutex2var_epi8(load(64 * q), picks, load(64 * q + 16));
+    const __m512i high = _mm512_permutex2var_epi8(load(64 * q + 32), picks, load(64 * q + 48));
+    return _mm512_shuffle_i64x2(low, high, 0x44);  // the low halves of both
+  };
+  return {quarter(0), quarter(1), quarter(2), quarter(3)};
+}
+
 }  // namespace
 
 void resolve_palette_vbmi(const uint8_t* indices, size_t index_pitch, uint32_t* pixels, size_t pixel_pitch, int width,
                           int rows, const uint32_t* palette) {
-  alignas(64) uint8_t planes[4][256];  // byte p of every colour
-  for (int c = 0; c < 256; ++c)
-    for (int p = 0; p < 4; ++p) planes[p][c] = uint8_t(palette[c] >> (8 * p));
-  auto table = [&](int p) {
-    return Table256{_mm512_load_si512(planes[p]), _mm512_load_si512(planes[p] + 64), _mm512_load_si512(planes[p] + 128),
-                    _mm512_load_si512(planes[p] + 192)};
-  };
-  const Table256 byte0 = table(0), byte1 = table(1), byte2 = table(2), byte3 = table(3);
+  const Table256 byte0 = palette_bytes(palette, 0), byte1 = palette_bytes(palette, 1);
+  const Table256 byte2 = palette_bytes(palette, 2), byte3 = palette_bytes(palette, 3);
   const __m512i spread = _mm512_loadu_si512(kSpread.data());
   for (int y = 0; y < rows; ++y, indices += index_pitch, pixels += pixel_pitch) {
     for (int x = 0; x < width; x += 64) {
