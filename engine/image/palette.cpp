@@ -1,12 +1,12 @@
 #include "engine/image/palette.h"
 
+#include "engine/util/cpu.h"
+
 namespace p3d::image {
 
 bool vector_palette() {
 #ifdef P3D_VBMI_PALETTE
-  static const bool vbmi = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
-                           __builtin_cpu_supports("avx512vbmi");
-  return vbmi;
+  return has_avx512_vbmi();
 #else
   return false;
 #endif

@@ -4,6 +4,8 @@
 #include <emmintrin.h>
 #endif
 
+#include "engine/util/cpu.h"
+
 namespace p3d::render {
 
 namespace {
@@ -52,9 +54,7 @@ void columns_to_rows(const uint8_t* columns, size_t column_stride, uint8_t* rows
 
 bool vector_columns() {
 #ifdef P3D_VBMI_COLUMNS
-  static const bool vbmi = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
-                           __builtin_cpu_supports("avx512vbmi");
-  return vbmi;
+  return has_avx512_vbmi();
 #else
   return false;
 #endif
