@@ -6,11 +6,31 @@
 #include <array>
 #include <filesystem>
 #include <cstdio>
+#include <system_error>
+#include <vector>
 
 namespace p3d::test {
 
 namespace {
 map::GenerateOptions options(size_t walls, uint64_t seed) { return {walls, seed, map::builtin_textures()}; }
+
+// The directories this test process made, removed when it exits (ctest runs each test
+// in a process of its own), so that runs do not pile them up in the temp directory.
+class ScratchDirs {
+ public:
+  ~ScratchDirs() {
+    std::error_code ignored;  // a directory a test removed itself, or cannot be removed: nothing to do
+    for (const std::filesystem::path& dir : dirs_) std::filesystem::remove_all(dir, ignored);
+  }
+  const std::filesystem::path& add(std::filesystem::path dir) { return dirs_.emplace_back(std::move(dir)); }
+
+ private:
+  std::vector<std::filesystem::path> dirs_;
+};
+ScratchDirs& scratch_dirs() {
+  static ScratchDirs dirs;
+  return dirs;
+}
 }  // namespace
 
 map::Source random_soup(size_t walls, uint64_t seed) { return map::generate_soup(options(walls, seed)); }
@@ -46,13 +66,14 @@ std::filesystem::path temp_dir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("p3d-test-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  return dir;
+  return scratch_dirs().add(dir);
 }
 
 int run(const std::string& command, std::string& output) {
   output.clear();
   // The programs keep settings and saves under the XDG directories: the tests' own.
-  static const std::string xdg = (std::filesystem::temp_directory_path() / ("p3d-test-xdg-" + std::to_string(::getpid()))).string();
+  static const std::string xdg =
+      scratch_dirs().add(std::filesystem::temp_directory_path() / ("p3d-test-xdg-" + std::to_string(::getpid()))).string();
   const std::string isolated = "export XDG_CONFIG_HOME='" + xdg + "/config' XDG_DATA_HOME='" + xdg + "/data'; " + command;
   FILE* pipe = ::popen((isolated + " 2>&1").c_str(), "r");
   if (!pipe) return -1;

@@ -35,7 +35,8 @@ render::Camera random_camera(const level::Level& level, Rng& rng);
 // fails the test with a clear message when it is not there.
 std::filesystem::path freedoom_path(const std::string& file);
 
-// A fresh empty directory under the system temp directory.
+// A fresh empty directory under the system temp directory, removed when the test's
+// process exits.
 std::filesystem::path temp_dir(const std::string& name);
 
 // Runs a shell command, returning its exit status; output goes to `output`.
