@@ -478,10 +478,28 @@ std::vector<uint8_t> stb_png(const image::Image& img) {  // the encoder we repla
   return out;
 }
 
+// The PNG encodings the capture table times: each level of ours on every `every`th
+// frame (the slow ones on a sample), then stb_image_write (level -1). Each is timed
+// just after a render of its frame, as a capture encodes it (a second encoding of the
+// same bytes is faster: they are in the cache, and the processor has learnt their
+// branches).
+struct PngStep {
+  int level;
+  const char* name;
+  size_t every;
+};
+constexpr PngStep kPngSteps[] = {{image::kPngRuns, "PNG level 1: runs (the default)", 1},
+                                 {image::kPngStored, "PNG level 0: stored", 1},
+                                 {2, "PNG level 2: libdeflate", 4},
+                                 {6, "PNG level 6: libdeflate", 4},
+                                 {9, "PNG level 9: libdeflate", 4},
+                                 {image::kPngMaxLevel, "PNG level 12: libdeflate", 20},
+                                 {-1, "PNG, stb_image_write", 4}};
+
 // The outpost path's frames (RGB) and random views of freedoom2 MAP01 (8-bit, when
-// Freedoom is installed): render, then each PNG encoding in one run (ours deflating
-// runs, ours with libdeflate's search, stb_image_write); then whole `capture --cameras`
-// processes of the outpost on one thread and on every core.
+// Freedoom is installed): render, then each PNG encoding in one run, its time beside
+// the render's and its bytes beside level 1's on the same frames; then whole `capture
+// --cameras` processes of the outpost on one thread and on every core.
 void bench_capture(const Settings& s) {
   const auto dir = std::filesystem::temp_directory_path() / ("p3d-bench-capture-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
@@ -504,39 +522,49 @@ void bench_capture(const Settings& s) {
     auto cameras = random_cameras(level, 100, 1);
     scenes.push_back({"freedoom2 MAP01 (8-bit)", std::move(level), std::move(cameras), true});
   }
-  report.print("\n### Capture: a frame's render and its PNG, %dx%d, one thread\n\n", s.width, s.height);
-  report.print("| frames | step | ms/frame | KB/frame | ÷ render (time) |\n|---|---|---:|---:|---:|\n");
+  report.print("\n### Capture: a frame's render and its PNG at each level, %dx%d, one thread\n\n", s.width, s.height);
+  report.print("| frames | step | ms/frame | KB/frame | ÷ render (time) | ÷ level 1 (bytes) |\n"
+               "|---|---|---:|---:|---:|---:|\n");
   for (const Scene& scene : scenes) {
     auto renderer = render::make_renderer("bsp");
     renderer->prepare(scene.level);
     const level::State state = level::start_state(scene.level, s.skill);
     render::Frame frame(s.width, s.height);
     frame.keep_indices = scene.indexed;
-    double render_ms = 0, runs_ms = 0, search_ms = 0, stb_ms = 0, runs_bytes = 0, search_bytes = 0, stb_bytes = 0;
-    for (const render::Camera& camera : scene.cameras) {
-      auto t = Clock::now();
-      renderer->render(scene.level, state, camera, frame);
-      render_ms += cli::seconds_since(t) * 1000;
-      t = Clock::now();
-      runs_bytes += double(frame.png(image::PngDeflate::kRuns).size());
-      runs_ms += cli::seconds_since(t) * 1000;
-      t = Clock::now();
-      search_bytes += double(frame.png(image::PngDeflate::kSearch).size());
-      search_ms += cli::seconds_since(t) * 1000;
-      if (frame.indexed()) continue;  // stb_image_write writes no palette
-      t = Clock::now();
-      stb_bytes += double(stb_png(frame).size());
-      stb_ms += cli::seconds_since(t) * 1000;
-    }
-    const double n = double(scene.cameras.size());
-    auto row = [&](const char* step, double ms, double bytes) {
-      report.print("| %s | %s | %s | %s | %s |\n", scene.name.c_str(), step, fixed(ms / n, 2).c_str(),
-                   bytes > 0 ? fixed(bytes / n / 1024, 0).c_str() : "", fixed(ms / render_ms, 2).c_str());
+    struct Sums {
+      double frames = 0, ms = 0, bytes = 0, render_ms = 0, level1_bytes = 0;
     };
-    row("render (bsp)", render_ms, 0);
-    row("PNG, ours: runs", runs_ms, runs_bytes);
-    row("PNG, ours: libdeflate level 1", search_ms, search_bytes);
-    if (stb_bytes > 0) row("PNG, stb_image_write", stb_ms, stb_bytes);
+    std::array<Sums, std::size(kPngSteps)> sums{};
+    double render_ms = 0;
+    for (size_t c = 0; c < scene.cameras.size(); ++c) {
+      auto t = Clock::now();
+      renderer->render(scene.level, state, scene.cameras[c], frame);
+      const double frame_ms = cli::seconds_since(t) * 1000;
+      render_ms += frame_ms;
+      double level1_bytes = 0;
+      for (size_t k = 0; k < std::size(kPngSteps); ++k) {
+        const PngStep& step = kPngSteps[k];
+        if (c % step.every != 0 || (step.level < 0 && frame.indexed())) continue;  // stb writes no palette
+        if (k > 0) renderer->render(scene.level, state, scene.cameras[c], frame);
+        t = Clock::now();
+        const double bytes = double(step.level < 0 ? stb_png(frame).size() : frame.png(step.level).size());
+        sums[k].ms += cli::seconds_since(t) * 1000;
+        if (step.level == image::kPngRuns) level1_bytes = bytes;
+        sums[k].frames += 1, sums[k].bytes += bytes, sums[k].render_ms += frame_ms, sums[k].level1_bytes += level1_bytes;
+      }
+    }
+    report.print("| %s | render (bsp) | %s |  | 1.00 |  |\n", scene.name.c_str(),
+                 fixed(render_ms / double(scene.cameras.size()), 2).c_str());
+    for (size_t k = 0; k < std::size(kPngSteps); ++k) {
+      const Sums& sum = sums[k];
+      if (sum.frames == 0) continue;
+      const std::string name = kPngSteps[k].name + (kPngSteps[k].every > 1
+                                                        ? " (every " + std::to_string(kPngSteps[k].every) + "th frame)"
+                                                        : std::string());
+      report.print("| %s | %s | %s | %s | %s | %s |\n", scene.name.c_str(), name.c_str(),
+                   fixed(sum.ms / sum.frames, 2).c_str(), fixed(sum.bytes / sum.frames / 1024, 0).c_str(),
+                   fixed(sum.ms / sum.render_ms, 2).c_str(), fixed(sum.bytes / sum.level1_bytes, 2).c_str());
+    }
   }
   const std::string capture = (own_directory() / "pseudo3d-capture").string();
   const size_t frames = scenes.front().cameras.size();

@@ -15,8 +15,8 @@ void Frame::resolve_colours() {
   resolve_palette(indices.data(), 0, pixels.data(), 0, int(indices.size()), 1, colours.data());  // rows end to end
 }
 
-std::vector<uint8_t> Frame::png(PngDeflate how) const {
-  return indexed() ? encode_png(width, height, indices, palette, how) : encode_png(*this, how);
+std::vector<uint8_t> Frame::png(int level) const {
+  return indexed() ? encode_png(width, height, indices, palette, level) : encode_png(*this, level);
 }
 
 }  // namespace p3d::image

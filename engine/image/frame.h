@@ -34,7 +34,7 @@ struct Frame : Image {
   void resolve_colours();
   // The frame as a PNG: a paletted one when it kept its indices (a quarter of the bytes
   // to filter), else its colours.
-  std::vector<uint8_t> png(PngDeflate how = PngDeflate::kRuns) const;
+  std::vector<uint8_t> png(int level = kPngDefaultLevel) const;
 };
 
 }  // namespace p3d::image

@@ -31,15 +31,21 @@ struct Image {
 // Decodes a PNG (any channel count) to RGBA8; throws Error("<what>: ...") on bad data.
 Image decode_png(std::span<const uint8_t> bytes, const std::string& what);
 Image load_png(const std::filesystem::path& path);
-// How encode_png deflates its filtered rows: as runs and literals (deflate_runs.h), or
-// by libdeflate's search for matches (level 1): files a few percent smaller, in several
-// times the time (docs/benchmarks.md, "Threads and captures").
-enum class PngDeflate { kRuns, kSearch };
-std::vector<uint8_t> encode_png(const Image& image, PngDeflate how = PngDeflate::kRuns);
+// How hard encode_png squeezes a PNG, on zlib's scale of levels (docs/benchmarks.md,
+// "Threads and captures", has each level's time and bytes): 0 stores the rows as they
+// are, unfiltered (the fastest: a frame's PNG in a sixth to two thirds of its render's
+// time, at 4 to 10 times level 1's bytes); 1, the default, filters each row and
+// deflates it as runs and literals (deflate_runs.h); 2 to 12, the same filters, then
+// libdeflate's search for matches at that level, in 3 to 400 times level 1's time:
+// level 2's 8-bit frames a tenth bigger than level 1's, level 12's the smallest (7-26%
+// smaller).
+constexpr int kPngStored = 0, kPngRuns = 1, kPngDefaultLevel = kPngRuns, kPngMaxLevel = 12;
+// Throws Error for a level outside [0, kPngMaxLevel].
+std::vector<uint8_t> encode_png(const Image& image, int level = kPngDefaultLevel);
 // A paletted PNG: indices (row-major, width x height) into palette (1 to 256 colours,
 // RGBA; a tRNS chunk only when one is not opaque). Throws Error on a mismatch.
 std::vector<uint8_t> encode_png(int width, int height, std::span<const uint8_t> indices, std::span<const uint32_t> palette,
-                                PngDeflate how = PngDeflate::kRuns);
+                                int level = kPngDefaultLevel);
 void save_png(const Image& image, const std::filesystem::path& path);  // atomic
 
 struct Difference {

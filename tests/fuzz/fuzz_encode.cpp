@@ -1,7 +1,8 @@
-// The PNG encoder, both ways of deflating, against stb_image's decoder (an inflater of
-// its own): every image comes back pixel for pixel. The first two bytes choose the width,
-// whether the image is paletted or opaque, how it deflates and how many times each byte
-// repeats (runs, for deflate_runs' matches); the rest are its pixels.
+// The PNG encoder at each kind of level (stored, runs, libdeflate's search) against
+// stb_image's decoder (an inflater of its own): every image comes back pixel for pixel.
+// The first two bytes choose the width, whether the image is paletted or opaque, the
+// level and how many times each byte repeats (runs, for deflate_runs' matches); the rest
+// are its pixels.
 #include <algorithm>
 #include <cstdlib>
 
@@ -25,8 +26,9 @@ P3D_FUZZ_TARGET(encode) {
   if (size < 3) return 0;
   const int width = 1 + int(data[0]) * 3 % 300;  // past 16 and 48 bytes a row: the filters' SSE2 steps
   const bool paletted = data[1] & 1, opaque = data[1] & 2;
-  const image::PngDeflate how = data[1] & 4 ? image::PngDeflate::kSearch : image::PngDeflate::kRuns;
-  const size_t repeat = 1 + (data[1] >> 3) % 12;
+  constexpr int kLevels[4] = {image::kPngStored, image::kPngRuns, 2, image::kPngMaxLevel};
+  const int level = kLevels[data[1] >> 2 & 3];
+  const size_t repeat = 1 + (data[1] >> 4) % 12;
   std::vector<uint8_t> bytes;
   for (size_t i = 2; i < size; ++i) bytes.insert(bytes.end(), repeat, data[i]);
 
@@ -43,7 +45,7 @@ P3D_FUZZ_TARGET(encode) {
       indices[p] = uint8_t(bytes[1 + p] % colours);
       expected.push_back(palette[indices[p]]);
     }
-    png = image::encode_png(width, int(height), indices, palette, how);
+    png = image::encode_png(width, int(height), indices, palette, level);
   } else {
     const size_t height = std::min(kMaxRows, bytes.size() / 4 / size_t(width));
     if (height == 0) return 0;
@@ -53,7 +55,7 @@ P3D_FUZZ_TARGET(encode) {
       img.pixels[p] = image::rgba(b[0], b[1], b[2], opaque ? 255 : b[3]);
     }
     expected = img.pixels;
-    png = image::encode_png(img, how);
+    png = image::encode_png(img, level);
   }
   const image::Image back = image::decode_png(png, "encoded");
   if (back.width != width || back.pixels != expected) std::abort();  // not what was encoded

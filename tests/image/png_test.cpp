@@ -1,6 +1,7 @@
 // The PNG encoder against the decoder (stb_image, independent of it): every pixel
 // back exactly, opaque images as RGB and others as RGBA, 8-bit frames as palette
-// indices, any size, deflated either way; the same pixels give the same bytes.
+// indices, any size, at every kind of level (stored, runs, libdeflate's search); the
+// same pixels give the same bytes.
 #include <libdeflate.h>
 
 #include <gtest/gtest.h>
@@ -39,31 +40,43 @@ Image picture(int w, int h) {
 
 uint8_t color_type(const std::vector<uint8_t>& png) { return png.at(25); }  // IHDR's colour type byte
 
-constexpr PngDeflate kBothWays[] = {PngDeflate::kRuns, PngDeflate::kSearch};
+// Stored, runs and literals, libdeflate's search at its fastest and its best.
+constexpr int kLevels[] = {kPngStored, kPngRuns, 2, kPngMaxLevel};
 
 TEST(Png, EncodesEveryPixelExactly) {
   for (const auto& [w, h] : {std::pair{1, 1}, {3, 2}, {17, 5}, {640, 400}, {1, 300}, {301, 1}}) {
-    for (const auto& [opaque, how] : {std::pair{true, PngDeflate::kRuns}, {false, PngDeflate::kRuns},
-                                     {true, PngDeflate::kSearch}, {false, PngDeflate::kSearch}}) {
+    for (const auto& [opaque, level] : {std::pair{true, kPngStored}, {false, kPngStored}, {true, kPngRuns},
+                                       {false, kPngRuns}, {true, 2}, {false, 2}}) {
       const Image img = noise(w, h, uint64_t(w * 1000 + h), opaque);
-      const std::vector<uint8_t> png = encode_png(img, how);
+      const std::vector<uint8_t> png = encode_png(img, level);
       EXPECT_EQ(color_type(png), opaque ? 2 : 6) << w << "x" << h;
       const Image back = decode_png(png, "x.png");
       ASSERT_EQ(back.width, w);
       ASSERT_EQ(back.height, h);
-      EXPECT_EQ(back.pixels, img.pixels) << w << "x" << h << (opaque ? " opaque" : " with alpha");
+      EXPECT_EQ(back.pixels, img.pixels) << w << "x" << h << (opaque ? " opaque" : " with alpha") << ", level "
+                                         << level;
     }
   }
   const Image art = picture(320, 200);
-  for (const PngDeflate how : kBothWays) {
-    const std::vector<uint8_t> png = encode_png(art, how);
-    EXPECT_EQ(decode_png(png, "x.png").pixels, art.pixels);
-    EXPECT_LT(png.size(), art.pixels.size() * 3 / 4);  // it compresses
-    EXPECT_EQ(encode_png(art, how), png);                // and deterministically
+  size_t previous = 0;
+  for (const int level : kLevels) {
+    const std::vector<uint8_t> png = encode_png(art, level);
+    EXPECT_EQ(decode_png(png, "x.png").pixels, art.pixels) << "level " << level;
+    if (level == kPngStored) {
+      EXPECT_GT(png.size(), art.pixels.size() * 3);  // every byte of every row, and a filter byte a row
+    } else {
+      EXPECT_LT(png.size(), previous) << "level " << level;  // each level smaller than the one before
+    }
+    previous = png.size();
+    EXPECT_EQ(encode_png(art, level), png);  // and deterministically
   }
 }
 
-TEST(Png, AnEmptyImageIsAnError) { EXPECT_THROW(encode_png(Image(0, 0)), Error); }
+TEST(Png, AnEmptyImageOrALevelOutOfRangeIsAnError) {
+  EXPECT_THROW(encode_png(Image(0, 0)), Error);
+  EXPECT_THROW(encode_png(Image(2, 2), -1), Error);
+  EXPECT_THROW(encode_png(Image(2, 2), kPngMaxLevel + 1), Error);
+}
 
 // Indices into a palette of `colours` random colours, smooth in places (so filters matter).
 struct Paletted {
@@ -90,11 +103,12 @@ TEST(Png, EncodesPaletteIndicesExactly) {
     for (const int colours : {1, 7, 256}) {
       for (bool opaque : {true, false}) {
         const Paletted p = paletted(w, h, colours, opaque, uint64_t(w * 1000 + h + colours));
-        for (const PngDeflate how : kBothWays) {
-          const std::vector<uint8_t> png = encode_png(w, h, p.indices, p.palette, how);
+        for (const int level : kLevels) {
+          const std::vector<uint8_t> png = encode_png(w, h, p.indices, p.palette, level);
           EXPECT_EQ(color_type(png), 3) << w << "x" << h;
-          EXPECT_EQ(decode_png(png, "x.png").pixels, p.colours().pixels) << w << "x" << h << ", " << colours << " colours";
-          EXPECT_EQ(encode_png(w, h, p.indices, p.palette, how), png);
+          EXPECT_EQ(decode_png(png, "x.png").pixels, p.colours().pixels)
+              << w << "x" << h << ", " << colours << " colours, level " << level;
+          EXPECT_EQ(encode_png(w, h, p.indices, p.palette, level), png);
         }
       }
     }
@@ -104,8 +118,9 @@ TEST(Png, EncodesPaletteIndicesExactly) {
   EXPECT_LT(encode_png(320, 200, p.indices, p.palette).size(), encode_png(p.colours()).size());
 }
 
-// The filter type of each row of a PNG: its IDAT chunks inflated (libdeflate).
-std::vector<int> row_filters(const std::vector<uint8_t>& png, int width, int height, size_t channels) {
+// A PNG's IDAT chunks inflated (libdeflate): its rows as filtered, each after its
+// filter's byte; `size` bytes expected.
+std::vector<uint8_t> inflated_rows(const std::vector<uint8_t>& png, size_t size) {
   const auto be32 = [&](size_t at) {
     return uint32_t(png[at]) << 24 | uint32_t(png[at + 1]) << 16 | uint32_t(png[at + 2]) << 8 | png[at + 3];
   };
@@ -113,16 +128,41 @@ std::vector<int> row_filters(const std::vector<uint8_t>& png, int width, int hei
   for (size_t at = 8; at + 12 <= png.size(); at += 12 + be32(at))
     if (std::string(png.begin() + long(at) + 4, png.begin() + long(at) + 8) == "IDAT")
       idat.insert(idat.end(), png.begin() + long(at) + 8, png.begin() + long(at + 8 + be32(at)));
-  const size_t stride = size_t(width) * channels + 1;
-  std::vector<uint8_t> rows(stride * size_t(height));
+  std::vector<uint8_t> rows(size);
   libdeflate_decompressor* d = libdeflate_alloc_decompressor();
-  const libdeflate_result r =
-      libdeflate_zlib_decompress(d, idat.data(), idat.size(), rows.data(), rows.size(), nullptr);
+  const libdeflate_result r = libdeflate_zlib_decompress(d, idat.data(), idat.size(), rows.data(), rows.size(), nullptr);
   libdeflate_free_decompressor(d);
   EXPECT_EQ(r, LIBDEFLATE_SUCCESS);
+  return rows;
+}
+
+// The filter type of each row of a PNG.
+std::vector<int> row_filters(const std::vector<uint8_t>& png, int width, int height, size_t channels) {
+  const size_t stride = size_t(width) * channels + 1;
+  const std::vector<uint8_t> rows = inflated_rows(png, stride * size_t(height));
   std::vector<int> filters;
   for (int y = 0; y < height; ++y) filters.push_back(rows[size_t(y) * stride]);
   return filters;
+}
+
+// Level 0 stores each row as it is, after None's filter byte, in blocks of at most
+// 65,535 bytes (libdeflate checks each block's length against its complement): at
+// widths whose rows end before, at and after a block's end.
+TEST(Png, StoredRowsAreTheImagesBytes) {
+  for (const int width : {1, 255, 256, 257, 65534, 65535, 65536}) {
+    const int height = width > 300 ? 3 : 600;
+    const Paletted p = paletted(width, height, 256, true, uint64_t(width));
+    const std::vector<uint8_t> png = encode_png(width, height, p.indices, p.palette, kPngStored);
+    std::vector<uint8_t> expected;
+    for (int y = 0; y < height; ++y) {
+      expected.push_back(0);
+      expected.insert(expected.end(), p.indices.begin() + long(y) * width, p.indices.begin() + long(y + 1) * width);
+    }
+    EXPECT_EQ(inflated_rows(png, expected.size()), expected) << "width " << width;
+    if (width <= 16384) {  // decode_png's largest side
+      EXPECT_EQ(decode_png(png, "x.png").pixels, p.colours().pixels) << "width " << width;
+    }
+  }
 }
 
 // Indices and a grey palette as a PNG, checked to come back exactly; its rows' filters.

@@ -122,6 +122,14 @@ TEST_F(Tools, CompileAndCaptureAreReproducible) {
   ASSERT_EQ(test::run(capture + "--renderer reference -o " + out("r.png"), o), 0) << o;
   EXPECT_EQ(read_file_bytes(out("a.png")), read_file_bytes(out("r.png")));
 
+  // Every PNG level writes the same picture: level 0 the most bytes, 12 the fewest.
+  for (const char* level : {"0", "12"}) {
+    ASSERT_EQ(test::run(capture + "--png-level " + level + " -o " + out(std::string("l") + level + ".png"), o), 0) << o;
+    EXPECT_EQ(image::load_png(out(std::string("l") + level + ".png")).pixels, img.pixels) << "level " << level;
+  }
+  EXPECT_GT(std::filesystem::file_size(out("l0.png")), std::filesystem::file_size(out("a.png")));
+  EXPECT_LT(std::filesystem::file_size(out("l12.png")), std::filesystem::file_size(out("a.png")));
+
   // Many cameras in one run.
   write_file_atomically(out("cams"), "one 64 96 30\ntwo 300 192 0 41 70\n");
   std::filesystem::create_directories(out("shots"));
@@ -200,6 +208,7 @@ TEST_F(Tools, BadArgumentsAreRefused) {
       {"--pos 1,1 --angle inf -o " + out("x.png"), "finite"},
       {"--pos 1e15,0 -o " + out("x.png"), "X,Y must lie within"},
       {"--pos 1,1 --eye 1e300 -o " + out("x.png"), "--eye"},
+      {"--pos 1,1 --png-level 13 -o " + out("x.png"), "--png-level"},
   };
   for (const Case& c : cases) {
     const int status = test::run(cap + c.args, o);
