@@ -57,6 +57,12 @@ bool on_path(const std::string& program) {
   return false;
 }
 
+std::vector<render::Camera> cameras_from(const level::Level& level, const std::vector<render::CameraSpec>& specs) {
+  std::vector<render::Camera> path;
+  for (const auto& c : specs) path.push_back(render::camera_at(level, c.pos, c.angle, c.eye, c.fov));
+  return path;
+}
+
 std::vector<render::Camera> random_cameras(const level::Level& level, int count, uint64_t seed) {
   Rng rng(seed);
   std::vector<render::Camera> out;

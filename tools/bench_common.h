@@ -1,6 +1,6 @@
-// bench's pieces shared by its sections (bench.cpp, bench_wad.cpp, bench_doom.cpp):
-// the settings from the command line, child processes timed whole, random cameras and
-// the frame timed on one thread beside every core.
+// bench's pieces shared by its sections (bench.cpp, bench_wad.cpp, bench_doom.cpp,
+// bench_capture.cpp): the settings from the command line, child processes timed whole,
+// cameras (from a list, or random) and the frame timed on one thread beside every core.
 #pragma once
 
 #include <chrono>
@@ -12,6 +12,7 @@
 
 #include "engine/level/level.h"
 #include "engine/render/camera.h"
+#include "engine/render/camera_file.h"
 #include "tools/cli.h"
 
 namespace p3d::bench {
@@ -51,6 +52,8 @@ double run_process(const std::vector<std::string>& args);
 std::filesystem::path own_directory();
 bool on_path(const std::string& program);
 
+// The cameras of a list (a camera file's lines) standing in the level.
+std::vector<render::Camera> cameras_from(const level::Level& level, const std::vector<render::CameraSpec>& specs);
 // Cameras at random points inside sectors, looking anywhere, eye 41 above the floor.
 std::vector<render::Camera> random_cameras(const level::Level& level, int count, uint64_t seed);
 
@@ -64,5 +67,6 @@ std::pair<double, double> time_threads(const level::Level& level, const level::S
 // Sections in files of their own.
 void bench_wad(const Settings& s);   // every map of WADs compiled beside ZDBSP, and rendered
 void bench_doom(const Settings& s);  // beside Crispy Doom
+void bench_capture(const Settings& s);  // a frame's render beside its PNG at each level; whole captures
 
 }  // namespace p3d::bench
