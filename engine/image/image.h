@@ -34,7 +34,7 @@ Image load_png(const std::filesystem::path& path);
 // How hard encode_png squeezes a PNG, on zlib's scale of levels (docs/benchmarks.md,
 // "Threads and captures", has each level's time and bytes): 0 stores the rows as they
 // are, unfiltered (the fastest: a frame's PNG in a sixth to two thirds of its render's
-// time, at 4 to 10 times level 1's bytes); 1, the default, filters each row and
+// time, at 4 to 12 times level 1's bytes); 1, the default, filters each row and
 // deflates it as runs and literals (deflate_runs.h); 2 to 12, the same filters, then
 // libdeflate's search for matches at that level, in 3 to 400 times level 1's time:
 // level 2's 8-bit frames a tenth bigger than level 1's, level 12's the smallest (7-26%
