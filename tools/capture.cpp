@@ -185,7 +185,7 @@ int main(int argc, char** argv) {
   app.add_option("--columns", columns, "CSV of x,wall,dist per column (a directory with --cameras)");
   app.add_option("--cameras", cameras, "file of cameras: NAME X Y ANGLE [EYE [FOV]] per line")->check(cli::existing_file());
   app.add_option("--png-level", png_level,
-                 "PNG compression, 0-12: 0 stores the pixels (the fastest, 4 to 10 times the bytes), 1 deflates "
+                 "PNG compression, 0-12: 0 stores the pixels (the fastest, 4 to 12 times the bytes), 1 deflates "
                  "runs and literals, 2-12 search for matches (3 to 400 times as slow; 12: 7-26% smaller)")
       ->check(cli::Range(image::kPngStored, image::kPngMaxLevel))
       ->capture_default_str();
