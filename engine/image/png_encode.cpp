@@ -1,6 +1,6 @@
-// PNG encoding: each row filtered by whichever of PNG's five filters leaves the
-// smallest sum of absolute differences (libpng's heuristic, png_filters.h), the rows
-// deflated in one zlib stream: as runs and literals (deflate_runs.h), or by
+// PNG encoding: each row of colours filtered by whichever of PNG's five filters leaves
+// the smallest sum of absolute differences (libpng's heuristic), each row of palette
+// indices by Paeth (png_filters.h), the rows deflated in one zlib stream: as runs and literals (deflate_runs.h), or by
 // libdeflate's search; or, at level 0, the rows stored as they are. An opaque image is
 // written as RGB, else RGBA; an 8-bit frame as palette indices. The bytes depend only on
 // the pixels and the level: captures are reproducible on any thread count and any
@@ -20,6 +20,8 @@
 namespace p3d::image {
 
 namespace {
+
+constexpr uint8_t kPaletteColourType = 3;  // IHDR's colour type of palette indices
 
 void put32(std::vector<uint8_t>& out, uint32_t v) {
   for (int shift = 24; shift >= 0; shift -= 8) out.push_back(uint8_t(v >> shift));
@@ -89,12 +91,15 @@ libdeflate_compressor& compressor(int level) {
 }
 
 // Appends the zlib stream of the image's rows (`height` rows of `stride` bytes,
-// `channels` bytes a pixel) at `level` to out.
-void deflate_rows(int height, const uint8_t* rows, size_t stride, size_t channels, int level, std::vector<uint8_t>& out) {
+// `channels` bytes a pixel; palette indices or colours) at `level` to out.
+void deflate_rows(int height, const uint8_t* rows, size_t stride, size_t channels, bool indices, int level,
+                  std::vector<uint8_t>& out) {
   thread_local std::vector<uint8_t> filtered, zeros;
   zeros.assign(stride, 0);
   auto filter = [&](int y, uint8_t* into) {
-    filter_row(rows + size_t(y) * stride, y ? rows + size_t(y - 1) * stride : zeros.data(), stride, channels, into);
+    const uint8_t* up = y ? rows + size_t(y - 1) * stride : zeros.data();
+    if (indices) return paeth_row(rows + size_t(y) * stride, up, stride, channels, into);
+    filter_row(rows + size_t(y) * stride, up, stride, channels, into);
   };
   if (level == kPngStored) {
     StoredStream stream(out);
@@ -144,7 +149,7 @@ std::vector<uint8_t> encode_rows(int width, int height, const uint8_t* rows, siz
   const size_t length_at = out.size();
   put32(out, 0);  // the chunk's length, once known
   out.insert(out.end(), {'I', 'D', 'A', 'T'});
-  deflate_rows(height, rows, stride, channels, level, out);
+  deflate_rows(height, rows, stride, channels, colour_type == kPaletteColourType, level, out);
   const size_t length = out.size() - length_at - 8;
   if (length > 0x7FFFFFFF) throw Error("cannot encode PNG: its pixels deflate to more than 2 GB");
   for (int k = 0; k < 4; ++k) out[length_at + size_t(k)] = uint8_t(length >> (24 - 8 * k));
@@ -196,7 +201,7 @@ std::vector<uint8_t> encode_png(int width, int height, std::span<const uint8_t> 
       if (i >= palette.size()) throw Error("cannot encode PNG: an index outside the palette");
   std::vector<std::pair<const char*, std::vector<uint8_t>>> chunks{{"PLTE", std::move(colours)}};
   if (!alphas.empty()) chunks.push_back({"tRNS", std::move(alphas)});
-  return encode_rows(width, height, indices.data(), 1, 3, chunks, level);
+  return encode_rows(width, height, indices.data(), 1, kPaletteColourType, chunks, level);
 }
 
 }  // namespace p3d::image

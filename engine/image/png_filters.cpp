@@ -1,7 +1,7 @@
 // PNG's row filters: a byte at a time (short rows, processors without SSE2), else
 // sixteen (SSE2) or thirty-two (AVX2, png_filters_avx2.cpp) at a time. Every width costs
 // the same sample (the first sixteen bytes of every 32 after a pixel's first), so it
-// chooses the same filters and writes the same bytes.
+// chooses the same filters and writes the same bytes; Paeth alone (paeth_row) the same.
 #include "engine/image/png_filters.h"
 
 #include <algorithm>
@@ -163,6 +163,30 @@ void filter_row(const uint8_t* row, const uint8_t* up, size_t stride, size_t cha
 #endif
 #ifdef __SSE2__
   lanes::apply<Sse2>(best, row, up, channels, stride, bytes);
+#endif
+}
+
+void paeth_row(const uint8_t* row, const uint8_t* up, size_t stride, size_t channels, uint8_t* out,
+               FilterLanes lanes) {
+  out[0] = uint8_t(kPaethFilter);
+  uint8_t* bytes = out + 1;
+  bool vector = false, widest = false;
+#ifdef __SSE2__
+  vector = lanes != FilterLanes::kOne && stride >= channels + 16;
+  widest = vector && lanes == FilterLanes::kThirtyTwo && stride >= channels + 32;
+#endif
+  for (size_t x = 0; x < (vector ? channels : stride); ++x) {  // a pixel's first bytes have no left neighbour
+    const auto [a, b, c] = neighbours(row, up, channels, x);
+    bytes[x] = filtered_byte(kPaethFilter, row[x], a, b, c);
+  }
+  if (!vector) return;
+#ifdef P3D_AVX2_FILTERS
+  if (widest) return avx2::apply(kPaethFilter, row, up, channels, stride, bytes);
+#else
+  (void)widest;
+#endif
+#ifdef __SSE2__
+  lanes::apply<Sse2>(kPaethFilter, row, up, channels, stride, bytes);
 #endif
 }
 

@@ -165,14 +165,33 @@ TEST(Png, StoredRowsAreTheImagesBytes) {
   }
 }
 
-// Indices and a grey palette as a PNG, checked to come back exactly; its rows' filters.
-std::vector<int> encoded_filters(int width, int height, const std::vector<uint8_t>& indices) {
-  std::vector<uint32_t> palette(256);
-  for (size_t i = 0; i < palette.size(); ++i) palette[i] = 0xFF000000u | uint32_t(i * 0x010101u);
-  const std::vector<uint8_t> png = encode_png(width, height, indices, palette);
-  const Image back = decode_png(png, "x.png");
-  for (size_t i = 0; i < indices.size(); ++i) EXPECT_EQ(back.pixels[i], palette[indices[i]]) << "width " << width;
-  return row_filters(png, width, height, 1);
+// A filtered row put back (PNG's reconstruction, written here apart from the encoder).
+std::vector<uint8_t> unfiltered(const uint8_t* filtered, const std::vector<uint8_t>& up, size_t channels) {
+  const int type = filtered[0];
+  std::vector<uint8_t> row(up.size());
+  for (size_t x = 0; x < row.size(); ++x) {
+    const int a = x >= channels ? row[x - channels] : 0, b = up[x], c = x >= channels ? up[x - channels] : 0;
+    const int pa = std::abs(b - c), pb = std::abs(a - c), pc = std::abs(a + b - 2 * c);
+    const int predicted = type == 0 ? 0 : type == 1 ? a : type == 2 ? b : type == 3 ? (a + b) / 2
+                        : pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
+    row[x] = uint8_t(filtered[x + 1] + predicted);
+  }
+  return row;
+}
+
+// The filter filter_row chooses for each row of a one-byte-a-pixel image, each row
+// checked to come back exactly.
+std::vector<int> chosen_filters(int width, int height, const std::vector<uint8_t>& bytes) {
+  std::vector<int> filters;
+  std::vector<uint8_t> up(size_t(width), 0), out(size_t(width) + 1);
+  for (int y = 0; y < height; ++y) {
+    const uint8_t* row = bytes.data() + size_t(y) * size_t(width);
+    filter_row(row, up.data(), size_t(width), 1, out.data());
+    EXPECT_EQ(unfiltered(out.data(), up, 1), std::vector<uint8_t>(row, row + width)) << "width " << width << ", row " << y;
+    filters.push_back(out[0]);
+    up.assign(row, row + width);
+  }
+  return filters;
 }
 
 // Widths around the encoder's steps of sixteen bytes (costed in samples, written whole).
@@ -194,14 +213,15 @@ TEST(Png, EachFilterIsChosenWhereItIsBest) {
         const int value = filter == 0 ? 0 : filter == 1 ? (x ? a : first) : filter == 2 ? b : (a + b) / 2;
         at(x, y) = uint8_t(filter < 0 ? int(rng.below(256)) : value);
       }
-    const std::vector<int> filters = encoded_filters(width, height, indices);
+    const std::vector<int> filters = chosen_filters(width, height, indices);
     for (int y = 1; y < height; y += 2) EXPECT_EQ(filters[size_t(y)], y / 2) << "width " << width << ", row " << y;
   }
 }
 
 // Paeth, the filter a rendered frame's rows choose most, is written on the way as the
 // rows are costed: overlapping flat rectangles (walls, sprites) choose it in some rows
-// and another filter in others, and every row comes back.
+// and another filter in others, and every row comes back. As palette indices, every row
+// is Paeth's.
 TEST(Png, PaethRowsAndOthersComeBack) {
   for (const int width : kFilterWidths) {
     Rng rng{uint64_t(width)};
@@ -214,28 +234,21 @@ TEST(Png, PaethRowsAndOthersComeBack) {
       const uint8_t v = uint8_t(rng.below(256));
       for (int y = y0; y < y1; ++y) std::fill_n(indices.begin() + y * width + x0, x1 - x0, v);
     }
-    const std::vector<int> filters = encoded_filters(width, height, indices);
+    const std::vector<int> filters = chosen_filters(width, height, indices);
     EXPECT_NE(std::count(filters.begin(), filters.end(), 4), 0) << "width " << width;
     EXPECT_NE(std::count(filters.begin(), filters.end(), 4), height) << "width " << width;
-  }
-}
 
-// A filtered row put back (PNG's reconstruction, written here apart from the encoder).
-std::vector<uint8_t> unfiltered(const uint8_t* filtered, const std::vector<uint8_t>& up, size_t channels) {
-  const int type = filtered[0];
-  std::vector<uint8_t> row(up.size());
-  for (size_t x = 0; x < row.size(); ++x) {
-    const int a = x >= channels ? row[x - channels] : 0, b = up[x], c = x >= channels ? up[x - channels] : 0;
-    const int pa = std::abs(b - c), pb = std::abs(a - c), pc = std::abs(a + b - 2 * c);
-    const int predicted = type == 0 ? 0 : type == 1 ? a : type == 2 ? b : type == 3 ? (a + b) / 2
-                        : pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
-    row[x] = uint8_t(filtered[x + 1] + predicted);
+    std::vector<uint32_t> grey(256);
+    for (size_t i = 0; i < grey.size(); ++i) grey[i] = 0xFF000000u | uint32_t(i * 0x010101u);
+    const std::vector<uint8_t> png = encode_png(width, height, indices, grey);
+    EXPECT_EQ(row_filters(png, width, height, 1), std::vector<int>(size_t(height), 4)) << "width " << width;
+    const Image back = decode_png(png, "x.png");
+    for (size_t i = 0; i < indices.size(); ++i) ASSERT_EQ(back.pixels[i], grey[indices[i]]) << "width " << width;
   }
-  return row;
 }
 
 // The filters a byte at a time, sixteen and thirty-two bytes at a time (where this
-// processor has AVX2) write the same bytes, which put the rows back. Widths around each
+// processor has AVX2) write the same bytes, which put the rows back; Paeth alone too. Widths around each
 // step, one to four bytes a pixel.
 TEST(Png, FiltersWriteTheSameBytesAtEveryWidth) {
   std::vector<FilterLanes> widths = {FilterLanes::kOne, FilterLanes::kSixteen};
@@ -248,15 +261,22 @@ TEST(Png, FiltersWriteTheSameBytesAtEveryWidth) {
         up[x] = uint8_t(rng.below(4) ? x / 7 : rng.below(256));  // flat stretches, steps and noise
         row[x] = uint8_t(rng.below(3) ? up[x] + x / 11 : rng.below(256));
       }
-      std::vector<uint8_t> first;
+      std::vector<uint8_t> first, first_paeth;
       for (const FilterLanes lanes : widths) {
-        std::vector<uint8_t> out(stride + 1);
+        std::vector<uint8_t> out(stride + 1), paeth(stride + 1);
         filter_row(row.data(), up.data(), stride, channels, out.data(), lanes);
+        paeth_row(row.data(), up.data(), stride, channels, paeth.data(), lanes);
         const std::string what = "stride " + std::to_string(stride) + ", " + std::to_string(channels) + " a pixel, " +
                                  std::to_string(int(lanes));
         EXPECT_EQ(unfiltered(out.data(), up, channels), row) << what;
-        if (first.empty()) first = out;
-        else EXPECT_EQ(out, first) << what;
+        EXPECT_EQ(paeth[0], kPaethFilter) << what;
+        EXPECT_EQ(unfiltered(paeth.data(), up, channels), row) << what << ", Paeth";
+        if (first.empty()) {
+          first = out, first_paeth = paeth;
+        } else {
+          EXPECT_EQ(out, first) << what;
+          EXPECT_EQ(paeth, first_paeth) << what << ", Paeth";
+        }
       }
     }
 }
