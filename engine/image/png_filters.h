@@ -1,8 +1,8 @@
-// PNG's row filters for the encoder (png_encode.cpp): a colour image's rows each filtered
-// by whichever of the five leaves the smallest sum of absolute differences (libpng's
-// heuristic), costed over a sample of a long row's bytes; a palette image's rows all by
-// Paeth. The loops run as wide as the processor allows (SSE2, or AVX2 where it has it)
-// and write the same bytes at every width.
+// PNG's row filters for the encoder (png_encode.cpp): each row filtered by whichever of
+// the five leaves the smallest sum of absolute differences (libpng's heuristic), costed
+// over a sample of a long row's bytes; or by Paeth alone. The loops run as wide as the
+// processor allows (SSE2, or AVX2 where it has it) and write the same bytes at every
+// width.
 #pragma once
 
 #include <cstddef>
@@ -26,10 +26,11 @@ FilterLanes widest_filter_lanes();
 void filter_row(const uint8_t* row, const uint8_t* up, size_t stride, size_t channels, uint8_t* out,
                 FilterLanes lanes = widest_filter_lanes());
 
-// The same row filtered by Paeth, uncosted: a palette image's filter. Its bytes are
-// indices, names rather than magnitudes, so the sum of differences weighs nothing real;
-// on Doom frames Paeth alone writes PNGs 0.7% smaller (geomean of 12 maps, 2 sizes) in
-// 0.93 of the capture's time (docs/benchmarks.md, "Threads and captures").
+// The same row filtered by Paeth, uncosted: a palette image's filter at PNG level 1.
+// Its bytes are indices, names rather than magnitudes, so the sum of differences weighs
+// nothing real; on Doom frames Paeth alone writes PNGs 0.7% smaller (geomean of 12
+// maps, 2 sizes) in 0.92-0.94 of the capture's time (docs/benchmarks.md, "Threads and
+// captures").
 void paeth_row(const uint8_t* row, const uint8_t* up, size_t stride, size_t channels, uint8_t* out,
                FilterLanes lanes = widest_filter_lanes());
 
