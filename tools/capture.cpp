@@ -186,7 +186,7 @@ int main(int argc, char** argv) {
   app.add_option("--cameras", cameras, "file of cameras: NAME X Y ANGLE [EYE [FOV]] per line")->check(cli::existing_file());
   app.add_option("--png-level", png_level,
                  "PNG compression, 0-12: 0 stores the pixels (the fastest, 4 to 12 times the bytes), 1 deflates "
-                 "runs and literals, 2-12 search for matches (3 to 400 times as slow; 12: 7-26% smaller)")
+                 "runs and literals, 2-12 search for matches (3 to 430 times as slow; 12: 9-26% smaller)")
       ->check(cli::Range(image::kPngStored, image::kPngMaxLevel))
       ->capture_default_str();
   app.add_flag("--stats", stats, "print per-frame statistics (a statdump line) and time per frame (apart)");
