@@ -34,9 +34,10 @@ Image load_png(const std::filesystem::path& path);
 // How hard encode_png squeezes a PNG, on zlib's scale of levels (docs/benchmarks.md,
 // "Threads and captures", has each level's time and bytes): 0 stores the rows as they
 // are, unfiltered (the fastest: a frame's PNG in a sixth to two thirds of its render's
-// time, at 4 to 12 times level 1's bytes); 1, the default, filters each row and
-// deflates it as runs and literals (deflate_runs.h); 2 to 12, the same filters, then
-// libdeflate's search for matches at that level, in 3 to 430 times level 1's time:
+// time, at 4 to 12 times level 1's bytes); 1, the default, filters each row (a palette
+// image's by Paeth alone) and deflates it as runs and literals (deflate_runs.h); 2 to
+// 12 filter each row by the least sum of differences, then deflate with libdeflate's
+// search for matches at that level, in 3 to 430 times level 1's time:
 // level 2's 8-bit frames a tenth bigger than level 1's, level 12's the smallest (9-26%
 // smaller).
 constexpr int kPngStored = 0, kPngRuns = 1, kPngDefaultLevel = kPngRuns, kPngMaxLevel = 12;
