@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "engine/image/deflate_find_runs.h"
+#include "engine/util/cpu.h"
 
 namespace p3d::image {
 
@@ -298,8 +299,7 @@ void DeflateRuns::block(size_t end, bool last) {
   std::array<uint32_t, kLiteralLengthSymbols> frequency{};
   auto find_runs = deflate::find_runs<deflate::Sse2Scan>;
 #ifdef P3D_AVX512_RUNS
-  static const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw");
-  if (avx512) find_runs = deflate::find_runs_avx512;
+  if (has_avx512_bw()) find_runs = deflate::find_runs_avx512;
 #endif
   const size_t run_count = find_runs(input_.data(), begin_, end, size_, runs.get(), frequency.data());
   write_block(input_.data(), begin_, end, size_, runs.get(), run_count, frequency, last, bits);

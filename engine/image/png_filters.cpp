@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "engine/util/cpu.h"
+
 #ifdef __SSE2__
 #include <emmintrin.h>
 
@@ -108,8 +110,7 @@ void cost_row(const uint8_t* row, const uint8_t* up, size_t channels, size_t str
 
 FilterLanes widest_filter_lanes() {
 #ifdef P3D_AVX2_FILTERS
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (avx2) return FilterLanes::kThirtyTwo;
+  if (has_avx2()) return FilterLanes::kThirtyTwo;
 #endif
 #ifdef __SSE2__
   return FilterLanes::kSixteen;

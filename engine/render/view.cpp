@@ -2,6 +2,8 @@
 
 #include <climits>
 
+#include "engine/util/cpu.h"
+
 namespace p3d::render {
 
 namespace {
@@ -54,9 +56,7 @@ ColumnRange columns_of_box(const View& v, const geom::BBox& box) {
 
 bool vector_projection() {
 #ifdef P3D_AVX512_PROJECTION
-  static const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
-                             __builtin_cpu_supports("avx512dq");
-  return avx512;
+  return has_avx512_vl_dq();
 #else
   return false;
 #endif
